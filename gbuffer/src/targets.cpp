@@ -20,7 +20,9 @@ GLuint makeTexture(GLenum format, int width, int height, const char* name) {
 
 }  // namespace
 
-Targets::~Targets() { release(); }
+Targets::~Targets() {
+  release();
+}
 
 void Targets::release() {
   const GLuint textures[] = {depth_, normal_, albedo_, hdr_};

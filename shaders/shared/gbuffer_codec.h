@@ -73,15 +73,24 @@ SHARED_FN bool isSkyDepth(float depth, int convention) {
 }
 
 // Perspective projection parameters that reconstruction needs, from a column-major matrix P:
-// xy = (P[0][0], P[1][1]) focal scales, zw = (P[2][0], P[2][1]) off-centre (jitter-free) terms.
-// Depth parameters: (P[2][2], P[3][2]).
+// xyParams = (P[0][0], P[1][1], P[2][0], P[2][1]): focal scales and off-centre (jitter-free)
+// terms. zParams = (P[2][2] + k, P[3][2]) with k = 0 for reverse-Z and 1 for the forward
+// conventions, computed in double on the CPU (gbuffer::projectionParams).
+// Why the k: forward depth crowds toward 1 at distance, and ndcZ + P22 then cancels to a tiny
+// number; P22 rounded to float alone costs ~1e-3 relative error at 1.5 km. (ndcZ - 1) is exact
+// in float there (Sterbenz) and P22 + 1 = n / (n - f) is small and exact enough, so the sum
+// keeps the precision the stored depth has. Reverse-Z needs no such help (P22 = 0).
+SHARED_FN float depthDenominator(float ndcZ, float zParamX, int convention) {
+  return convention == DEPTH_REVERSE_Z ? ndcZ + zParamX : (ndcZ - 1.0f) + zParamX;
+}
+
 // View-space position (camera looks down -Z) from a pixel's uv in [0,1]^2 and its window depth.
 // Solving the projection directly (instead of multiplying by an inverse 4x4) keeps the error
 // small at far depths, where the inverse's large entries cancel.
 SHARED_FN vec3 viewPositionFromDepth(vec2 uv, float depth, vec4 xyParams, vec2 zParams,
                                      int convention) {
   float ndcZ = ndcDepth(depth, convention);
-  float viewZ = -zParams.y / (ndcZ + zParams.x);
+  float viewZ = -zParams.y / depthDenominator(ndcZ, zParams.x, convention);
   vec2 ndcXY = uv * 2.0f - vec2(1.0f);
   float x = -viewZ * (ndcXY.x + xyParams.z) / xyParams.x;
   float y = -viewZ * (ndcXY.y + xyParams.w) / xyParams.y;

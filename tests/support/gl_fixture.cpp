@@ -24,7 +24,9 @@ void GlTest::SetUp() {
   }
 }
 
-void GlTest::TearDown() { expectNoGlErrors("end of test"); }
+void GlTest::TearDown() {
+  expectNoGlErrors("end of test");
+}
 
 void GlTest::expectNoGlErrors(const char* where) {
   for (const auto& message : glContext().debugLog().take()) {
