@@ -1,0 +1,21 @@
+#pragma once
+// Bounds-checked reads of glTF accessors (private to the loader).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+#include <glm/glm.hpp>
+
+namespace ocean_scene::gltf {
+
+// A vec3 float accessor (POSITION, NORMAL). `what` names it in error messages.
+bool readVec3(const tinygltf::Model& model, int accessorIndex, const std::string& what,
+              std::vector<glm::vec3>& out, std::string& error);
+
+// A scalar u8/u16/u32 index accessor, widened to u32.
+bool readIndices(const tinygltf::Model& model, int accessorIndex, std::vector<std::uint32_t>& out,
+                 std::string& error);
+
+}  // namespace ocean_scene::gltf

@@ -1,0 +1,8 @@
+# Scene module tests (CPU only): procedural scene contracts, glTF round trip and loader
+# robustness. The generated assets come from the ocean_assets target via ocean_asset_dir.
+if(TARGET ocean_scene)
+  postfx_add_test(scene_unit_tests
+    SOURCES unit/scene_procedural_test.cpp unit/scene_gltf_roundtrip_test.cpp
+            unit/scene_gltf_errors_test.cpp
+    LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF)
+endif()
