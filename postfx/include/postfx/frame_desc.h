@@ -1,0 +1,105 @@
+#pragma once
+// What the host hands the plugin every frame. Conventions, once for all fields:
+//   * World space: y up, metres. Positions that can be far from the origin are double.
+//   * Matrices are glm (column-major), unjittered.
+//   * Textures are host-owned GL names. The plugin never deletes, resizes or changes their
+//     parameters; it binds them only inside dispatch() and restores every binding it touched.
+//   * TextureRef::format is the texture's sized internal format as the host created it (e.g.
+//     GL_RGBA16F). It is checked against the texture itself; 0 means "take it from the texture".
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include <postfx/settings.h>
+
+namespace postfx {
+
+using GlName = std::uint32_t;  // a GL object name (GLuint)
+using GlEnum = std::uint32_t;  // a GL enum (GLenum)
+
+inline constexpr int kMaxCascades = 4;
+
+struct TextureRef {
+  GlName texture = 0;
+  GlEnum format = 0;
+};
+
+struct Camera {
+  // Camera position in world space (m). The GPU works relative to it, so it may be ~1e6 m away
+  // from the origin without loss.
+  glm::dvec3 position{0.0};
+  // World-to-view matrix (camera looks down -Z, +Y up in view space). Only its rotation (upper
+  // 3x3, orthonormal) is read; the translation is ignored, so a full view matrix or one with
+  // the translation removed (camera-relative) are both fine.
+  glm::mat4 view{1.0f};
+  // View-to-clip perspective projection, column-major, without TAA jitter, in the depth
+  // convention given at create() (reverse-Z: far/infinite plane at window depth 0). Double, so
+  // that forward-Z depth reconstruction keeps its precision (see gbuffer::projectionParams); a
+  // float glm::mat4 converts implicitly.
+  glm::dmat4 projection{1.0};
+};
+
+struct Sun {
+  // Unit vector TOWARD the sun, world space. direction.y <= 0 (at or below the horizon) means
+  // no caustics this frame: the pass is skipped.
+  glm::dvec3 direction{0.0, 1.0, 0.0};
+  // Sun irradiance at the water surface in the host's HDR units, linear RGB, >= 0.
+  glm::vec3 irradiance{1.0f};
+};
+
+struct WaterSurface {
+  // Mean water surface height y (m). Pixels at or above it receive no caustics.
+  double level = 0.0;
+  // World xz that maps to texture uv (0,0) in every cascade (m).
+  glm::dvec2 origin{0.0};
+  // Water surface texture: GL_TEXTURE_2D_ARRAY, one layer per cascade (or GL_TEXTURE_2D with one
+  // cascade, see CreateDesc::waterTexture). RG = slopes (dh/dx, dh/dz), B = height (m),
+  // A = Jacobian; GL_RGBA16F, GL_RGBA32F, GL_RG16F or GL_RG32F; mipmapped (a single level is
+  // accepted and sampled without mips); sampled with GL_REPEAT by the plugin's own sampler.
+  // Layer c covers world xz with uv = (xz - origin) / tileSize[c]. The surface normal is
+  // normalize(-sum(dh/dx), 1, -sum(dh/dz)) over the cascades.
+  TextureRef texture;
+  int cascadeCount = 1;                                    // [1, kMaxCascades], <= layer count
+  double tileSize[kMaxCascades] = {64.0, 16.0, 4.0, 1.0};  // metres per tile, > 0
+  // Index of refraction of the water relative to air, [1, 3].
+  float ior = 1.333f;
+  // Per-channel IOR (R, G, B) used instead of `ior` when the context has Feature::Dispersion.
+  glm::vec3 iorRgb{1.331f, 1.333f, 1.338f};
+  // Beer-Lambert absorption coefficients per metre, linear RGB, [0, 1e3]. The caustic light is
+  // attenuated by exp(-absorption * d / cos(theta_t)) for a receiver d metres below the level,
+  // theta_t the refracted sun's angle from the vertical. Default: clear sea water.
+  glm::vec3 absorption{0.35f, 0.06f, 0.02f};
+};
+
+struct SunShadowMap {
+  // Depth texture of the sun's shadow map (any depth format, GL_TEXTURE_2D). Required when the
+  // context has Feature::ShadowMask, ignored otherwise. Sampled with the plugin's own comparison
+  // sampler (bilinear PCF), whatever the texture's own compare mode.
+  TextureRef depth;
+  // World-space to light clip-space matrix (light projection * light view), in DOUBLE, with the
+  // world translation included. The plugin rebases it onto the camera in double precision.
+  glm::dmat4 worldToLightClip{1.0};
+  // Depth convention the shadow map was rendered with. 0 = reverse-Z, 1 = forward [0,1],
+  // 2 = forward [-1,1] (the values of gbuffer::DepthConvention).
+  int depthConvention = 1;
+  // Window-space depth bias pushed toward the light before the comparison, [0, 1].
+  float bias = 0.0005f;
+};
+
+struct FrameDesc {
+  // Host G-buffer, GL_TEXTURE_2D, all the same size (the size of `target`).
+  TextureRef depth;   // GL_DEPTH_COMPONENT16/24/32/32F or DEPTH24_STENCIL8/DEPTH32F_STENCIL8
+                      // (depth-stencil textures in GL_DEPTH_STENCIL_TEXTURE_MODE = DEPTH)
+  TextureRef normal;  // world-space normal in CreateDesc::normalEncoding
+  TextureRef albedo;  // GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGB10_A2 (linear rgb read)
+  // Host HDR light buffer the caustic light is ADDED to (blend ONE, ONE; alpha untouched):
+  // GL_RGBA16F, GL_RGBA32F or GL_R11F_G11F_B10F, mip level 0.
+  TextureRef target;
+  Camera camera;
+  Sun sun;
+  WaterSurface water;
+  SunShadowMap shadow;
+  CausticsSettings caustics;
+};
+
+}  // namespace postfx

@@ -1,0 +1,88 @@
+#pragma once
+// postfx: underwater lighting post-process for deferred renderers.
+//
+//   postfx::CreateDesc createDesc;              // features, G-buffer conventions
+//   postfx::Context* fx = nullptr;
+//   if (postfx::create(createDesc, fx) != postfx::Result::Ok) log(postfx::lastError(nullptr));
+//   ... every frame, after lighting, before tone mapping:
+//   postfx::dispatch(*fx, frameDesc);           // adds caustics into frameDesc.target
+//   ... postfx::stats(*fx).passes[i].medianMs
+//   postfx::destroy(fx);
+//
+// Threading and GL: every call needs the host's GL 4.5 context current on the calling thread.
+// create() and destroy() make GL objects with DSA only: no binding changes. dispatch() records GL
+// work, saves every piece of GL state it changes and restores it before returning; it never
+// reads back or waits on the GPU. Do not call dispatch() with transform feedback active or
+// inside conditional rendering. The library never prints, aborts or throws.
+#include <postfx/frame_desc.h>
+#include <postfx/result.h>
+#include <postfx/settings.h>
+#include <postfx/stats.h>
+
+namespace postfx {
+
+// Decided at create(): each becomes a shader #define, so a feature that is off costs nothing.
+enum class Feature : std::uint32_t {
+  None = 0,
+  Caustics = 1u << 0,          // seabed caustics (seed 002, section 4)
+  GodRays = 1u << 1,           // reserved: create() returns NotImplemented
+  ObjectCaustics = 1u << 2,    // reserved: create() returns NotImplemented
+  Dispersion = 1u << 3,        // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
+  ShadowMask = 1u << 4,        // mask caustics by the host's sun shadow map (FrameDesc::shadow)
+  RawCausticOutput = 1u << 5,  // also write the raw caustic factor to rawCausticTexture()
+  BenchmarkFloor = 1u << 6,    // also run and time the "floor" pass (benchmarks only: see below)
+};
+constexpr Feature operator|(Feature a, Feature b) {
+  return static_cast<Feature>(static_cast<std::uint32_t>(a) | static_cast<std::uint32_t>(b));
+}
+constexpr bool hasFeature(Feature set, Feature f) {
+  return (static_cast<std::uint32_t>(set) & static_cast<std::uint32_t>(f)) != 0;
+}
+
+enum class WaterTextureType {
+  Array2D,  // GL_TEXTURE_2D_ARRAY, one layer per cascade (the water module's output)
+  Single2D  // GL_TEXTURE_2D, exactly one cascade
+};
+
+struct CreateDesc {  // fixed for the context's life
+  Feature features = Feature::Caustics;
+  // Host G-buffer conventions; values of gbuffer::DepthConvention / gbuffer::NormalEncoding:
+  // depth 0 = reverse-Z [0,1] (recommended), 1 = forward [0,1], 2 = forward [-1,1] (GL default);
+  // normals 0 = octahedral RG, 1 = world xyz float/snorm, 2 = world xyz UNORM (n * 0.5 + 0.5).
+  int depthConvention = 0;
+  int normalEncoding = 0;
+  WaterTextureType waterTexture = WaterTextureType::Array2D;
+};
+
+struct Context;  // opaque
+
+// Builds the programs and GL objects for `desc`. On failure `out` is null and
+// lastError(nullptr) explains why.
+Result create(const CreateDesc& desc, Context*& out) noexcept;
+
+// Adds this frame's caustic light into desc.target. Every input is validated before any GL
+// state is touched: on error nothing is drawn and GL state is exactly as it was. A pass with
+// nothing to do (caustics disabled, sun at/below the horizon, no part of the view frustum below
+// the water level) is skipped and reports 0 ms.
+// With Feature::BenchmarkFloor, a "floor" pass runs first whenever caustics run: it reads the
+// same inputs and writes the same outputs with no math (adds exactly 0), so that
+// caustics.medianMs / floor.medianMs measures the shader's cost independently of the machine.
+Result dispatch(Context& context, const FrameDesc& desc) noexcept;
+
+// Deletes the context's GL objects (current GL context required). Null is a no-op.
+void destroy(Context* context) noexcept;
+
+// The message of the last failed call on `context`, or, for null, of the last failed create()
+// on this thread. Empty after success. Valid until the next call on the same context/thread.
+const char* lastError(const Context* context) noexcept;
+
+// Per-pass GPU timings, updated by each dispatch() from queries that have completed.
+const FrameStats& stats(const Context& context) noexcept;
+
+// With Feature::RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last
+// dispatched target holding the caustic factor (mean of R,G,B) in [0, 1] before albedo,
+// irradiance, intensity and absorption; 0 where no caustics (sky, above water, back-facing,
+// shadowed, pass skipped). Returns 0 without the feature or before the first dispatch.
+GlName rawCausticTexture(const Context& context) noexcept;
+
+}  // namespace postfx

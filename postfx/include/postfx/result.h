@@ -1,0 +1,21 @@
+#pragma once
+// Result codes returned by every postfx entry point. On anything but Ok, lastError() holds a
+// sentence naming the offending field and value, and nothing was drawn or changed.
+namespace postfx {
+
+enum class Result {
+  Ok = 0,
+  InvalidArgument,      // a value out of its documented range, NaN/Inf, or a bad enum
+  MissingTexture,       // a required texture is 0 or not a texture name
+  UnsupportedFormat,    // a texture's internal format or target is not one this input accepts
+  SizeMismatch,         // textures that must match in size do not
+  NotImplemented,       // a feature reserved for a later version (GodRays, ObjectCaustics)
+  ShaderCompileFailed,  // create() could not build a program; the message has the driver log
+  GlError,              // the driver refused a GL object (framebuffer incomplete, ...)
+  OutOfMemory,          // allocation failed inside the library
+};
+
+// Stable English name of the code, e.g. "UnsupportedFormat".
+const char* toString(Result result) noexcept;
+
+}  // namespace postfx

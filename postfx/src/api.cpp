@@ -1,0 +1,169 @@
+// The public entry points: validation first, GL work only once everything is known good, and
+// no exception ever crossing the API boundary.
+#include <postfx/postfx.h>
+
+#include <memory>
+#include <new>
+
+#include "context.h"
+#include "frame_constants.h"
+#include "gl_state_guard.h"
+#include "validation.h"
+#include "visibility.h"
+
+namespace postfx {
+namespace {
+
+thread_local std::string createError;
+
+// Debug groups name the passes in RenderDoc / Nsight captures.
+class DebugGroup {
+ public:
+  explicit DebugGroup(const char* name) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0x9f5f0, -1, name);
+  }
+  ~DebugGroup() { glPopDebugGroup(); }
+  DebugGroup(const DebugGroup&) = delete;
+  DebugGroup& operator=(const DebugGroup&) = delete;
+};
+
+bool passHasWork(const Context& context, const FrameDesc& frame) {
+  if (!hasFeature(context.desc.features, Feature::Caustics)) return false;
+  if (!frame.caustics.enabled) return false;
+  if (!(frame.sun.direction.y > 0.0)) return false;  // at or below the horizon
+  return detail::frustumReachesBelowWater(detail::viewToWorldRotation(frame.camera.view),
+                                          frame.camera.projection, context.desc.depthConvention,
+                                          frame.water.level - frame.camera.position.y);
+}
+
+Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
+  std::string& error = context.error;
+  Result r = detail::validateFrameValues(context.desc, frame, error);
+  if (r != Result::Ok) return r;
+  detail::ValidatedTextures textures;
+  r = detail::validateFrameTextures(context.desc, frame, textures, error);
+  if (r != Result::Ok) return r;
+
+  const bool work = passHasWork(context, frame);
+  const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
+  const shared::CausticsBlock block = detail::buildCausticsBlock(
+      context.desc, frame, textures.width, textures.height, textures.water);
+
+  detail::GlStateGuard guard;
+  DebugGroup group("postfx");
+  context.timers.beginFrame();
+  if (!work) {
+    context.timers.markSkipped(Context::kCausticsPass);
+    if (floor) context.timers.markSkipped(Context::kFloorPass);
+    context.caustics.clearRaw(textures.width, textures.height);
+    context.timers.endFrame();
+    return Result::Ok;
+  }
+  r = context.caustics.prepare(frame, textures, block, error);
+  if (r != Result::Ok) {
+    context.timers.endFrame();
+    return r;
+  }
+  context.caustics.bindState(frame, textures);
+  // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass. Tile-based
+  // and software rasterizers (llvmpipe) otherwise run both draws interleaved per tile and no
+  // query pair can separate them. This is the one place the plugin waits, and normal frames
+  // never get here.
+  if (floor) {
+    DebugGroup floorGroup("postfx.floor");
+    glFinish();
+    context.timers.begin(Context::kFloorPass);
+    context.caustics.drawFloor();
+    context.timers.end(Context::kFloorPass);
+  }
+  {
+    DebugGroup causticsGroup("postfx.caustics");
+    if (floor) glFinish();
+    context.timers.begin(Context::kCausticsPass);
+    context.caustics.drawCaustics();
+    context.timers.end(Context::kCausticsPass);
+  }
+  context.caustics.finish();
+  context.timers.endFrame();
+  return Result::Ok;
+}
+
+}  // namespace
+
+const char* toString(Result result) noexcept {
+  switch (result) {
+    case Result::Ok:
+      return "Ok";
+    case Result::InvalidArgument:
+      return "InvalidArgument";
+    case Result::MissingTexture:
+      return "MissingTexture";
+    case Result::UnsupportedFormat:
+      return "UnsupportedFormat";
+    case Result::SizeMismatch:
+      return "SizeMismatch";
+    case Result::NotImplemented:
+      return "NotImplemented";
+    case Result::ShaderCompileFailed:
+      return "ShaderCompileFailed";
+    case Result::GlError:
+      return "GlError";
+    case Result::OutOfMemory:
+      return "OutOfMemory";
+  }
+  return "Unknown";
+}
+
+Result create(const CreateDesc& desc, Context*& out) noexcept {
+  out = nullptr;
+  try {
+    createError.clear();
+    Result r = detail::validateCreateDesc(desc, createError);
+    if (r != Result::Ok) return r;
+    auto context = std::make_unique<Context>();
+    context->desc = desc;
+    r = context->caustics.init(desc, createError);
+    if (r != Result::Ok) return r;
+    const char* names[] = {"caustics", "floor"};
+    context->timers.init(hasFeature(desc.features, Feature::BenchmarkFloor) ? 2 : 1, names);
+    out = context.release();
+    return Result::Ok;
+  } catch (const std::bad_alloc&) {
+    createError = "out of memory";
+    return Result::OutOfMemory;
+  } catch (...) {
+    createError = "internal error";
+    return Result::GlError;
+  }
+}
+
+Result dispatch(Context& context, const FrameDesc& desc) noexcept {
+  try {
+    context.error.clear();
+    return dispatchUnchecked(context, desc);
+  } catch (const std::bad_alloc&) {
+    context.error = "out of memory";
+    return Result::OutOfMemory;
+  } catch (...) {
+    context.error = "internal error";
+    return Result::GlError;
+  }
+}
+
+void destroy(Context* context) noexcept {
+  delete context;
+}
+
+const char* lastError(const Context* context) noexcept {
+  return context != nullptr ? context->error.c_str() : createError.c_str();
+}
+
+const FrameStats& stats(const Context& context) noexcept {
+  return context.timers.stats();
+}
+
+GlName rawCausticTexture(const Context& context) noexcept {
+  return context.caustics.rawTexture();
+}
+
+}  // namespace postfx

@@ -1,0 +1,62 @@
+#pragma once
+// The caustics pass and its benchmark floor: a full-screen triangle per pass, blended
+// additively (ONE, ONE) into the host's HDR target through a framebuffer of our own, with the
+// raw caustic factor as a second, unblended attachment when enabled.
+// A fragment pass rather than compute: the additive blend is free in the ROPs on real GPUs,
+// works for every target format (R11G11B10F has no atomic/image read-modify-write), and sky or
+// above-water pixels leave with a discard.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <glkit/program.h>
+#include <postfx/postfx.h>
+
+#include "shared_math.h"
+#include "validation.h"
+
+namespace postfx::detail {
+
+class CausticsPass {
+ public:
+  enum Unit : GLuint { kDepthUnit = 0, kNormalUnit, kAlbedoUnit, kWaterUnit, kShadowUnit };
+
+  CausticsPass() = default;
+  CausticsPass(const CausticsPass&) = delete;
+  CausticsPass& operator=(const CausticsPass&) = delete;
+  ~CausticsPass();
+
+  // Builds the programs for the context's features and the GL objects (DSA: binds nothing).
+  Result init(const CreateDesc& desc, std::string& error);
+  void release();
+
+  // Attaches the host target (and the raw output, resized to it when needed). GL_ERROR with a
+  // message when the framebuffer is incomplete.
+  Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
+                 const shared::CausticsBlock& block, std::string& error);
+  // Sets the pipeline state both passes use; call under a GlStateGuard.
+  void bindState(const FrameDesc& frame, const ValidatedTextures& textures);
+  void drawFloor();
+  void drawCaustics();
+  // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
+  void finish();
+  // The pass was skipped: the raw output (if any) must read 0, resized to the frame.
+  void clearRaw(int width, int height);
+
+  GLuint rawTexture() const { return rawTexture_; }
+
+ private:
+  void ensureRaw(int width, int height);
+
+  CreateDesc desc_{};
+  glkit::Program caustics_, floor_;
+  // The floor draws through its own framebuffer with the same attachments: the switch makes a
+  // software rasterizer start a new scene, so its timer queries separate the two passes.
+  GLuint framebuffer_ = 0, floorFramebuffer_ = 0, vertexArray_ = 0, uniformBuffer_ = 0;
+  GLuint pointSampler_ = 0, waterMipSampler_ = 0, waterLinearSampler_ = 0;
+  GLuint shadowForwardSampler_ = 0, shadowReverseSampler_ = 0;
+  GLuint rawTexture_ = 0;
+  int rawWidth_ = 0, rawHeight_ = 0;
+};
+
+}  // namespace postfx::detail

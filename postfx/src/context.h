@@ -1,0 +1,22 @@
+#pragma once
+// What a postfx::Context holds: the creation choices, the passes' GL objects, the timers and
+// the last error message.
+#include <string>
+
+#include <postfx/postfx.h>
+
+#include "caustics_pass.h"
+#include "gpu_timers.h"
+
+namespace postfx {
+
+struct Context {
+  enum PassIndex { kCausticsPass = 0, kFloorPass = 1 };
+
+  CreateDesc desc;
+  detail::CausticsPass caustics;
+  detail::GpuTimers timers;
+  std::string error;
+};
+
+}  // namespace postfx

@@ -1,0 +1,88 @@
+#include "frame_constants.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gbuffer/codec.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace postfx::detail {
+
+double tileFraction(double metres, double period) {
+  const double f = metres / period - std::floor(metres / period);
+  return f >= 1.0 ? 0.0 : f;  // floor rounding can land exactly on 1
+}
+
+glm::dvec3 refractedSunDown(const glm::dvec3& towardSun, double ior) {
+  return glm::refract(-towardSun, glm::dvec3(0.0, 1.0, 0.0), 1.0 / ior);
+}
+
+glm::dvec3 incidencePlaneNormal(const glm::dvec3& towardSun) {
+  const glm::dvec3 h(-towardSun.z, 0.0, towardSun.x);
+  const double len = glm::length(h);
+  return len > 1e-9 ? h / len : glm::dvec3(1.0, 0.0, 0.0);
+}
+
+glm::dmat3 viewToWorldRotation(const glm::mat4& view) {
+  return glm::transpose(glm::dmat3(glm::mat3(view)));
+}
+
+shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDesc& frame,
+                                         int width, int height, const WaterTextureInfo& water) {
+  shared::CausticsBlock b{};
+  const Camera& camera = frame.camera;
+  const WaterSurface& surface = frame.water;
+  const CausticsSettings& settings = frame.caustics;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+
+  b.viewToWorld = glm::mat4(glm::mat3(viewToWorldRotation(camera.view)));
+  b.viewport = glm::vec4(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height),
+                         static_cast<float>(width), static_cast<float>(height));
+  const gbuffer::ProjectionParams params = gbuffer::projectionParams(
+      camera.projection, static_cast<gbuffer::DepthConvention>(create.depthConvention));
+  b.projection = params.xy;
+  const double levelRelative = surface.level - camera.position.y;
+  const double radiansPerPixel = 2.0 / (std::abs(camera.projection[1][1]) * height);
+  b.depthAndWater =
+      glm::vec4(params.z, static_cast<float>(levelRelative), static_cast<float>(radiansPerPixel));
+
+  b.towardSun = glm::vec4(glm::vec3(sun), settings.tau);
+  b.reference = glm::vec4(glm::vec3(incidencePlaneNormal(sun)), settings.reflectionWeight);
+  const glm::dvec3 up = -refractedSunDown(sun, surface.ior);
+  b.refractedUp = glm::vec4(glm::vec3(up), settings.surfaceFadeDepth);
+  const bool dispersion = hasFeature(create.features, Feature::Dispersion);
+  const glm::vec3 ior = dispersion ? surface.iorRgb : glm::vec3(surface.ior);
+  b.eta = glm::vec4(1.0f / ior, settings.triplanarSharpness);
+  b.lightScale = glm::vec4(frame.sun.irradiance * settings.intensity, 0.0f);
+  // up.y >= cos(critical angle) ~ 0.66 for any sun above the horizon: never a division by ~0.
+  b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / up.y, 0.0);
+  const double kx = up.x / up.y, kz = up.z / up.y;
+  b.oblique = glm::vec4(static_cast<float>(kx), static_cast<float>(kz), settings.lodBias,
+                        static_cast<float>(surface.cascadeCount));
+
+  const glm::dvec3 cameraFromOrigin =
+      camera.position - glm::dvec3(surface.origin.x, surface.level, surface.origin.y);
+  const double obliqueU = cameraFromOrigin.x - kx * cameraFromOrigin.y;
+  const double obliqueV = cameraFromOrigin.z - kz * cameraFromOrigin.y;
+  for (int c = 0; c < surface.cascadeCount && c < POSTFX_MAX_CASCADES; ++c) {
+    const double tile = surface.tileSize[c];
+    b.cascadeAxes[c] =
+        glm::vec4(tileFraction(cameraFromOrigin.x, tile), tileFraction(cameraFromOrigin.y, tile),
+                  tileFraction(cameraFromOrigin.z, tile), 1.0 / tile);
+    const double texelsPerMetre = std::max(water.width, water.height) / tile;
+    b.cascadeOblique[c] = glm::vec4(tileFraction(obliqueU, tile), tileFraction(obliqueV, tile),
+                                    std::log2(texelsPerMetre), 0.0);
+  }
+
+  const bool shadow = hasFeature(create.features, Feature::ShadowMask);
+  if (shadow) {
+    b.shadowMatrix =
+        glm::mat4(frame.shadow.worldToLightClip * glm::translate(glm::dmat4(1.0), camera.position));
+  }
+  // Reverse-Z stores larger depths nearer the light, so "toward the light" is +bias there.
+  const float bias = frame.shadow.depthConvention == 0 ? frame.shadow.bias : -frame.shadow.bias;
+  b.shadowParams = glm::vec4(bias, frame.shadow.depthConvention == 2 ? 1.0f : 0.0f, 0.0f, 0.0f);
+  return b;
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,109 @@
+#include "gl_state_guard.h"
+
+#include <algorithm>
+
+#include "shared_math.h"
+
+namespace postfx::detail {
+
+GlStateGuard::GlStateGuard() {
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
+  glGetFloati_v(GL_VIEWPORT, 0, viewport_);
+  scissor0_ = glIsEnabledi(GL_SCISSOR_TEST, 0);
+  for (GLuint i = 0; i < kDrawBufferCount; ++i) {
+    BlendState& b = blend_[i];
+    b.enabled = glIsEnabledi(GL_BLEND, i);
+    glGetIntegeri_v(GL_BLEND_SRC_RGB, i, &b.srcRgb);
+    glGetIntegeri_v(GL_BLEND_DST_RGB, i, &b.dstRgb);
+    glGetIntegeri_v(GL_BLEND_SRC_ALPHA, i, &b.srcAlpha);
+    glGetIntegeri_v(GL_BLEND_DST_ALPHA, i, &b.dstAlpha);
+    glGetIntegeri_v(GL_BLEND_EQUATION_RGB, i, &b.equationRgb);
+    glGetIntegeri_v(GL_BLEND_EQUATION_ALPHA, i, &b.equationAlpha);
+    glGetBooleani_v(GL_COLOR_WRITEMASK, i, b.colorMask);
+  }
+  cullFace_ = glIsEnabled(GL_CULL_FACE);
+  rasterizerDiscard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
+  glGetIntegerv(GL_POLYGON_MODE, polygonMode_);
+  GLint maxClip = 0;
+  glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
+  clipDistanceCount_ = std::min(static_cast<int>(maxClip), kMaxClipDistances);
+  for (int i = 0; i < clipDistanceCount_; ++i)
+    clipDistance_[i] = glIsEnabled(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
+  // Per-unit bindings can only be queried through the active unit; it is restored below.
+  for (int unit = 0; unit < kUnitCount; ++unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &units_[unit].texture2d);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &units_[unit].texture2dArray);
+    glGetIntegerv(GL_SAMPLER_BINDING, &units_[unit].sampler);
+  }
+  glActiveTexture(static_cast<GLenum>(activeTexture_));
+  glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniformBuffer_);
+  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, POSTFX_CAUSTICS_BLOCK_BINDING, &uniformIndexed_);
+  glGetInteger64i_v(GL_UNIFORM_BUFFER_START, POSTFX_CAUSTICS_BLOCK_BINDING, &uniformStart_);
+  glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, POSTFX_CAUSTICS_BLOCK_BINDING, &uniformSize_);
+  glGetIntegerv(GL_QUERY_BUFFER_BINDING, &queryBuffer_);
+}
+
+namespace {
+void setEnabled(GLenum cap, GLboolean on) {
+  if (on) {
+    glEnable(cap);
+  } else {
+    glDisable(cap);
+  }
+}
+void setEnabledi(GLenum cap, GLuint index, GLboolean on) {
+  if (on) {
+    glEnablei(cap, index);
+  } else {
+    glDisablei(cap, index);
+  }
+}
+}  // namespace
+
+GlStateGuard::~GlStateGuard() {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
+  glViewportIndexedfv(0, viewport_);
+  setEnabledi(GL_SCISSOR_TEST, 0, scissor0_);
+  for (GLuint i = 0; i < kDrawBufferCount; ++i) {
+    const BlendState& b = blend_[i];
+    setEnabledi(GL_BLEND, i, b.enabled);
+    glBlendFuncSeparatei(i, static_cast<GLenum>(b.srcRgb), static_cast<GLenum>(b.dstRgb),
+                         static_cast<GLenum>(b.srcAlpha), static_cast<GLenum>(b.dstAlpha));
+    glBlendEquationSeparatei(i, static_cast<GLenum>(b.equationRgb),
+                             static_cast<GLenum>(b.equationAlpha));
+    glColorMaski(i, b.colorMask[0], b.colorMask[1], b.colorMask[2], b.colorMask[3]);
+  }
+  setEnabled(GL_CULL_FACE, cullFace_);
+  setEnabled(GL_RASTERIZER_DISCARD, rasterizerDiscard_);
+  // Core profiles keep one mode for both faces.
+  glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygonMode_[0]));
+  for (int i = 0; i < clipDistanceCount_; ++i)
+    setEnabled(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), clipDistance_[i]);
+  glUseProgram(static_cast<GLuint>(program_));
+  glBindVertexArray(static_cast<GLuint>(vertexArray_));
+  for (int unit = 0; unit < kUnitCount; ++unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(units_[unit].texture2d));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(units_[unit].texture2dArray));
+    glBindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(units_[unit].sampler));
+  }
+  glActiveTexture(static_cast<GLenum>(activeTexture_));
+  // glBindBufferBase/Range also set the generic binding, so the indexed one goes first.
+  const GLuint indexed = static_cast<GLuint>(uniformIndexed_);
+  if (indexed == 0 || uniformSize_ == 0) {
+    glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, indexed);
+  } else {
+    glBindBufferRange(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, indexed,
+                      static_cast<GLintptr>(uniformStart_), static_cast<GLsizeiptr>(uniformSize_));
+  }
+  glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniformBuffer_));
+  glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(queryBuffer_));
+}
+
+}  // namespace postfx::detail

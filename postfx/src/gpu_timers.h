@@ -1,0 +1,64 @@
+#pragma once
+// Per-pass GPU timing in a ring of kTimerRingDepth frames. Results are read oldest-first and
+// only once GL_QUERY_RESULT_AVAILABLE says so: the CPU never waits. When the ring wraps onto a
+// frame still pending, that frame is dropped instead (counted).
+// Each pass is timed by a GL_TIME_ELAPSED query when the host has none active, else by a
+// GL_TIMESTAMP pair (elapsed queries cannot nest inside the host's). Why not timestamps only:
+// llvmpipe executes a timestamp once per tile and keeps the latest, so a pair measures one
+// tile, not the pass; an elapsed query spans first to last tile. On GPUs both are exact.
+#include <epoxy/gl.h>
+
+#include <array>
+#include <cstdint>
+
+#include <postfx/stats.h>
+
+namespace postfx::detail {
+
+class GpuTimers {
+ public:
+  GpuTimers() = default;
+  GpuTimers(const GpuTimers&) = delete;
+  GpuTimers& operator=(const GpuTimers&) = delete;
+  ~GpuTimers();
+
+  // Names are static strings; creates the query objects (DSA, no binding changes).
+  void init(int passCount, const char* const* names);
+  void release();
+
+  // Reads every completed frame in order, then opens a slot for this frame. Binds
+  // GL_QUERY_BUFFER to 0 while reading (so results land in client memory): call under a guard.
+  void beginFrame();
+  void begin(int pass);        // timestamp before the pass's GL work
+  void end(int pass);          // timestamp after it
+  void markSkipped(int pass);  // the pass had nothing to do this frame: it resolves to 0 ms
+  void endFrame();
+
+  const FrameStats& stats() const { return stats_; }
+
+ private:
+  enum class SlotState : std::uint8_t { Empty, IssuedTimestamps, IssuedElapsed, Skipped };
+  struct Slot {
+    std::array<SlotState, kMaxPasses> state{};
+    bool open = false;  // frame dispatched, timings not yet read
+  };
+  struct History {
+    std::array<double, kTimerMedianWindow> ms{};
+    int count = 0, next = 0;
+  };
+
+  bool tryResolve(Slot& slot, int slotIndex);
+  void record(int pass, double ms, bool skipped);
+
+  int passCount_ = 0;
+  // Per frame and pass: timestamp begin, timestamp end, time elapsed.
+  std::array<std::array<std::array<GLuint, 3>, kMaxPasses>, kTimerRingDepth> queries_{};
+  bool elapsedActive_ = false;
+  std::array<Slot, kTimerRingDepth> slots_{};
+  std::array<History, kMaxPasses> history_{};
+  std::uint64_t frame_ = 0;   // frames begun
+  std::uint64_t oldest_ = 0;  // oldest frame not yet resolved or dropped
+  FrameStats stats_;
+};
+
+}  // namespace postfx::detail

@@ -1,0 +1,10 @@
+#pragma once
+// The GLSL/C++ shared headers of the plugin, compiled as C++ in namespace postfx::shared.
+#include <glm/glm.hpp>
+
+#include "shared/common.h"  // before the namespace: it includes GLM
+
+namespace postfx {
+#include "shared/postfx_caustics.h"
+#include "shared/postfx_caustics_block.h"
+}  // namespace postfx

@@ -1,0 +1,294 @@
+#include "validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <sstream>
+
+namespace postfx::detail {
+namespace {
+
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+bool finite(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+// NaN fails both comparisons, so it is caught by the same test as an out-of-range value.
+bool inRange(double value, double lo, double hi) {
+  return value >= lo && value <= hi;
+}
+bool inRange(const glm::vec3& v, double lo, double hi) {
+  return inRange(v.x, lo, hi) && inRange(v.y, lo, hi) && inRange(v.z, lo, hi);
+}
+
+std::string formatName(GLenum format) {
+  std::ostringstream s;
+  s << "0x" << std::hex << format;
+  return s.str();
+}
+
+struct TextureFacts {
+  GLint target = 0, format = 0, width = 0, height = 0, layers = 0;
+};
+
+// Every query here is valid for any texture name, so none can raise a GL error.
+bool queryTexture(GLuint texture, TextureFacts& facts) {
+  if (texture == 0 || glIsTexture(texture) != GL_TRUE) return false;
+  glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &facts.target);
+  if (facts.target == GL_TEXTURE_BUFFER) return true;  // has no levels to query
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &facts.format);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &facts.width);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &facts.height);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &facts.layers);
+  return true;
+}
+
+Result checkTexture(const char* field, const TextureRef& ref, std::initializer_list<GLenum> targets,
+                    std::initializer_list<GLenum> formats, TextureFacts& facts,
+                    std::string& error) {
+  if (!queryTexture(ref.texture, facts)) {
+    error = std::string(field) + ": texture " + std::to_string(ref.texture) +
+            " is not a texture name (required)";
+    return Result::MissingTexture;
+  }
+  if (std::find(targets.begin(), targets.end(), static_cast<GLenum>(facts.target)) ==
+      targets.end()) {
+    error = std::string(field) + ": texture target " + formatName(facts.target) +
+            " is not accepted here";
+    return Result::UnsupportedFormat;
+  }
+  if (facts.width <= 0 || facts.height <= 0) {
+    error = std::string(field) + ": texture level 0 has no storage";
+    return Result::MissingTexture;
+  }
+  if (ref.format != 0 && ref.format != static_cast<GLenum>(facts.format)) {
+    error = std::string(field) + ": declared format " + formatName(ref.format) +
+            " but the texture's internal format is " + formatName(facts.format);
+    return Result::UnsupportedFormat;
+  }
+  if (std::find(formats.begin(), formats.end(), static_cast<GLenum>(facts.format)) ==
+      formats.end()) {
+    error = std::string(field) + ": internal format " + formatName(facts.format) +
+            " is not supported for this input";
+    return Result::UnsupportedFormat;
+  }
+  return Result::Ok;
+}
+
+constexpr std::initializer_list<GLenum> kDepthFormats = {
+    GL_DEPTH_COMPONENT16,  GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+    GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
+
+std::initializer_list<GLenum> normalFormats(int encoding) {
+  static constexpr std::initializer_list<GLenum> octahedral = {
+      GL_RG16_SNORM, GL_RG8_SNORM, GL_RG16F, GL_RG32F, GL_RGBA16_SNORM, GL_RGBA16F, GL_RGBA32F};
+  static constexpr std::initializer_list<GLenum> xyz = {
+      GL_RGB16F,      GL_RGBA16F,      GL_RGB32F,      GL_RGBA32F,
+      GL_RGB16_SNORM, GL_RGBA16_SNORM, GL_RGBA8_SNORM, GL_R11F_G11F_B10F};
+  static constexpr std::initializer_list<GLenum> unorm = {GL_RGBA8, GL_RGB8, GL_RGB10_A2, GL_RGBA16,
+                                                          GL_RGB16};
+  return encoding == 0 ? octahedral : (encoding == 1 ? xyz : unorm);
+}
+
+Result checkDepthMode(const char* field, GLuint texture, std::string& error) {
+  GLint mode = GL_DEPTH_COMPONENT;
+  glGetTextureParameteriv(texture, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
+  if (mode != GL_DEPTH_COMPONENT) {
+    error = std::string(field) +
+            ": depth-stencil texture is in GL_STENCIL_INDEX mode; set "
+            "GL_DEPTH_STENCIL_TEXTURE_MODE to GL_DEPTH_COMPONENT";
+    return Result::UnsupportedFormat;
+  }
+  return Result::Ok;
+}
+
+// Mip levels the water texture can be sampled with. A texture made with glTexStorage is always
+// complete; otherwise the chain must reach the smallest level (or GL_TEXTURE_MAX_LEVEL).
+bool isMipComplete(GLuint texture, int width, int height) {
+  GLint immutable = GL_FALSE;
+  glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+  int fullChain = 1;
+  for (int size = std::max(width, height); size > 1; size >>= 1) ++fullChain;
+  if (immutable == GL_TRUE) {
+    GLint levels = 1;
+    glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    return levels > 1;
+  }
+  GLint baseLevel = 0, maxLevel = 1000;
+  glGetTextureParameteriv(texture, GL_TEXTURE_BASE_LEVEL, &baseLevel);
+  glGetTextureParameteriv(texture, GL_TEXTURE_MAX_LEVEL, &maxLevel);
+  if (baseLevel != 0) return false;
+  const int needed = std::min(fullChain, maxLevel + 1);
+  if (needed <= 1) return false;
+  for (int level = 1; level < needed; ++level) {
+    GLint w = 0;
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &w);
+    if (w <= 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
+  if (hasFeature(desc.features, Feature::GodRays)) {
+    error = "CreateDesc.features: GodRays is reserved for a later version";
+    return Result::NotImplemented;
+  }
+  if (hasFeature(desc.features, Feature::ObjectCaustics)) {
+    error = "CreateDesc.features: ObjectCaustics is reserved for a later version";
+    return Result::NotImplemented;
+  }
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 7)) {
+    error = "CreateDesc.features: unknown feature bits";
+    return Result::InvalidArgument;
+  }
+  if (desc.depthConvention < 0 || desc.depthConvention > 2) {
+    error =
+        "CreateDesc.depthConvention must be 0, 1 or 2, got " + std::to_string(desc.depthConvention);
+    return Result::InvalidArgument;
+  }
+  if (desc.normalEncoding < 0 || desc.normalEncoding > 2) {
+    error =
+        "CreateDesc.normalEncoding must be 0, 1 or 2, got " + std::to_string(desc.normalEncoding);
+    return Result::InvalidArgument;
+  }
+  if (desc.waterTexture != WaterTextureType::Array2D &&
+      desc.waterTexture != WaterTextureType::Single2D) {
+    error = "CreateDesc.waterTexture is not a WaterTextureType";
+    return Result::InvalidArgument;
+  }
+  return Result::Ok;
+}
+
+Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std::string& error) {
+  auto fail = [&error](std::string message) {
+    error = std::move(message);
+    return Result::InvalidArgument;
+  };
+  const Camera& camera = frame.camera;
+  if (!finite(camera.position)) return fail("camera.position is not finite");
+  if (!finite(camera.view)) return fail("camera.view is not finite");
+  if (!finite(camera.projection)) return fail("camera.projection is not finite");
+  const glm::dmat3 rotation = glm::dmat3(glm::mat3(camera.view));
+  const glm::dmat3 gram = glm::transpose(rotation) * rotation;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-3)
+        return fail("camera.view: the upper 3x3 is not a rotation (orthonormal)");
+  const glm::dmat4& p = camera.projection;
+  if (p[0][0] == 0.0 || p[1][1] == 0.0 || std::abs(p[2][3] + 1.0) > 1e-5 ||
+      std::abs(p[3][3]) > 1e-5 || p[3][2] == 0.0)
+    return fail("camera.projection is not a perspective projection (P[2][3] = -1, P[3][3] = 0)");
+
+  const Sun& sun = frame.sun;
+  if (!finite(sun.direction) || !(glm::length(sun.direction) > 1e-6))
+    return fail("sun.direction must be a finite non-zero vector");
+  if (!inRange(sun.irradiance, 0.0, 1e9)) return fail("sun.irradiance must be in [0, 1e9]");
+
+  const WaterSurface& water = frame.water;
+  if (!std::isfinite(water.level)) return fail("water.level is not finite");
+  if (!std::isfinite(water.origin.x) || !std::isfinite(water.origin.y))
+    return fail("water.origin is not finite");
+  const int maxCascades = create.waterTexture == WaterTextureType::Single2D ? 1 : kMaxCascades;
+  if (water.cascadeCount < 1 || water.cascadeCount > maxCascades)
+    return fail("water.cascadeCount must be in [1, " + std::to_string(maxCascades) + "], got " +
+                std::to_string(water.cascadeCount));
+  for (int c = 0; c < water.cascadeCount; ++c)
+    if (!inRange(water.tileSize[c], 1e-3, 1e7))
+      return fail("water.tileSize[" + std::to_string(c) + "] must be in [1e-3, 1e7] m");
+  if (!inRange(water.ior, 1.0, 3.0)) return fail("water.ior must be in [1, 3]");
+  if (hasFeature(create.features, Feature::Dispersion) && !inRange(water.iorRgb, 1.0, 3.0))
+    return fail("water.iorRgb must be in [1, 3]");
+  if (!inRange(water.absorption, 0.0, 1e3)) return fail("water.absorption must be in [0, 1e3]");
+
+  if (hasFeature(create.features, Feature::ShadowMask)) {
+    const SunShadowMap& shadow = frame.shadow;
+    if (!finite(shadow.worldToLightClip)) return fail("shadow.worldToLightClip is not finite");
+    if (shadow.depthConvention < 0 || shadow.depthConvention > 2)
+      return fail("shadow.depthConvention must be 0, 1 or 2");
+    if (!inRange(shadow.bias, 0.0, 1.0)) return fail("shadow.bias must be in [0, 1]");
+  }
+
+  const CausticsSettings& s = frame.caustics;
+  if (!inRange(s.tau, 0.0, 1e6)) return fail("caustics.tau must be in [0, 1e6]");
+  if (!inRange(s.reflectionWeight, 0.0, 1.0))
+    return fail("caustics.reflectionWeight must be in [0, 1]");
+  if (!inRange(s.intensity, 0.0, 1e4)) return fail("caustics.intensity must be in [0, 1e4]");
+  if (!inRange(s.surfaceFadeDepth, 0.0, 1e4))
+    return fail("caustics.surfaceFadeDepth must be in [0, 1e4] m");
+  if (!inRange(s.triplanarSharpness, 1.0, 32.0))
+    return fail("caustics.triplanarSharpness must be in [1, 32]");
+  if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
+  return Result::Ok;
+}
+
+Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
+                             ValidatedTextures& out, std::string& error) {
+  TextureFacts target, depth, normal, albedo;
+  Result r = checkTexture("target", frame.target, {GL_TEXTURE_2D},
+                          {GL_RGBA16F, GL_RGBA32F, GL_R11F_G11F_B10F}, target, error);
+  if (r != Result::Ok) return r;
+  r = checkTexture("depth", frame.depth, {GL_TEXTURE_2D}, kDepthFormats, depth, error);
+  if (r != Result::Ok) return r;
+  r = checkDepthMode("depth", frame.depth.texture, error);
+  if (r != Result::Ok) return r;
+  r = checkTexture("normal", frame.normal, {GL_TEXTURE_2D}, normalFormats(create.normalEncoding),
+                   normal, error);
+  if (r != Result::Ok) return r;
+  r = checkTexture("albedo", frame.albedo, {GL_TEXTURE_2D},
+                   {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGB10_A2, GL_RGB8, GL_SRGB8}, albedo,
+                   error);
+  if (r != Result::Ok) return r;
+  const TextureFacts* sized[] = {&depth, &normal, &albedo};
+  const char* names[] = {"depth", "normal", "albedo"};
+  for (int i = 0; i < 3; ++i) {
+    if (sized[i]->width != target.width || sized[i]->height != target.height) {
+      error = std::string(names[i]) + " is " + std::to_string(sized[i]->width) + "x" +
+              std::to_string(sized[i]->height) + " but target is " + std::to_string(target.width) +
+              "x" + std::to_string(target.height);
+      return Result::SizeMismatch;
+    }
+  }
+
+  TextureFacts water;
+  const bool single = create.waterTexture == WaterTextureType::Single2D;
+  r = checkTexture("water.texture", frame.water.texture,
+                   {static_cast<GLenum>(single ? GL_TEXTURE_2D : GL_TEXTURE_2D_ARRAY)},
+                   {GL_RGBA16F, GL_RGBA32F, GL_RG16F, GL_RG32F}, water, error);
+  if (r != Result::Ok) return r;
+  if (!single && water.layers < frame.water.cascadeCount) {
+    error = "water.texture has " + std::to_string(water.layers) + " layers but cascadeCount is " +
+            std::to_string(frame.water.cascadeCount);
+    return Result::SizeMismatch;
+  }
+
+  if (hasFeature(create.features, Feature::ShadowMask)) {
+    TextureFacts shadow;
+    r = checkTexture("shadow.depth", frame.shadow.depth, {GL_TEXTURE_2D}, kDepthFormats, shadow,
+                     error);
+    if (r != Result::Ok) return r;
+    r = checkDepthMode("shadow.depth", frame.shadow.depth.texture, error);
+    if (r != Result::Ok) return r;
+  }
+
+  out.width = target.width;
+  out.height = target.height;
+  out.water.width = water.width;
+  out.water.height = water.height;
+  out.waterMipmapped = isMipComplete(frame.water.texture.texture, water.width, water.height);
+  return Result::Ok;
+}
+
+}  // namespace postfx::detail

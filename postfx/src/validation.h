@@ -1,0 +1,31 @@
+#pragma once
+// Input validation. Everything here only reads: CPU values and GL *queries* (no binds, no state
+// changes, no GL errors), so a rejected call leaves the host's GL state untouched.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <postfx/postfx.h>
+
+#include "frame_constants.h"
+
+namespace postfx::detail {
+
+Result validateCreateDesc(const CreateDesc& desc, std::string& error);
+
+// CPU-only checks of the frame: finite camera, sane projection, settings in range.
+Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std::string& error);
+
+// What the texture checks learnt, for the pass.
+struct ValidatedTextures {
+  int width = 0, height = 0;  // of the target (= G-buffer)
+  WaterTextureInfo water;
+  bool waterMipmapped = false;  // mip-complete: sample with mips; otherwise level 0 only
+};
+
+// GL-query checks of every texture: a texture name, the right target and format, sizes that
+// match. Runs after validateFrameValues.
+Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
+                             ValidatedTextures& out, std::string& error);
+
+}  // namespace postfx::detail

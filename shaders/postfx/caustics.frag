@@ -1,0 +1,110 @@
+#version 450 core
+// Seabed caustics (seed 002, section 4) added into the host's HDR target. Compile-time
+// switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
+// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D.
+#include "postfx/caustics_io.glsl"
+#include "shared/gbuffer_codec.h"
+#include "shared/postfx_caustics.h"
+
+// Tri-planar weights below this skip their projection's fetches entirely.
+const float kMinPlaneWeight = 0.02;
+
+// Sum of the cascades' slopes for one projection, each cascade at its own mip level so that
+// small tiles blur away with distance and stop showing their repetition.
+vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint) {
+  vec2 slopes = vec2(0.0);
+  int cascades = int(u.oblique.w);
+  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
+    if (c >= cascades) break;
+    vec4 axes = u.cascadeAxes[c];
+    // The camera's share of the coordinate was reduced modulo the tile in double on the CPU.
+    vec2 offset = plane == 1 ? u.cascadeOblique[c].xy : (plane == 0 ? axes.zy : axes.xy);
+    vec2 uv = offset + coordMetres * axes.w;
+    float lod = logFootprint + u.cascadeOblique[c].z;
+    slopes += textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
+  }
+  return slopes;
+}
+
+// Tri-planar lookup: the plane facing up projects the receiver ALONG THE REFRACTED LIGHT onto
+// the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
+// Blended by the G-buffer normal.
+vec2 waterSlopes(vec3 p, vec3 n, float logFootprint) {
+  vec3 w = pow(abs(n), vec3(u.eta.w));
+  w /= max(w.x + w.y + w.z, 1e-20);
+  vec2 slopes = vec2(0.0);
+  if (w.y > kMinPlaneWeight) {
+    vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
+    slopes += w.y * cascadeSlopes(along, 1, logFootprint);
+  }
+  if (w.x > kMinPlaneWeight) slopes += w.x * cascadeSlopes(p.zy, 0, logFootprint);
+  if (w.z > kMinPlaneWeight) slopes += w.z * cascadeSlopes(p.xy, 2, logFootprint);
+  return slopes;
+}
+
+#if POSTFX_SHADOW_MASK
+float sunVisibility(vec3 p) {
+  vec4 clip = u.shadowMatrix * vec4(p, 1.0);
+  if (!(clip.w > 0.0)) return 1.0;
+  vec3 ndc = clip.xyz / clip.w;
+  if (!(abs(ndc.x) <= 1.0 && abs(ndc.y) <= 1.0)) return 1.0;  // outside the map: lit
+  float ref = (u.shadowParams.y > 0.5 ? ndc.z * 0.5 + 0.5 : ndc.z) + u.shadowParams.x;
+  return texture(sunShadowMap, vec3(ndc.xy * 0.5 + 0.5, clamp(ref, 0.0, 1.0)));
+}
+#endif
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(gbufferDepth, pixel, 0).r;
+  if (isSkyDepth(depth, POSTFX_DEPTH_CONVENTION)) {
+    emitNothing();
+    return;
+  }
+  vec3 viewPos = viewPositionFromDepth(gl_FragCoord.xy * u.viewport.xy, depth, u.projection,
+                                       u.depthAndWater.xy, POSTFX_DEPTH_CONVENTION);
+  vec3 p = mat3(u.viewToWorld) * viewPos;  // camera-relative world position
+  float depthBelow = u.depthAndWater.z - p.y;
+  if (!(depthBelow > 0.0)) {  // above the water (or NaN from a broken depth texel)
+    emitNothing();
+    return;
+  }
+  vec3 n = decodeNormal(texelFetch(gbufferNormal, pixel, 0), POSTFX_NORMAL_ENCODING);
+  float nDotL = dot(n, u.refractedUp.xyz);  // 0 for a zero/NaN G-buffer normal
+  if (!(nDotL > 0.0)) {
+    emitNothing();
+    return;
+  }
+  float visibility = 1.0;
+#if POSTFX_SHADOW_MASK
+  visibility = sunVisibility(p);
+  if (!(visibility > 0.0)) {
+    emitNothing();
+    return;
+  }
+#endif
+  // Pixel footprint in metres, widened where the surface is seen at a grazing angle.
+  float distance = length(viewPos);
+  float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
+  float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
+
+  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint));
+  float tau = u.towardSun.w;
+  float reflectionWeight = u.reference.w;
+#if POSTFX_DISPERSION
+  vec3 omega = vec3(
+      causticFactor(u.towardSun.xyz, waterNormal, u.eta.r, u.reference.xyz, tau, reflectionWeight),
+      causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz, tau, reflectionWeight),
+      causticFactor(u.towardSun.xyz, waterNormal, u.eta.b, u.reference.xyz, tau,
+                    reflectionWeight));
+#else
+  vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz, tau,
+                                  reflectionWeight));
+#endif
+  vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
+  vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
+  vec3 light = albedo * u.lightScale.rgb * causticTransmittance(u.absorptionPerDepth.rgb, depthBelow);
+  outLight = vec4(light * raw, 0.0);
+#if POSTFX_RAW_OUTPUT
+  outRaw = (raw.r + raw.g + raw.b) * (1.0 / 3.0);
+#endif
+}

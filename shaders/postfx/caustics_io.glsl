@@ -1,0 +1,34 @@
+// Inputs and outputs shared by the caustics and floor passes, so the floor reads and writes
+// exactly what the caustics pass does. Texture units match CausticsPass::Unit.
+#include "shared/common.h"
+#include "shared/postfx_caustics_block.h"
+
+layout(binding = 0) uniform sampler2D gbufferDepth;
+layout(binding = 1) uniform sampler2D gbufferNormal;
+layout(binding = 2) uniform sampler2D gbufferAlbedo;
+#if POSTFX_WATER_SINGLE_2D
+layout(binding = 3) uniform sampler2D waterSurface;
+#define WATER_COORD(uv, layer) (uv)
+#else
+layout(binding = 3) uniform sampler2DArray waterSurface;
+#define WATER_COORD(uv, layer) vec3(uv, float(layer))
+#endif
+#if POSTFX_SHADOW_MASK
+layout(binding = 4) uniform sampler2DShadow sunShadowMap;
+#endif
+
+layout(location = 0) out vec4 outLight;  // blended ONE, ONE into the host's HDR target
+#if POSTFX_RAW_OUTPUT
+layout(location = 1) out float outRaw;   // not blended
+#endif
+
+// A pixel that gets no caustics: with the raw output it must still be written (0); without it,
+// discard saves the blend.
+void emitNothing() {
+#if POSTFX_RAW_OUTPUT
+  outLight = vec4(0.0);
+  outRaw = 0.0;
+#else
+  discard;
+#endif
+}

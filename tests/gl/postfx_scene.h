@@ -1,0 +1,73 @@
+#pragma once
+// Test scenes for the postfx GL tests: a G-buffer ray-traced on the CPU (in double) and uploaded
+// in any depth convention and normal encoding, synthetic water textures with known slopes, and
+// read-back helpers. Every pixel's true world position and surface are kept for assertions.
+#include <epoxy/gl.h>
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include <postfx/postfx.h>
+
+namespace postfxtest {
+
+enum class Hit { Sky, Floor, Sphere };
+
+struct SceneSpec {
+  int width = 128, height = 72;
+  int depthConvention = 0;  // gbuffer::DepthConvention values
+  int normalEncoding = 0;   // gbuffer::NormalEncoding values
+  glm::dvec3 camera{0.0, -2.0, 0.0};
+  glm::dvec3 lookDirection{0.0, -0.6, -1.0};
+  double fovYDegrees = 60.0, nearPlane = 0.1, farPlane = 200.0;
+  double floorY = -8.0;
+  double stepX = 1e30;  // floor is at floorY2 for x > stepX (camera-relative x)
+  double floorY2 = -10.0;
+  bool sphere = true;                        // sphere straddling the water level, partly on screen
+  glm::dvec3 sphereCenter{2.0, -1.0, -8.0};  // camera-relative
+  double sphereRadius = 2.5;
+  glm::vec3 albedo{1.0f};
+  bool zeroNormals = false;  // store zero normals (a broken G-buffer)
+  bool allSky = false;       // depth at the far plane everywhere
+};
+
+struct PixelTruth {
+  Hit hit = Hit::Sky;
+  glm::dvec3 position{0.0};  // camera-relative world position
+  glm::dvec3 normal{0.0};
+};
+
+// Host-owned G-buffer textures of one scene; deleted with the object.
+class Scene {
+ public:
+  explicit Scene(const SceneSpec& spec, GLenum targetFormat = GL_RGBA32F);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  const SceneSpec& spec() const { return spec_; }
+  const PixelTruth& truth(int x, int y) const { return truth_[y * spec_.width + x]; }
+  GLuint depth = 0, normal = 0, albedo = 0, target = 0;
+  GLenum depthFormat = GL_DEPTH_COMPONENT32F, normalFormat = 0, targetFormat = 0;
+  glm::mat4 view{1.0f};
+  glm::dmat4 projection{1.0};
+  void clearTarget(const glm::vec4& value) const;
+
+ private:
+  SceneSpec spec_;
+  std::vector<PixelTruth> truth_;
+};
+
+// Water surface: GL_TEXTURE_2D_ARRAY RGBA32F, `layers` cascades, mipmapped. amplitude 0 gives
+// flat water; nan fills every texel with NaN.
+GLuint makeWaterTexture(int size, int layers, double amplitude, bool nan = false);
+
+// A frame for `scene` with the caustics defaults, water at `level` (world), camera at
+// scene.camera + offset (the whole scene moved by `offset`).
+postfx::FrameDesc makeFrame(const Scene& scene, GLuint water, int cascades,
+                            const glm::dvec3& offset = glm::dvec3(0.0), double level = 0.0);
+
+std::vector<float> readRed(GLuint texture, int width, int height);
+std::vector<glm::vec4> readRgba(GLuint texture, int width, int height);
+
+}  // namespace postfxtest

@@ -1,0 +1,31 @@
+#pragma once
+// Small helpers shared by the postfx GL tests.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <postfx/postfx.h>
+
+namespace postfxtest {
+
+struct ContextDeleter {
+  void operator()(postfx::Context* c) const { postfx::destroy(c); }
+};
+using ContextPtr = std::unique_ptr<postfx::Context, ContextDeleter>;
+
+inline ContextPtr makeContext(postfx::Feature features, int depthConvention = 0,
+                              int normalEncoding = 0) {
+  postfx::CreateDesc desc;
+  desc.features = features;
+  desc.depthConvention = depthConvention;
+  desc.normalEncoding = normalEncoding;
+  postfx::Context* fx = nullptr;
+  const postfx::Result r = postfx::create(desc, fx);
+  EXPECT_EQ(r, postfx::Result::Ok) << postfx::lastError(nullptr);
+  return ContextPtr(fx);
+}
+
+inline constexpr postfx::Feature kRaw =
+    postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+
+}  // namespace postfxtest

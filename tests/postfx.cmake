@@ -1,0 +1,17 @@
+# postfx tests: CPU math/validation in unit/, the plugin against synthetic G-buffers in gl/.
+# Both see the plugin's private headers (src/) and the shared GLSL/C++ headers, so they can
+# evaluate the exact shader math on the CPU.
+set(_postfx_private ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
+
+postfx_add_test(postfx_unit_tests
+  SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp
+  LIBS postfx gbuffer glm::glm PkgConfig::EPOXY)
+target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
+
+postfx_add_test(postfx_gl_tests
+  SOURCES gl/postfx_scene.cpp gl/postfx_state_test.cpp gl/postfx_bad_input_test.cpp
+          gl/postfx_caustics_test.cpp gl/postfx_stability_test.cpp gl/postfx_timing_test.cpp
+          gl/postfx_bench_test.cpp
+  LIBS postfx gbuffer glm::glm PkgConfig::EPOXY
+  GL)
+target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})

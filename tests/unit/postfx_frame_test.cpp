@@ -1,0 +1,110 @@
+// CPU side of a dispatch: the uniform block built in double, the skip test, value validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "frame_constants.h"
+#include "validation.h"
+#include "visibility.h"
+
+namespace {
+
+using namespace postfx;
+
+FrameDesc baseFrame() {
+  FrameDesc f;
+  f.camera.position = {3.0, -2.0, 5.0};
+  f.camera.view = glm::lookAt(glm::vec3(0), glm::vec3(0, -0.5f, -1), glm::vec3(0, 1, 0));
+  f.camera.projection = glm::perspective(1.0, 16.0 / 9.0, 0.1, 500.0);
+  f.sun.direction = glm::normalize(glm::dvec3(0.3, 1.0, 0.2));
+  f.water.cascadeCount = 3;
+  return f;
+}
+
+TEST(PostfxFrameConstants, TileOffsetsAtAMillionMetresMatchTheOrigin) {
+  const CreateDesc create;
+  FrameDesc near = baseFrame();
+  FrameDesc far = near;
+  far.camera.position += glm::dvec3(1e6, 1e6, -1e6);
+  far.water.level += 1e6;
+  const auto a = detail::buildCausticsBlock(create, near, 128, 72, {64, 64});
+  const auto b = detail::buildCausticsBlock(create, far, 128, 72, {64, 64});
+  for (int c = 0; c < 3; ++c) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(a.cascadeAxes[c][k], b.cascadeAxes[c][k], 1e-6f) << c << "," << k;
+    }
+    EXPECT_NEAR(a.cascadeOblique[c].x, b.cascadeOblique[c].x, 1e-6f);
+    EXPECT_NEAR(a.cascadeOblique[c].y, b.cascadeOblique[c].y, 1e-6f);
+  }
+  EXPECT_EQ(a.depthAndWater.z, b.depthAndWater.z) << "level relative to camera";
+}
+
+TEST(PostfxFrameConstants, TileFractionInUnitRange) {
+  for (double x : {-1e9, -64.0, -1e-12, 0.0, 1e-12, 63.999999, 64.0, 1e6 + 0.5, 1e12}) {
+    const double f = detail::tileFraction(x, 64.0);
+    EXPECT_GE(f, 0.0) << x;
+    EXPECT_LT(f, 1.0) << x;
+  }
+  EXPECT_DOUBLE_EQ(detail::tileFraction(1e6 + 16.0, 64.0), 0.25);
+}
+
+TEST(PostfxFrameConstants, RefractedSunAndReference) {
+  const glm::dvec3 zenith(0, 1, 0);
+  const glm::dvec3 straight = detail::refractedSunDown(zenith, 1.333);
+  EXPECT_NEAR(glm::length(straight - glm::dvec3(0, -1, 0)), 0.0, 1e-15);
+  EXPECT_EQ(detail::incidencePlaneNormal(zenith), glm::dvec3(1, 0, 0));
+  const glm::dvec3 grazing = glm::normalize(glm::dvec3(1.0, 1e-6, 0.0));
+  const glm::dvec3 t = detail::refractedSunDown(grazing, 1.333);
+  EXPECT_NEAR(std::asin(-t.x), std::asin(1.0 / 1.333), 1e-5) << "critical angle, away from the sun";
+  const glm::dvec3 h = detail::incidencePlaneNormal(grazing);
+  EXPECT_NEAR(glm::dot(h, t), 0.0, 1e-12);
+  EXPECT_NEAR(glm::dot(h, grazing), 0.0, 1e-12);
+}
+
+TEST(PostfxVisibility, SkipOnlyWhenTheFrustumStaysAboveTheWater) {
+  const glm::dmat4 proj = glm::perspective(1.0, 1.5, 0.1, 200.0);
+  auto rotation = [](glm::vec3 dir) {
+    return detail::viewToWorldRotation(glm::lookAt(glm::vec3(0), dir, glm::vec3(0, 1, 0)));
+  };
+  const glm::dmat3 up = rotation({0, 0.6f, -1}), down = rotation({0, -0.6f, -1});
+  EXPECT_TRUE(detail::frustumReachesBelowWater(up, proj, 2, 1e-4)) << "camera under water";
+  EXPECT_TRUE(detail::frustumReachesBelowWater(up, proj, 2, 0.0)) << "camera at the level";
+  EXPECT_FALSE(detail::frustumReachesBelowWater(up, proj, 2, -1.0)) << "looking up from above";
+  EXPECT_TRUE(detail::frustumReachesBelowWater(down, proj, 2, -10.0)) << "looking down";
+  EXPECT_FALSE(detail::frustumReachesBelowWater(down, proj, 2, -1e4)) << "far plane too short";
+  // Infinite reverse-Z: any downward edge reaches every depth.
+  glm::dmat4 infinite(0.0);
+  infinite[0][0] = 1.0;
+  infinite[1][1] = 1.5;
+  infinite[2][3] = -1.0;
+  infinite[3][2] = 0.1;
+  EXPECT_TRUE(detail::frustumReachesBelowWater(down, infinite, 0, -1e6));
+  EXPECT_FALSE(detail::frustumReachesBelowWater(rotation({0, 1, -0.2f}), infinite, 0, -1.0));
+}
+
+TEST(PostfxValidation, RejectsNaNAndOutOfRangeValues) {
+  const CreateDesc create;
+  std::string error;
+  EXPECT_EQ(detail::validateFrameValues(create, baseFrame(), error), Result::Ok) << error;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  auto expectInvalid = [&](auto spoil, const char* mentions) {
+    FrameDesc f = baseFrame();
+    spoil(f);
+    EXPECT_EQ(detail::validateFrameValues(create, f, error), Result::InvalidArgument) << mentions;
+    EXPECT_NE(error.find(mentions), std::string::npos) << error;
+  };
+  expectInvalid([&](FrameDesc& f) { f.caustics.tau = nan; }, "tau");
+  expectInvalid([&](FrameDesc& f) { f.caustics.tau = 2e6f; }, "tau");
+  expectInvalid([&](FrameDesc& f) { f.caustics.lodBias = nan; }, "lodBias");
+  expectInvalid([&](FrameDesc& f) { f.caustics.surfaceFadeDepth = -1.0f; }, "surfaceFadeDepth");
+  expectInvalid([&](FrameDesc& f) { f.sun.irradiance.g = nan; }, "irradiance");
+  expectInvalid([&](FrameDesc& f) { f.water.absorption.b = -0.1f; }, "absorption");
+  expectInvalid([&](FrameDesc& f) { f.water.cascadeCount = 0; }, "cascadeCount");
+  expectInvalid([&](FrameDesc& f) { f.camera.projection[2][2] = double(nan); }, "projection");
+}
+
+}  // namespace
