@@ -1,0 +1,41 @@
+#pragma once
+// The sample's camera: world position in double (the plugin's convention), orientation as yaw
+// and pitch, reverse-Z infinite perspective (the recommended host setup).
+#include <glm/glm.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace ocean {
+
+struct Camera {
+  glm::dvec3 position{0.0, -4.0, 12.0};  // metres, y up, water level y = 0
+  double yaw = 0.0;                      // radians, 0 looks toward -Z
+  double pitch = 0.0;                    // radians, positive looks up
+  double fovY = glm::radians(60.0);      // radians
+  double nearPlane = 0.05;               // metres
+
+  glm::dvec3 forward() const;
+  glm::dmat3 rotation() const;                 // camera-to-world
+  glm::mat4 viewRotation() const;              // world-to-camera, translation removed
+  glm::dmat4 projection(double aspect) const;  // reverse-Z, infinite far, column-major
+};
+
+struct Sun {
+  double elevation = glm::radians(55.0);   // radians above the horizon
+  double azimuth = glm::radians(200.0);    // radians, 0 = toward -Z, clockwise seen from above
+  glm::vec3 irradiance{3.2f, 3.0f, 2.7f};  // linear RGB at normal incidence above the water
+  glm::dvec3 direction() const;            // unit vector toward the sun
+};
+
+struct Preset {
+  std::string_view name;
+  std::string_view description;
+  Camera camera;
+  Sun sun;
+};
+
+// Returns false when the name is unknown; `known` lists the valid names for the message.
+bool findPreset(std::string_view name, Preset& preset, std::string& known);
+
+}  // namespace ocean

@@ -1,0 +1,74 @@
+#include "gpu_scene.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <glkit/program.h>
+
+namespace ocean {
+
+GpuScene::~GpuScene() {
+  for (GpuMesh& mesh : meshes_) {
+    glDeleteVertexArrays(1, &mesh.vao);
+    glDeleteBuffers(1, &mesh.vertices);
+    glDeleteBuffers(1, &mesh.indices);
+  }
+}
+
+void GpuScene::upload(const ocean_scene::Model& model) {
+  for (const ocean_scene::Mesh& mesh : model.meshes) {
+    std::vector<glm::vec3> interleaved;
+    interleaved.reserve(mesh.positions.size() * 2);
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+      interleaved.push_back(mesh.positions[i]);
+      interleaved.push_back(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0));
+    }
+    GpuMesh gpu;
+    glCreateBuffers(1, &gpu.vertices);
+    glNamedBufferStorage(gpu.vertices, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)),
+                         interleaved.data(), 0);
+    glCreateBuffers(1, &gpu.indices);
+    glNamedBufferStorage(gpu.indices, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)),
+                         mesh.indices.data(), 0);
+    glCreateVertexArrays(1, &gpu.vao);
+    glVertexArrayVertexBuffer(gpu.vao, 0, gpu.vertices, 0, 2 * sizeof(glm::vec3));
+    glVertexArrayElementBuffer(gpu.vao, gpu.indices);
+    for (GLuint attribute : {0u, 1u}) {
+      glEnableVertexArrayAttrib(gpu.vao, attribute);
+      glVertexArrayAttribFormat(gpu.vao, attribute, 3, GL_FLOAT, GL_FALSE,
+                                attribute * GLuint(sizeof(glm::vec3)));
+      glVertexArrayAttribBinding(gpu.vao, attribute, 0);
+    }
+    glkit::label(GL_VERTEX_ARRAY, gpu.vao, "scene." + mesh.name);
+    gpu.indexCount = GLsizei(mesh.indices.size());
+    meshes_.push_back(gpu);
+  }
+  for (const ocean_scene::Instance& instance : model.instances) {
+    const ocean_scene::Mesh& mesh = model.meshes[instance.mesh];
+    const glm::vec3 albedo = mesh.material < model.materials.size()
+                                 ? model.materials[mesh.material].baseColor
+                                 : glm::vec3(0.5f);
+    instances_.push_back({instance.mesh, glm::dmat4(instance.transform), albedo});
+  }
+}
+
+void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition) const {
+  const GLint modelLocation = glGetUniformLocation(program, "modelRelative");
+  const GLint normalLocation = glGetUniformLocation(program, "normalMatrix");
+  const GLint albedoLocation = glGetUniformLocation(program, "albedo");
+  for (const GpuInstance& instance : instances_) {
+    glm::dmat4 relative = instance.transform;
+    relative[3] -= glm::dvec4(cameraPosition, 0.0);  // in double: far worlds stay precise
+    const glm::mat4 model(relative);
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
+    glUniformMatrix4fv(modelLocation, 1, GL_FALSE, glm::value_ptr(model));
+    if (normalLocation >= 0)
+      glUniformMatrix3fv(normalLocation, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    if (albedoLocation >= 0) glUniform3fv(albedoLocation, 1, glm::value_ptr(instance.albedo));
+    const GpuMesh& mesh = meshes_[instance.mesh];
+    glBindVertexArray(mesh.vao);
+    glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace ocean

@@ -1,0 +1,86 @@
+#include "image_output.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
+#include <filesystem>
+#include <system_error>
+
+namespace ocean {
+namespace {
+
+std::string extensionOf(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+template <typename T>
+bool writeFlipped(const std::string& path, int width, int height, const T* pixels,
+                  OIIO::TypeDesc type, std::string& error) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".partial" +
+                                                     target.extension().string());
+  auto output = OIIO::ImageOutput::create(path);
+  if (!output) {
+    error = "cannot write '" + path + "': " + OIIO::geterror();
+    return false;
+  }
+  OIIO::ImageSpec spec(width, height, 4, type);
+  if (!output->open(temporary.string(), spec)) {
+    error = "cannot write '" + path + "': " + output->geterror();
+    return false;
+  }
+  // GL rows are bottom-up; images are top-down: start at the last row, negative stride.
+  const auto rowBytes = OIIO::stride_t(sizeof(T) * 4 * width);
+  const T* lastRow = pixels + size_t(height - 1) * 4 * width;
+  const bool written = output->write_image(type, lastRow, OIIO::AutoStride, -rowBytes);
+  const bool closed = output->close();
+  std::error_code code;
+  if (!written || !closed) {
+    error = "cannot write '" + path + "': " + output->geterror();
+    fs::remove(temporary, code);
+    return false;
+  }
+  fs::rename(temporary, target, code);
+  if (code) {
+    error = "cannot write '" + path + "': " + code.message();
+    fs::remove(temporary, code);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool checkOutputPath(const std::string& path, std::string& error) {
+  const std::string extension = extensionOf(path);
+  if (extension != ".png" && extension != ".exr") {
+    error = "output '" + path + "' must end in .png or .exr";
+    return false;
+  }
+  std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  if (directory.empty()) directory = ".";
+  std::error_code code;
+  if (!std::filesystem::is_directory(directory, code) || access(directory.c_str(), W_OK) != 0) {
+    error = "output directory '" + directory.string() + "' does not exist or is not writable";
+    return false;
+  }
+  if (std::filesystem::is_directory(path, code)) {
+    error = "output '" + path + "' is a directory";
+    return false;
+  }
+  return true;
+}
+
+bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,
+                const std::vector<float>* linearRgba, std::string& error) {
+  if (!checkOutputPath(path, error)) return false;
+  if (extensionOf(path) == ".exr" && linearRgba != nullptr) {
+    return writeFlipped(path, width, height, linearRgba->data(), OIIO::TypeDesc::FLOAT, error);
+  }
+  return writeFlipped(path, width, height, rgba8.data(), OIIO::TypeDesc::UINT8, error);
+}
+
+}  // namespace ocean

@@ -1,0 +1,18 @@
+#pragma once
+// Writes images through OpenImageIO. A failed write leaves no file behind: the image goes to a
+// temporary name in the same directory and is renamed into place only when complete.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ocean {
+
+// RGBA8 pixels, bottom row first (GL order); `.png` (or any 8-bit format OIIO knows) by
+// extension; `.exr` gets the linear float buffer instead when one is given.
+bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,
+                const std::vector<float>* linearRgba, std::string& error);
+
+// Checks the output path before any rendering: known extension, writable directory.
+bool checkOutputPath(const std::string& path, std::string& error);
+
+}  // namespace ocean

@@ -1,0 +1,134 @@
+#include "options.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+
+namespace ocean {
+namespace {
+
+bool parseInt(std::string_view text, int& value) {
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  return result.ec == std::errc() && result.ptr == text.data() + text.size();
+}
+
+bool parseDouble(std::string_view text, double& value) {
+  const std::string copy(text);
+  char* end = nullptr;
+  value = std::strtod(copy.c_str(), &end);
+  return !copy.empty() && end == copy.c_str() + copy.size();
+}
+
+}  // namespace
+
+std::string usage() {
+  return R"(ocean_sample: the ocean scene that hosts the postfx underwater-lighting plugin.
+
+usage:
+  ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
+                      [--out FILE] [--no-caustics] [--tau T] [--water-resolution N]
+      Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
+      or .exr (linear radiance). Default output: ocean.png.
+  ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
+      Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, T pauses time,
+      1-4 switch presets, Esc quits.
+  ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE]
+      Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a
+      floor pass that reads the same inputs and writes the same outputs with no math.
+  ocean_sample --help
+
+presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
+the sun), above (above the water looking down), waterline (camera 3 cm above the water).
+)";
+}
+
+bool parseOptions(int argc, const char* const* argv, Options& options, std::string& error) {
+  if (argc < 2) {
+    error = "no command given (try --help)";
+    return false;
+  }
+  const std::string_view command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    options.command = Command::Help;
+    return true;
+  }
+  if (command == "render") {
+    options.command = Command::Render;
+  } else if (command == "view") {
+    options.command = Command::View;
+  } else if (command == "bench") {
+    options.command = Command::Bench;
+  } else {
+    error = "unknown command '" + std::string(command) + "' (try --help)";
+    return false;
+  }
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view flag = argv[i];
+    if (flag == "--help" || flag == "-h") {
+      options.command = Command::Help;
+      return true;
+    }
+    if (flag == "--no-caustics") {
+      options.caustics = false;
+      continue;
+    }
+    if (i + 1 >= argc) {
+      error = "option " + std::string(flag) + " needs a value";
+      return false;
+    }
+    const std::string_view value = argv[++i];
+    auto needPositiveSize = [&](int& target, const char* what) {
+      if (!parseInt(value, target) || target <= 0 || target > kMaxImageSide) {
+        error = std::string(what) + " must be an integer in [1, " + std::to_string(kMaxImageSide) +
+                "], got '" + std::string(value) + "'";
+        return false;
+      }
+      return true;
+    };
+    if (flag == "--preset") {
+      options.preset = value;
+    } else if (flag == "--width") {
+      if (!needPositiveSize(options.width, "--width")) return false;
+    } else if (flag == "--height") {
+      if (!needPositiveSize(options.height, "--height")) return false;
+    } else if (flag == "--time") {
+      if (!parseDouble(value, options.timeSeconds) || !std::isfinite(options.timeSeconds)) {
+        error = "--time must be a finite number of seconds, got '" + std::string(value) + "'";
+        return false;
+      }
+    } else if (flag == "--tau") {
+      if (!parseDouble(value, options.tau) || !(options.tau >= 0.0 && options.tau <= 1e6)) {
+        error = "--tau must be a number in [0, 1e6], got '" + std::string(value) + "'";
+        return false;
+      }
+    } else if (flag == "--model") {
+      options.models.emplace_back(value);
+    } else if (flag == "--out") {
+      options.out = value;
+    } else if (flag == "--json") {
+      options.json = value;
+    } else if (flag == "--frames") {
+      if (!parseInt(value, options.frames) || options.frames < 1 || options.frames > 100000) {
+        error = "--frames must be an integer in [1, 100000], got '" + std::string(value) + "'";
+        return false;
+      }
+    } else if (flag == "--water-resolution") {
+      const int n = options.waterResolution;
+      if (!parseInt(value, options.waterResolution) || options.waterResolution < 8 ||
+          options.waterResolution > 512 ||
+          (options.waterResolution & (options.waterResolution - 1)) != 0) {
+        options.waterResolution = n;
+        error = "--water-resolution must be a power of two in [8, 512], got '" +
+                std::string(value) + "'";
+        return false;
+      }
+    } else {
+      error = "unknown option '" + std::string(flag) + "' (try --help)";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace ocean

@@ -1,0 +1,30 @@
+#pragma once
+// Command-line options of ocean_sample. Parsing validates everything it can before any GL
+// work starts, so bad input fails fast with one line and leaves no output behind.
+#include <string>
+#include <vector>
+
+namespace ocean {
+
+enum class Command { Help, Render, View, Bench };
+
+struct Options {
+  Command command = Command::Help;
+  std::string preset = "seabed";
+  int width = 1280, height = 720;
+  double timeSeconds = 0.0;
+  std::vector<std::string> models;  // extra .glb files placed in the scene
+  std::string out = "ocean.png";
+  int frames = 60;       // bench: measured frames after warm-up
+  std::string json;      // bench: JSON output path
+  bool caustics = true;  // the plugin's seabed caustics
+  double tau = -1.0;     // caustics tightening; < 0 keeps the plugin's default
+  int waterResolution = 256;
+};
+
+inline constexpr int kMaxImageSide = 16384;
+
+bool parseOptions(int argc, const char* const* argv, Options& options, std::string& error);
+std::string usage();
+
+}  // namespace ocean

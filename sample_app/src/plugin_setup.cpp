@@ -1,0 +1,80 @@
+#include "plugin_setup.h"
+
+#include <cstdio>
+
+namespace ocean {
+
+std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Options& options,
+                                                 bool benchmarkFloor, std::string& error) {
+  std::unique_ptr<PluginSetup> setup(new PluginSetup());
+  postfx::CreateDesc desc;
+  desc.features =
+      postfx::Feature::Caustics | postfx::Feature::ShadowMask | postfx::Feature::Dispersion;
+  if (benchmarkFloor) desc.features = desc.features | postfx::Feature::BenchmarkFloor;
+  desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
+  desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
+  if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(nullptr);
+    return nullptr;
+  }
+  setup->caustics_.enabled = options.caustics;
+  if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
+  PluginSetup* self = setup.get();
+  renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
+    return self->dispatch(frame, message);
+  });
+  return setup;
+}
+
+PluginSetup::~PluginSetup() {
+  postfx::destroy(context_);
+}
+
+bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
+  const gbuffer::Targets& targets = frame.targets;
+  const water::Ocean& ocean = frame.ocean;
+  postfx::FrameDesc desc;
+  desc.depth = {targets.depth(), GL_DEPTH_COMPONENT32F};
+  desc.normal = {targets.normal(), GL_RG16_SNORM};
+  desc.albedo = {targets.albedo(), GL_SRGB8_ALPHA8};
+  desc.target = {targets.hdr(), GL_RGBA16F};
+  desc.camera.position = frame.input.camera.position;
+  desc.camera.view = frame.input.camera.viewRotation();
+  desc.camera.projection = glm::mat4(frame.projection);
+  desc.sun.direction = frame.input.sun.direction();
+  desc.sun.irradiance = frame.input.sun.irradiance;
+  desc.water.level = frame.optics.level;
+  desc.water.texture = {ocean.slopeTexture(), GL_RGBA16F};
+  desc.water.cascadeCount = std::min(ocean.cascadeCount(), postfx::kMaxCascades);
+  for (int c = 0; c < desc.water.cascadeCount; ++c) desc.water.tileSize[c] = ocean.tileSize(c);
+  desc.water.ior = float(frame.optics.ior);
+  const float spread = float(frame.optics.iorSpread);
+  desc.water.iorRgb =
+      glm::vec3(desc.water.ior - 0.5f * spread, desc.water.ior, desc.water.ior + 0.5f * spread);
+  desc.water.absorption =
+      glm::vec3(frame.optics.absorption.r, frame.optics.absorption.g, frame.optics.absorption.b);
+  desc.shadow.depth = {frame.shadowMap, GL_DEPTH_COMPONENT32F};
+  desc.shadow.worldToLightClip = frame.shadowWorldToClip;
+  desc.shadow.depthConvention = static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
+  desc.caustics = caustics_;
+  if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(context_);
+    return false;
+  }
+  return true;
+}
+
+std::string PluginSetup::timingSummary() const {
+  const postfx::FrameStats& frameStats = stats();
+  std::string summary;
+  for (int i = 0; i < frameStats.passCount; ++i) {
+    const postfx::PassStats& pass = frameStats.passes[i];
+    char line[96];
+    std::snprintf(line, sizeof(line), "%s%s %.3f ms", summary.empty() ? "" : "  |  ", pass.name,
+                  pass.skipped ? 0.0 : pass.medianMs);
+    summary += line;
+  }
+  return summary.empty() ? "no passes timed yet" : summary;
+}
+
+}  // namespace ocean

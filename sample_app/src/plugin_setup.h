@@ -1,0 +1,37 @@
+#pragma once
+// Connects the postfx plugin to the sample renderer: creates the plugin context and installs
+// the pass that hands it the host's textures every frame. This file is the worked example of
+// an integration; the README's snippet is a condensed copy.
+#include <gbuffer/codec.h>
+#include <postfx/postfx.h>
+
+#include <memory>
+#include <string>
+
+#include "options.h"
+#include "renderer.h"
+
+namespace ocean {
+
+class PluginSetup {
+ public:
+  // benchmarkFloor: also run the plugin's floor pass, for ratios (ocean_sample bench).
+  static std::unique_ptr<PluginSetup> create(Renderer& renderer, const Options& options,
+                                             bool benchmarkFloor, std::string& error);
+  ~PluginSetup();
+  PluginSetup(const PluginSetup&) = delete;
+  PluginSetup& operator=(const PluginSetup&) = delete;
+
+  postfx::CausticsSettings& caustics() { return caustics_; }
+  const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
+  std::string timingSummary() const;  // "caustics 0.41 ms (median)" ...
+
+ private:
+  PluginSetup() = default;
+  bool dispatch(const HostFrame& frame, std::string& error);
+
+  postfx::Context* context_ = nullptr;
+  postfx::CausticsSettings caustics_;
+};
+
+}  // namespace ocean

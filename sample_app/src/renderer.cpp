@@ -1,0 +1,275 @@
+#include "renderer.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+#include <gbuffer/codec.h>
+
+#include "shared/sample_frame.h"
+#include "shared/sample_optics.h"
+
+namespace ocean_sample {
+const glkit::ShaderLibrary& shaderLibrary();
+}
+
+namespace ocean {
+namespace {
+
+GLuint makeColorTarget(GLenum format, int width, int height, const char* name) {
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, format, width, height);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glkit::label(GL_TEXTURE, texture, name);
+  return texture;
+}
+
+bool build(glkit::Program& program, const char* vertex, const char* fragment, const char* label,
+           std::string& error) {
+  GLuint id = 0;
+  if (!glkit::buildProgram(ocean_sample::shaderLibrary(),
+                           {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", label,
+                           id, error)) {
+    return false;
+  }
+  program = glkit::Program(id);
+  return true;
+}
+
+void drawFullscreen(GLuint vao) {
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+}  // namespace
+
+std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
+                                           const ocean_scene::Model& scene, std::string& error) {
+  std::unique_ptr<Renderer> renderer(new Renderer());
+  renderer->settings_ = settings;
+  if (!renderer->initialise(scene, error)) return nullptr;
+  return renderer;
+}
+
+Renderer::~Renderer() {
+  glDeleteBuffers(1, &frameUniforms_);
+  glDeleteVertexArrays(1, &emptyVao_);
+  glDeleteTextures(1, &fogged_);
+  glDeleteTextures(1, &output_);
+  glDeleteFramebuffers(1, &foggedFbo_);
+  glDeleteFramebuffers(1, &outputFbo_);
+}
+
+bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
+  if (targets_.resize(settings_.width, settings_.height, error) != gbuffer::TargetError::None) {
+    return false;
+  }
+  water::OceanDesc oceanDesc;
+  oceanDesc.resolution = settings_.waterResolution;
+  if (water::Ocean::create(oceanDesc, ocean_, error) != water::Result::Ok) return false;
+
+  if (!build(geometry_, "sample/geometry.vert", "sample/geometry.frag", "sample.geometry", error) ||
+      !build(shadow_, "sample/shadow.vert", "sample/depth_only.frag", "sample.shadow", error) ||
+      !build(lighting_, "sample/fullscreen.vert", "sample/lighting.frag", "sample.lighting",
+             error) ||
+      !build(composite_, "sample/fullscreen.vert", "sample/composite.frag", "sample.fog", error) ||
+      !build(water_, "sample/water_surface.vert", "sample/water_surface.frag",
+             "sample.water_surface", error) ||
+      !build(tonemap_, "sample/fullscreen.vert", "sample/tonemap.frag", "sample.tonemap", error)) {
+    return false;
+  }
+  scene_.upload(scene);
+  shadowMap_.create(settings_.shadowMapSize);
+  waterGrid_.create(160, 256, 0.02f, 4000.0f);
+
+  glCreateBuffers(1, &frameUniforms_);
+  glNamedBufferStorage(frameUniforms_, sizeof(shared::SampleFrame), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
+  glkit::label(GL_BUFFER, frameUniforms_, "sample.frame_constants");
+  glCreateVertexArrays(1, &emptyVao_);
+
+  fogged_ = makeColorTarget(GL_RGBA16F, settings_.width, settings_.height, "sample.fogged");
+  glCreateFramebuffers(1, &foggedFbo_);
+  glNamedFramebufferTexture(foggedFbo_, GL_COLOR_ATTACHMENT0, fogged_, 0);
+  glNamedFramebufferTexture(foggedFbo_, GL_DEPTH_ATTACHMENT, targets_.depth(), 0);
+  output_ = makeColorTarget(GL_RGBA8, settings_.width, settings_.height, "sample.output");
+  glCreateFramebuffers(1, &outputFbo_);
+  glNamedFramebufferTexture(outputFbo_, GL_COLOR_ATTACHMENT0, output_, 0);
+  for (GLuint fbo : {foggedFbo_, outputFbo_}) {
+    if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      error = "sample framebuffer incomplete";
+      return false;
+    }
+  }
+  return true;
+}
+
+void Renderer::updateFrameConstants(const FrameInput& input) {
+  const Camera& camera = input.camera;
+  const double aspect = double(settings_.width) / settings_.height;
+  const glm::dmat4 projection = camera.projection(aspect);
+  const glm::dvec3 toSun = input.sun.direction();
+  const double ior = optics_.ior;
+
+  // The beam under water: refracted through the mean surface.
+  const glm::dvec3 travel = glm::refract(-toSun, glm::dvec3(0, 1, 0), 1.0 / ior);
+  const glm::dvec3 toSunUnderwater = toSun.y > 0.0 ? -travel : glm::dvec3(0, 1, 0);
+  const float transmission =
+      1.0f - shared::fresnelReflectance(float(std::max(toSun.y, 0.0)), 1.0f, float(ior));
+  shadowWorldToClip_ =
+      shadowMap_.fit(camera.position, glm::vec3(toSunUnderwater), settings_.shadowRadius);
+
+  shared::SampleFrame frame{};
+  frame.viewProjection = glm::mat4(projection) * camera.viewRotation();
+  frame.cameraToWorld = glm::mat4(camera.rotation());
+  frame.shadowViewProjection = ShadowMap::relativeTo(shadowWorldToClip_, camera.position);
+  const gbuffer::ProjectionParams params =
+      gbuffer::projectionParams(projection, gbuffer::DepthConvention::ReverseZ);
+  frame.projectionXY = params.xy;
+  frame.projectionZ = glm::vec4(params.z, float(gbuffer::DepthConvention::ReverseZ), 0.0f);
+  frame.cameraHeight = glm::vec4(float(camera.position.y - optics_.level),
+                                 float(std::fmod(input.timeSeconds, 1000.0)), 0.0f, 0.0f);
+  frame.sunDirection = glm::vec4(glm::vec3(toSun), toSun.y > 0.0 ? 1.0f : 0.0f);
+  // Irradiance on a surface facing the sun scales with nothing else; the atmosphere reddens
+  // and dims a low sun.
+  const float airMass = float(1.0 / std::max(toSun.y, 0.02));
+  const glm::vec3 atmosphere = glm::exp(-glm::vec3(0.02f, 0.035f, 0.07f) * (airMass - 1.0f));
+  frame.sunIrradiance = glm::vec4(input.sun.irradiance * atmosphere, 0.0f);
+  frame.refractedSun = glm::vec4(glm::vec3(toSunUnderwater), transmission);
+  const float skyLight = 0.25f + 0.6f * float(std::max(toSun.y, 0.0));
+  frame.ambient = glm::vec4(glm::vec3(0.45f, 0.6f, 0.85f) * skyLight, 0.0f);
+  frame.absorption = glm::vec4(optics_.absorption.r, optics_.absorption.g, optics_.absorption.b, 0);
+  frame.scattering = glm::vec4(optics_.scattering.r, optics_.scattering.g, optics_.scattering.b, 0);
+  frame.waterParams =
+      glm::vec4(float(ior), float(2.0 * settings_.shadowRadius / shadowMap_.size()), 0.0f, 0.0f);
+  for (int c = 0; c < ocean_->cascadeCount() && c < 4; ++c) {
+    const double tile = ocean_->tileSize(c);
+    // The camera's place in each tile, reduced in double: float never sees 1e6 m.
+    const glm::dvec2 inTile = glm::fract(glm::dvec2(camera.position.x, camera.position.z) / tile);
+    frame.cascadeTile[c] = glm::vec4(float(tile), float(1.0 / tile), glm::vec2(inTile));
+  }
+  frame.cascadeInfo =
+      glm::vec4(float(std::min(ocean_->cascadeCount(), 4)), settings_.exposure, 0.0f, 0.0f);
+  glNamedBufferSubData(frameUniforms_, 0, sizeof(frame), &frame);
+}
+
+bool Renderer::render(const FrameInput& input, std::string& error) {
+  if (ocean_->update(input.timeSeconds, error) != water::Result::Ok) return false;
+  updateFrameConstants(input);
+  const int width = settings_.width, height = settings_.height;
+  const glm::dvec3 eye = input.camera.position;
+
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.shadow");
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer());
+  glViewport(0, 0, shadowMap_.size(), shadowMap_.size());
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  glUseProgram(shadow_.id());
+  scene_.draw(shadow_.id(), eye);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glPopDebugGroup();
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.geometry");
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.geometryFramebuffer());
+  glViewport(0, 0, width, height);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, zero);
+  glClearBufferfv(GL_COLOR, 1, zero);
+  glClearDepth(0.0);  // reverse-Z: far is 0
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glDepthFunc(GL_GREATER);
+  glUseProgram(geometry_.id());
+  scene_.draw(geometry_.id(), eye);
+  glPopDebugGroup();
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.lighting");
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.lightingFramebuffer());
+  glUseProgram(lighting_.id());
+  const GLuint lightingInputs[] = {targets_.depth(), targets_.normal(), targets_.albedo(),
+                                   shadowMap_.texture()};
+  glBindTextures(0, 4, lightingInputs);
+  drawFullscreen(emptyVao_);
+  glPopDebugGroup();
+
+  if (plugin_) {
+    const HostFrame frame{targets_,
+                          input,
+                          *ocean_,
+                          optics_,
+                          shadowMap_.texture(),
+                          shadowWorldToClip_,
+                          input.camera.projection(double(width) / height)};
+    if (!plugin_(frame, error)) return false;
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
+  }
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.fog");
+  glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_);
+  glViewport(0, 0, width, height);
+  glUseProgram(composite_.id());
+  const GLuint fogInputs[] = {targets_.depth(), targets_.hdr()};
+  glBindTextures(0, 2, fogInputs);
+  drawFullscreen(emptyVao_);
+  glPopDebugGroup();
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.water_surface");
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glUseProgram(water_.id());
+  const GLuint waterInputs[] = {ocean_->displacementTexture(), ocean_->slopeTexture()};
+  glBindTextures(4, 2, waterInputs);
+  waterGrid_.draw();
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glPopDebugGroup();
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.tonemap");
+  glBindFramebuffer(GL_FRAMEBUFFER, outputFbo_);
+  glUseProgram(tonemap_.id());
+  glBindTextureUnit(0, fogged_);
+  drawFullscreen(emptyVao_);
+  glPopDebugGroup();
+
+  glBindTextures(0, 6, nullptr);
+  glUseProgram(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return true;
+}
+
+void Renderer::presentTo(GLuint framebuffer, int width, int height) const {
+  glBlitNamedFramebuffer(outputFbo_, framebuffer, 0, 0, settings_.width, settings_.height, 0, 0,
+                         width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+std::vector<uint8_t> Renderer::readColor() const {
+  std::vector<uint8_t> pixels(size_t(settings_.width) * settings_.height * 4);
+  glGetTextureImage(output_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+  return pixels;
+}
+
+std::vector<float> Renderer::readRadiance() const {
+  std::vector<float> pixels(size_t(settings_.width) * settings_.height * 4);
+  glGetTextureImage(fogged_, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
+                    pixels.data());
+  return pixels;
+}
+
+}  // namespace ocean

@@ -1,0 +1,92 @@
+#pragma once
+// The sample host: a small deferred renderer of the ocean scene. Per frame: ocean update, sun
+// shadow map, G-buffer, deferred lighting into RGBA16F, [the plugin's passes], underwater fog,
+// the water surface, tone mapping into RGBA8.
+#include <epoxy/gl.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gbuffer/targets.h>
+#include <glkit/program.h>
+#include <scene/model.h>
+#include <water/ocean.h>
+#include <water/optics.h>
+
+#include "camera.h"
+#include "gpu_scene.h"
+#include "shadow_map.h"
+#include "water_grid.h"
+
+namespace ocean {
+
+struct RenderSettings {
+  int width = 1280, height = 720;  // pixels
+  int waterResolution = 256;       // FFT texels per cascade side (power of two, 8..512)
+  int shadowMapSize = 2048;        // texels per side
+  double shadowRadius = 40.0;      // metres around the camera the shadow map covers
+  float exposure = 1.0f;
+};
+
+struct FrameInput {
+  Camera camera;
+  Sun sun;
+  double timeSeconds = 0.0;
+};
+
+// What a plugin pass sees of the host's frame (the host owns all of it).
+struct HostFrame {
+  const gbuffer::Targets& targets;
+  const FrameInput& input;
+  const water::Ocean& ocean;
+  const water::Optics& optics;
+  GLuint shadowMap;              // D32F, forward [0,1], compare mode on
+  glm::dmat4 shadowWorldToClip;  // world -> shadow clip, double, translation included
+  glm::dmat4 projection;         // reverse-Z infinite
+};
+// Called between lighting and fog; returns false with a message to fail the frame.
+using PluginPass = std::function<bool(const HostFrame&, std::string& error)>;
+
+class Renderer {
+ public:
+  static std::unique_ptr<Renderer> create(const RenderSettings& settings,
+                                          const ocean_scene::Model& scene, std::string& error);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  void setPluginPass(PluginPass pass) { plugin_ = std::move(pass); }
+  bool render(const FrameInput& input, std::string& error);
+
+  // Blits the tone-mapped image into a host framebuffer (the window's is 0).
+  void presentTo(GLuint framebuffer, int width, int height) const;
+  std::vector<uint8_t> readColor() const;   // RGBA8 sRGB, bottom row first (GL order)
+  std::vector<float> readRadiance() const;  // RGBA32F linear, after fog and water surface
+  const RenderSettings& settings() const { return settings_; }
+  const gbuffer::Targets& targets() const { return targets_; }
+  const water::Optics& optics() const { return optics_; }
+  water::Ocean& ocean() { return *ocean_; }
+
+ private:
+  Renderer() = default;
+  bool initialise(const ocean_scene::Model& scene, std::string& error);
+  void updateFrameConstants(const FrameInput& input);
+
+  RenderSettings settings_;
+  water::Optics optics_;
+  gbuffer::Targets targets_;
+  std::unique_ptr<water::Ocean> ocean_;
+  GpuScene scene_;
+  ShadowMap shadowMap_;
+  WaterGrid waterGrid_;
+  glkit::Program geometry_, shadow_, lighting_, composite_, water_, tonemap_;
+  GLuint frameUniforms_ = 0, emptyVao_ = 0;
+  GLuint fogged_ = 0, foggedFbo_ = 0;  // RGBA16F: the frame after fog, plus the water surface
+  GLuint output_ = 0, outputFbo_ = 0;  // RGBA8 tone-mapped image
+  glm::dmat4 shadowWorldToClip_{1.0};
+  PluginPass plugin_;
+};
+
+}  // namespace ocean

@@ -1,0 +1,63 @@
+#include "water_grid.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include <glkit/program.h>
+
+namespace ocean {
+
+WaterGrid::~WaterGrid() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vertices_);
+  glDeleteBuffers(1, &indices_);
+}
+
+void WaterGrid::create(int rings, int segments, float innerRadius, float outerRadius) {
+  std::vector<glm::vec2> points{glm::vec2(0.0f)};
+  const double ratio = std::pow(double(outerRadius) / double(innerRadius), 1.0 / (rings - 1));
+  for (int ring = 0; ring < rings; ++ring) {
+    const double radius = double(innerRadius) * std::pow(ratio, ring);
+    for (int s = 0; s < segments; ++s) {
+      const double angle = 2.0 * M_PI * s / segments;
+      points.emplace_back(float(radius * std::cos(angle)), float(radius * std::sin(angle)));
+    }
+  }
+  // Counter-clockwise seen from above (+y), so gl_FrontFacing means "seen from above".
+  std::vector<uint32_t> indices;
+  auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+    const glm::vec2 ab = points[b] - points[a], ac = points[c] - points[a];
+    const bool fromAbove = ab.y * ac.x - ab.x * ac.y > 0.0f;  // y of (ab x ac) in xz
+    indices.insert(indices.end(), {a, fromAbove ? b : c, fromAbove ? c : b});
+  };
+  auto at = [segments](int ring, int s) { return uint32_t(1 + ring * segments + s % segments); };
+  for (int s = 0; s < segments; ++s) triangle(0, at(0, s), at(0, s + 1));
+  for (int ring = 0; ring + 1 < rings; ++ring) {
+    for (int s = 0; s < segments; ++s) {
+      triangle(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
+      triangle(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
+    }
+  }
+  glCreateBuffers(1, &vertices_);
+  glNamedBufferStorage(vertices_, GLsizeiptr(points.size() * sizeof(glm::vec2)), points.data(), 0);
+  glCreateBuffers(1, &indices_);
+  glNamedBufferStorage(indices_, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), 0);
+  glCreateVertexArrays(1, &vao_);
+  glVertexArrayVertexBuffer(vao_, 0, vertices_, 0, sizeof(glm::vec2));
+  glVertexArrayElementBuffer(vao_, indices_);
+  glEnableVertexArrayAttrib(vao_, 0);
+  glVertexArrayAttribFormat(vao_, 0, 2, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao_, 0, 0);
+  glkit::label(GL_VERTEX_ARRAY, vao_, "water.grid");
+  indexCount_ = GLsizei(indices.size());
+}
+
+void WaterGrid::draw() const {
+  glBindVertexArray(vao_);
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+}
+
+}  // namespace ocean

@@ -1,0 +1,33 @@
+#version 450 core
+// Underwater fog: extinction and in-scattering along the part of each view ray below the
+// (flat) water plane. Runs after the plugin added its light, so caustics are fogged too.
+#include "shared/gbuffer_codec.h"
+#include "shared/sample_frame.h"
+#include "shared/sample_optics.h"
+#include "sample/reconstruct.glsl"
+in vec2 uv;
+layout(binding = 0) uniform sampler2D depthTexture;
+layout(binding = 1) uniform sampler2D radianceTexture;
+out vec4 outRadiance;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec3 radiance = texelFetch(radianceTexture, pixel, 0).rgb;
+  float depth = texelFetch(depthTexture, pixel, 0).r;
+  vec3 sigmaT = absorption.rgb + scattering.rgb;
+  if (isSkyDepth(depth, int(projectionZ.z))) {
+    // Nothing was drawn. A ray that enters the water and meets no geometry (past the seabed's
+    // edge, or level under water) sees infinitely deep water: pure in-scattering. From above,
+    // the surface pass then blends its reflection over it; from below it covers what it hits.
+    bool entersWater = cameraHeight.x < 0.0 || viewDirection(uv).y < 0.0;
+    vec3 deep = waterInscatter(scattering.rgb, sigmaT, ambient.rgb, max(-cameraHeight.x, 0.0));
+    outRadiance = vec4(entersWater ? deep : radiance, 1.0);
+    return;
+  }
+  vec3 relative = relativePosition(uv, depth);
+  float heightA = cameraHeight.x, heightB = cameraHeight.x + relative.y;
+  float path = submergedLength(length(relative), heightA, heightB);
+  vec3 transmittance = exp(-sigmaT * path);
+  float meanDepth = -0.5 * (min(heightA, 0.0) + min(heightB, 0.0));
+  vec3 inscatter = waterInscatter(scattering.rgb, sigmaT, ambient.rgb, meanDepth);
+  outRadiance = vec4(radiance * transmittance + inscatter * (1.0 - transmittance), 1.0);
+}

@@ -1,0 +1,10 @@
+postfx_add_test(sample_render_tests GL
+  SOURCES gl/sample_render_test.cpp
+  LIBS ocean_host)
+postfx_add_test(sample_cli_tests
+  SOURCES unit/sample_cli_test.cpp
+  LIBS ocean_host)
+target_compile_definitions(sample_cli_tests PRIVATE
+  OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>"
+  OCEAN_ASSETS="${CMAKE_BINARY_DIR}/assets")
+add_dependencies(sample_cli_tests ocean_sample)

@@ -1,0 +1,134 @@
+// Bad input to `ocean_sample render`: one line naming the problem on stderr, non-zero exit, no
+// crash, no output file.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exitCode = -1;
+  bool signalled = false;
+  std::string stderrText;
+};
+
+// stderr goes to a file in `scratch`: tests run as parallel processes, each with its own.
+RunResult runSample(const std::string& arguments, const fs::path& scratch) {
+  const fs::path errFile = scratch / "stderr.txt";
+  const std::string command =
+      std::string(OCEAN_SAMPLE_EXE) + " " + arguments + " 2>" + errFile.string() + " >/dev/null";
+  const int status = std::system(command.c_str());
+  RunResult result;
+  result.signalled = WIFSIGNALED(status);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(errFile);
+  std::ostringstream text;
+  text << err.rdbuf();
+  result.stderrText = text.str();
+  fs::remove(errFile);
+  return result;
+}
+
+class SampleCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("ocean_cli_" + std::to_string(::getpid()) + "_" + test->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs a render that must fail, and checks the contract.
+  void expectRejected(const std::string& arguments, const std::string& mentions) {
+    const fs::path out = dir_ / "out.png";
+    const RunResult result = runSample("render --width 64 --height 36 --water-resolution 16 " +
+                                           arguments + " --out " + out.string(),
+                                       dir_);
+    EXPECT_FALSE(result.signalled) << arguments;
+    EXPECT_NE(result.exitCode, 0) << arguments;
+    EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1)
+        << "expected one line, got: " << result.stderrText;
+    EXPECT_NE(result.stderrText.find(mentions), std::string::npos)
+        << "message should mention '" << mentions << "': " << result.stderrText;
+    EXPECT_FALSE(fs::exists(out)) << "a failed render left an output file";
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      if (entry.path().filename().string().find("partial") != std::string::npos) {
+        ADD_FAILURE() << "partial file left: " << entry.path();
+      }
+    }
+  }
+
+  fs::path writeFile(const std::string& name, const std::string& bytes) {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(SampleCli, UnknownPreset) {
+  expectRejected("--preset lagoon", "lagoon");
+}
+TEST_F(SampleCli, ZeroSize) {
+  expectRejected("--width 0", "--width");
+}
+TEST_F(SampleCli, AbsurdSize) {
+  expectRejected("--height 99999999", "--height");
+}
+TEST_F(SampleCli, NotANumber) {
+  expectRejected("--time nan", "--time");
+}
+TEST_F(SampleCli, MissingModel) {
+  expectRejected("--model " + (dir_ / "missing.glb").string(), "missing.glb");
+}
+TEST_F(SampleCli, GarbageModel) {
+  expectRejected("--model " + writeFile("garbage.glb", std::string(300, 'x')).string(),
+                 "garbage.glb");
+}
+TEST_F(SampleCli, TruncatedModel) {
+  std::ifstream asset(std::string(OCEAN_ASSETS) + "/glass_sphere.glb", std::ios::binary);
+  std::ostringstream buffer;
+  buffer << asset.rdbuf();
+  std::string bytes = buffer.str();
+  ASSERT_GT(bytes.size(), 200u);
+  bytes.resize(bytes.size() / 2);
+  expectRejected("--model " + writeFile("truncated.glb", bytes).string(), "truncated.glb");
+}
+TEST_F(SampleCli, UnwritableOutputDirectory) {
+  const RunResult result =
+      runSample("render --width 64 --height 36 --out /nonexistent-dir/ocean.png", dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_NE(result.stderrText.find("nonexistent-dir"), std::string::npos) << result.stderrText;
+  EXPECT_FALSE(fs::exists("/nonexistent-dir/ocean.png"));
+}
+TEST_F(SampleCli, UnknownExtension) {
+  const fs::path out = dir_ / "ocean.bmpx";
+  const RunResult result = runSample("render --width 64 --height 36 --out " + out.string(), dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(SampleCli, RenderWritesAReadablePng) {
+  const fs::path out = dir_ / "ok.png";
+  const RunResult result =
+      runSample("render --width 64 --height 36 --water-resolution 16 --out " + out.string(), dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  EXPECT_TRUE(result.stderrText.empty()) << result.stderrText;
+  ASSERT_TRUE(fs::exists(out));
+  std::ifstream png(out, std::ios::binary);
+  std::array<char, 8> magic{};
+  png.read(magic.data(), 8);
+  EXPECT_EQ(std::string(magic.data() + 1, 3), "PNG");
+}
+
+}  // namespace
