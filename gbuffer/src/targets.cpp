@@ -1,21 +1,14 @@
 #include <gbuffer/targets.h>
 
 #include <glkit/program.h>
+#include <glkit/texture.h>
 
 namespace gbuffer {
 namespace {
 
+// Nearest: the G-buffer is read texel-exact; filtering depth or normals across edges is wrong.
 GLuint makeTexture(GLenum format, int width, int height, const char* name) {
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, format, width, height);
-  // Nearest: the G-buffer is read texel-exact; filtering depth or normals across edges is wrong.
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glkit::label(GL_TEXTURE, texture, name);
-  return texture;
+  return glkit::createTexture2D(format, width, height, GL_NEAREST, name);
 }
 
 }  // namespace

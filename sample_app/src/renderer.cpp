@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <gbuffer/codec.h>
+#include <glkit/texture.h>
 
 #include "shared/sample_frame.h"
 #include "shared/sample_optics.h"
@@ -15,16 +16,6 @@ const glkit::ShaderLibrary& shaderLibrary();
 
 namespace ocean {
 namespace {
-
-GLuint makeColorTarget(GLenum format, int width, int height, const char* name) {
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, format, width, height);
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glkit::label(GL_TEXTURE, texture, name);
-  return texture;
-}
 
 bool build(glkit::Program& program, const char* vertex, const char* fragment, const char* label,
            std::string& error) {
@@ -91,11 +82,13 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   glkit::label(GL_BUFFER, frameUniforms_, "sample.frame_constants");
   glCreateVertexArrays(1, &emptyVao_);
 
-  fogged_ = makeColorTarget(GL_RGBA16F, settings_.width, settings_.height, "sample.fogged");
+  fogged_ = glkit::createTexture2D(GL_RGBA16F, settings_.width, settings_.height, GL_NEAREST,
+                                   "sample.fogged");
   glCreateFramebuffers(1, &foggedFbo_);
   glNamedFramebufferTexture(foggedFbo_, GL_COLOR_ATTACHMENT0, fogged_, 0);
   glNamedFramebufferTexture(foggedFbo_, GL_DEPTH_ATTACHMENT, targets_.depth(), 0);
-  output_ = makeColorTarget(GL_RGBA8, settings_.width, settings_.height, "sample.output");
+  output_ = glkit::createTexture2D(GL_RGBA8, settings_.width, settings_.height, GL_NEAREST,
+                                   "sample.output");
   glCreateFramebuffers(1, &outputFbo_);
   glNamedFramebufferTexture(outputFbo_, GL_COLOR_ATTACHMENT0, output_, 0);
   for (GLuint fbo : {foggedFbo_, outputFbo_}) {
