@@ -49,6 +49,7 @@ Renderer::~Renderer() {
   glDeleteBuffers(1, &frameUniforms_);
   glDeleteVertexArrays(1, &emptyVao_);
   glDeleteTextures(1, &fogged_);
+  glDeleteTextures(1, &sceneBelow_);
   glDeleteTextures(1, &output_);
   glDeleteFramebuffers(1, &foggedFbo_);
   glDeleteFramebuffers(1, &outputFbo_);
@@ -84,6 +85,8 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
 
   fogged_ = glkit::createTexture2D(GL_RGBA16F, settings_.width, settings_.height, GL_NEAREST,
                                    "sample.fogged");
+  sceneBelow_ = glkit::createTexture2D(GL_RGBA16F, settings_.width, settings_.height, GL_LINEAR,
+                                       "sample.scene_below_water");
   glCreateFramebuffers(1, &foggedFbo_);
   glNamedFramebufferTexture(foggedFbo_, GL_COLOR_ATTACHMENT0, fogged_, 0);
   glNamedFramebufferTexture(foggedFbo_, GL_DEPTH_ATTACHMENT, targets_.depth(), 0);
@@ -225,9 +228,14 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  // The surface refracts the frame as it is now; it cannot read the target it draws into.
+  glCopyImageSubData(fogged_, GL_TEXTURE_2D, 0, 0, 0, 0, sceneBelow_, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     width, height, 1);
   glUseProgram(water_.id());
   const GLuint waterInputs[] = {ocean_->displacementTexture(), ocean_->slopeTexture()};
   glBindTextures(4, 2, waterInputs);
+  const GLuint refractionInputs[] = {targets_.depth(), sceneBelow_};
+  glBindTextures(0, 2, refractionInputs);
   waterGrid_.draw();
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);

@@ -84,6 +84,7 @@ class Renderer {
   glkit::Program geometry_, shadow_, lighting_, composite_, water_, tonemap_;
   GLuint frameUniforms_ = 0, emptyVao_ = 0;
   GLuint fogged_ = 0, foggedFbo_ = 0;  // RGBA16F: the frame after fog, plus the water surface
+  GLuint sceneBelow_ = 0;              // RGBA16F copy of the fogged frame the surface refracts
   GLuint output_ = 0, outputFbo_ = 0;  // RGBA8 tone-mapped image
   glm::dmat4 shadowWorldToClip_{1.0};
   PluginPass plugin_;

@@ -23,7 +23,7 @@ void main() {
     outRadiance = vec4(entersWater ? deep : radiance, 1.0);
     return;
   }
-  vec3 relative = relativePosition(uv, depth);
+  vec3 relative = reconstructRelative(uv, depth);
   float heightA = cameraHeight.x, heightB = cameraHeight.x + relative.y;
   float path = submergedLength(length(relative), heightA, heightB);
   vec3 transmittance = exp(-sigmaT * path);

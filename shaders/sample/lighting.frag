@@ -36,7 +36,7 @@ void main() {
                                         : vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
-  vec3 relative = relativePosition(uv, depth);
+  vec3 relative = reconstructRelative(uv, depth);
   vec3 normal = decodeNormal(texelFetch(normalTexture, pixel, 0), NORMAL_OCTAHEDRAL);
   vec3 albedo = texelFetch(albedoTexture, pixel, 0).rgb;
   float height = cameraHeight.x + relative.y;  // metres above the water plane
