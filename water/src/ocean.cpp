@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include <glkit/current_context.h>
 #include <glkit/program.h>
 #include <water/initial_spectrum.h>
 
@@ -82,6 +83,10 @@ std::vector<unsigned char> packSpectrum(const InitialSpectrum& spectrum) {
 Result Ocean::create(const OceanDesc& desc, std::unique_ptr<Ocean>& out, std::string& error) {
   out.reset();
   if (Result result = validateOceanDesc(desc, error); result != Result::Ok) return result;
+  if (!glkit::hasCurrentContext()) {
+    error = "Ocean::create: no current GL context on this thread";
+    return Result::NoContext;
+  }
   const size_t modes = static_cast<size_t>(desc.resolution) * desc.resolution * desc.cascadeCount;
   if (Result result = checkLimits(desc, modes * 20, error); result != Result::Ok) return result;
   std::unique_ptr<Ocean> ocean(new Ocean(desc));
@@ -151,6 +156,10 @@ Result Ocean::update(double timeSeconds, std::string& error) {
   if (!std::isfinite(timeSeconds)) {
     error = "update: time must be finite";
     return Result::InvalidArgument;
+  }
+  if (!glkit::hasCurrentContext()) {
+    error = "update: no current GL context on this thread";
+    return Result::NoContext;
   }
   const uint32_t phase = loopPhase(timeSeconds, desc_.loopPeriod);
   const int n = desc_.resolution;

@@ -10,6 +10,7 @@ enum class Result {
   Unsupported,          // the GL implementation's limits cannot hold the requested resolution
   ShaderCompileFailed,  // an embedded shader failed to compile or link (message has the log)
   GlError,              // the driver reported an error while allocating (e.g. out of memory)
+  NoContext,            // no GL context is current on the calling thread
 };
 
 inline const char* toString(Result result) {
@@ -24,6 +25,8 @@ inline const char* toString(Result result) {
       return "ShaderCompileFailed";
     case Result::GlError:
       return "GlError";
+    case Result::NoContext:
+      return "NoContext";
   }
   return "Unknown";
 }
