@@ -4,14 +4,15 @@
 set(_postfx_private ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
 
 postfx_add_test(postfx_unit_tests
-  SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp
+  SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp unit/postfx_godrays_math_test.cpp
+          unit/postfx_no_context_test.cpp
   LIBS postfx gbuffer glm::glm PkgConfig::EPOXY)
 target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
 
 postfx_add_test(postfx_gl_tests
   SOURCES gl/postfx_scene.cpp gl/postfx_state_test.cpp gl/postfx_bad_input_test.cpp
           gl/postfx_caustics_test.cpp gl/postfx_stability_test.cpp gl/postfx_timing_test.cpp
-          gl/postfx_bench_test.cpp
+          gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp
   LIBS postfx gbuffer glm::glm PkgConfig::EPOXY
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})

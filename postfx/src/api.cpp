@@ -2,12 +2,15 @@
 // no exception ever crossing the API boundary.
 #include <postfx/postfx.h>
 
+#include <glkit/current_context.h>
+
 #include <memory>
 #include <new>
 
 #include "context.h"
 #include "frame_constants.h"
 #include "gl_state_guard.h"
+#include "godrays_constants.h"
 #include "validation.h"
 #include "visibility.h"
 
@@ -27,13 +30,23 @@ class DebugGroup {
   DebugGroup& operator=(const DebugGroup&) = delete;
 };
 
-bool passHasWork(const Context& context, const FrameDesc& frame) {
-  if (!hasFeature(context.desc.features, Feature::Caustics)) return false;
-  if (!frame.caustics.enabled) return false;
+// Sun above the horizon and some of the view frustum under the water: the common condition of
+// both lighting passes.
+bool underwaterLit(const Context& context, const FrameDesc& frame) {
   if (!(frame.sun.direction.y > 0.0)) return false;  // at or below the horizon
   return detail::frustumReachesBelowWater(detail::viewToWorldRotation(frame.camera.view),
                                           frame.camera.projection, context.desc.depthConvention,
                                           frame.water.level - frame.camera.position.y);
+}
+
+bool causticsHaveWork(const Context& context, const FrameDesc& frame) {
+  return hasFeature(context.desc.features, Feature::Caustics) && frame.caustics.enabled &&
+         underwaterLit(context, frame);
+}
+
+bool godRaysHaveWork(const Context& context, const FrameDesc& frame) {
+  return hasFeature(context.desc.features, Feature::GodRays) && frame.godRays.enabled &&
+         frame.godRays.intensity > 0.0f && underwaterLit(context, frame);
 }
 
 Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
@@ -44,7 +57,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   r = detail::validateFrameTextures(context.desc, frame, textures, error);
   if (r != Result::Ok) return r;
 
-  const bool work = passHasWork(context, frame);
+  const bool caustics = causticsHaveWork(context, frame);
+  const bool godRays = godRaysHaveWork(context, frame);
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
   const shared::CausticsBlock block = detail::buildCausticsBlock(
       context.desc, frame, textures.width, textures.height, textures.water);
@@ -52,17 +66,32 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   detail::GlStateGuard guard;
   DebugGroup group("postfx");
   context.timers.beginFrame();
-  if (!work) {
+  if (!caustics) {
     context.timers.markSkipped(Context::kCausticsPass);
-    if (floor) context.timers.markSkipped(Context::kFloorPass);
     context.caustics.clearRaw(textures.width, textures.height);
+  }
+  if (!godRays && context.godRaysPass >= 0) context.timers.markSkipped(context.godRaysPass);
+  if (!caustics && !godRays) {
+    if (floor) context.timers.markSkipped(Context::kFloorPass);
     context.timers.endFrame();
     return Result::Ok;
   }
+  // The god rays draw under the caustics pass's state (its units, samplers and block).
   r = context.caustics.prepare(frame, textures, block, error);
   if (r != Result::Ok) {
     context.timers.endFrame();
     return r;
+  }
+  if (godRays) {
+    const shared::GodRaysBlock godBlock =
+        detail::buildGodRaysBlock(frame, detail::GodRaysPass::halfSize(textures.width),
+                                  detail::GodRaysPass::halfSize(textures.height));
+    r = context.godRays.prepare(frame, textures.width, textures.height, godBlock, error);
+    if (r != Result::Ok) {
+      context.caustics.finish();
+      context.timers.endFrame();
+      return r;
+    }
   }
   context.caustics.bindState(frame, textures);
   // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass. Tile-based
@@ -76,12 +105,20 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     context.caustics.drawFloor();
     context.timers.end(Context::kFloorPass);
   }
-  {
+  if (caustics) {
     DebugGroup causticsGroup("postfx.caustics");
     if (floor) glFinish();
     context.timers.begin(Context::kCausticsPass);
     context.caustics.drawCaustics();
     context.timers.end(Context::kCausticsPass);
+  }
+  if (godRays) {
+    DebugGroup godRaysGroup("postfx.god_rays");
+    if (floor) glFinish();
+    context.timers.begin(context.godRaysPass);
+    context.godRays.draw(frame, textures.width, textures.height);
+    context.timers.end(context.godRaysPass);
+    context.godRays.finish();
   }
   context.caustics.finish();
   context.timers.endFrame();
@@ -110,6 +147,8 @@ const char* toString(Result result) noexcept {
       return "GlError";
     case Result::OutOfMemory:
       return "OutOfMemory";
+    case Result::NoContext:
+      return "NoContext";
   }
   return "Unknown";
 }
@@ -120,12 +159,25 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     createError.clear();
     Result r = detail::validateCreateDesc(desc, createError);
     if (r != Result::Ok) return r;
+    // Any GL call through epoxy without a context aborts the process: refuse instead.
+    if (!glkit::hasCurrentContext()) {
+      createError = "create: no current GL context on this thread";
+      return Result::NoContext;
+    }
     auto context = std::make_unique<Context>();
     context->desc = desc;
     r = context->caustics.init(desc, createError);
     if (r != Result::Ok) return r;
-    const char* names[] = {"caustics", "floor"};
-    context->timers.init(hasFeature(desc.features, Feature::BenchmarkFloor) ? 2 : 1, names);
+    const bool floor = hasFeature(desc.features, Feature::BenchmarkFloor);
+    int passCount = floor ? 2 : 1;
+    const char* names[kMaxPasses] = {"caustics", "floor", "", ""};
+    if (hasFeature(desc.features, Feature::GodRays)) {
+      r = context->godRays.init(detail::shaderDefines(desc), createError);
+      if (r != Result::Ok) return r;
+      context->godRaysPass = passCount;
+      names[passCount++] = "god_rays";
+    }
+    context->timers.init(passCount, names);
     out = context.release();
     return Result::Ok;
   } catch (const std::bad_alloc&) {
@@ -140,6 +192,10 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
 Result dispatch(Context& context, const FrameDesc& desc) noexcept {
   try {
     context.error.clear();
+    if (!glkit::hasCurrentContext()) {
+      context.error = "dispatch: no current GL context on this thread";
+      return Result::NoContext;
+    }
     return dispatchUnchecked(context, desc);
   } catch (const std::bad_alloc&) {
     context.error = "out of memory";
@@ -151,7 +207,9 @@ Result dispatch(Context& context, const FrameDesc& desc) noexcept {
 }
 
 void destroy(Context* context) noexcept {
-  delete context;
+  // Without a current context the GL objects cannot be deleted and trying would abort inside
+  // epoxy; they are leaked instead (they die with the GL context that owns them).
+  if (context != nullptr && glkit::hasCurrentContext()) delete context;
 }
 
 const char* lastError(const Context* context) noexcept {

@@ -5,7 +5,6 @@
 #include "shader_library.h"
 
 namespace postfx::detail {
-namespace {
 
 std::string shaderDefines(const CreateDesc& desc) {
   auto flag = [&desc](Feature f) { return hasFeature(desc.features, f) ? "1" : "0"; };
@@ -19,6 +18,8 @@ std::string shaderDefines(const CreateDesc& desc) {
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
   return d;
 }
+
+namespace {
 
 GLuint makeSampler(GLenum minFilter, GLenum magFilter, GLenum wrap, const char* name) {
   GLuint sampler = 0;

@@ -17,6 +17,9 @@
 
 namespace postfx::detail {
 
+// The #defines of the context's features and conventions, for every postfx program.
+std::string shaderDefines(const CreateDesc& desc);
+
 class CausticsPass {
  public:
   enum Unit : GLuint { kDepthUnit = 0, kNormalUnit, kAlbedoUnit, kWaterUnit, kShadowUnit };

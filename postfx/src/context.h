@@ -6,6 +6,7 @@
 #include <postfx/postfx.h>
 
 #include "caustics_pass.h"
+#include "godrays_pass.h"
 #include "gpu_timers.h"
 
 namespace postfx {
@@ -15,6 +16,8 @@ struct Context {
 
   CreateDesc desc;
   detail::CausticsPass caustics;
+  detail::GodRaysPass godRays;
+  int godRaysPass = -1;  // timer index of "god_rays" (after the floor when there is one); -1: off
   detail::GpuTimers timers;
   std::string error;
 };

@@ -4,6 +4,9 @@
 
 #include "shared_math.h"
 
+static_assert(POSTFX_CAUSTICS_BLOCK_BINDING < 2 && POSTFX_GODRAYS_BLOCK_BINDING < 2,
+              "GlStateGuard saves uniform-buffer bindings 0 and 1 only");
+
 namespace postfx::detail {
 
 GlStateGuard::GlStateGuard() {
@@ -42,9 +45,11 @@ GlStateGuard::GlStateGuard() {
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));
   glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniformBuffer_);
-  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, POSTFX_CAUSTICS_BLOCK_BINDING, &uniformIndexed_);
-  glGetInteger64i_v(GL_UNIFORM_BUFFER_START, POSTFX_CAUSTICS_BLOCK_BINDING, &uniformStart_);
-  glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, POSTFX_CAUSTICS_BLOCK_BINDING, &uniformSize_);
+  for (GLuint i = 0; i < GLuint(kUniformBindings); ++i) {
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, i, &uniformIndexed_[i]);
+    glGetInteger64i_v(GL_UNIFORM_BUFFER_START, i, &uniformStart_[i]);
+    glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, i, &uniformSize_[i]);
+  }
   glGetIntegerv(GL_QUERY_BUFFER_BINDING, &queryBuffer_);
 }
 
@@ -95,12 +100,14 @@ GlStateGuard::~GlStateGuard() {
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));
   // glBindBufferBase/Range also set the generic binding, so the indexed one goes first.
-  const GLuint indexed = static_cast<GLuint>(uniformIndexed_);
-  if (indexed == 0 || uniformSize_ == 0) {
-    glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, indexed);
-  } else {
-    glBindBufferRange(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, indexed,
-                      static_cast<GLintptr>(uniformStart_), static_cast<GLsizeiptr>(uniformSize_));
+  for (GLuint i = 0; i < GLuint(kUniformBindings); ++i) {
+    const GLuint indexed = static_cast<GLuint>(uniformIndexed_[i]);
+    if (indexed == 0 || uniformSize_[i] == 0) {
+      glBindBufferBase(GL_UNIFORM_BUFFER, i, indexed);
+    } else {
+      glBindBufferRange(GL_UNIFORM_BUFFER, i, indexed, static_cast<GLintptr>(uniformStart_[i]),
+                        static_cast<GLsizeiptr>(uniformSize_[i]));
+    }
   }
   glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniformBuffer_));
   glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(queryBuffer_));

@@ -1,7 +1,7 @@
 #pragma once
 // Saves, on construction, every piece of GL state the plugin's passes may change, and restores
 // it on destruction: the host's frame must not notice that dispatch() ran. The list is the
-// union of what CausticsPass::draw and GpuTimers touch; extend both together.
+// union of what CausticsPass, GodRaysPass and GpuTimers touch; extend both together.
 #include <epoxy/gl.h>
 
 #include <array>
@@ -11,7 +11,7 @@ namespace postfx::detail {
 class GlStateGuard {
  public:
   // Texture units whose 2D / 2D-array bindings and sampler the passes rebind: [0, unitCount).
-  static constexpr int kUnitCount = 5;
+  static constexpr int kUnitCount = 6;
   // Draw buffers whose blend / colour-mask state the passes set: [0, kDrawBufferCount).
   static constexpr int kDrawBufferCount = 2;
   static constexpr int kMaxClipDistances = 8;
@@ -41,8 +41,11 @@ class GlStateGuard {
   std::array<GLboolean, kMaxClipDistances> clipDistance_{};
   GLint program_ = 0, vertexArray_ = 0, activeTexture_ = GL_TEXTURE0;
   std::array<UnitState, kUnitCount> units_{};
-  GLint uniformBuffer_ = 0, uniformIndexed_ = 0;
-  GLint64 uniformStart_ = 0, uniformSize_ = 0;
+  // Indexed uniform-buffer bindings the passes use: the caustics block and the god-ray block.
+  static constexpr int kUniformBindings = 2;
+  GLint uniformBuffer_ = 0;
+  std::array<GLint, kUniformBindings> uniformIndexed_{};
+  std::array<GLint64, kUniformBindings> uniformStart_{}, uniformSize_{};
   GLint queryBuffer_ = 0;
 };
 

@@ -7,4 +7,6 @@
 namespace postfx {
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_caustics_block.h"
+#include "shared/postfx_godrays.h"
+#include "shared/postfx_godrays_block.h"
 }  // namespace postfx

@@ -141,11 +141,27 @@ bool isMipComplete(GLuint texture, int width, int height) {
 
 }  // namespace
 
+Result validateGodRays(const GodRaySettings& g, std::string& error) {
+  auto fail = [&error](std::string message) {
+    error = std::move(message);
+    return Result::InvalidArgument;
+  };
+  if (g.sampleCount < 4 || g.sampleCount > 64)
+    return fail("godRays.sampleCount must be in [4, 64], got " + std::to_string(g.sampleCount));
+  if (!inRange(g.gridSpacing, 0.01f, 1e3))
+    return fail("godRays.gridSpacing must be in [0.01, 1e3] m");
+  if (!inRange(g.intensity, 0.0, 1e4)) return fail("godRays.intensity must be in [0, 1e4]");
+  if (!inRange(g.surfaceFadeDistance, 0.0, 1e4))
+    return fail("godRays.surfaceFadeDistance must be in [0, 1e4] m");
+  if (!inRange(g.depthFadeDistance, 0.0, 1e5))
+    return fail("godRays.depthFadeDistance must be in [0, 1e5] m");
+  if (!inRange(g.maxDistance, 0.1, 1e5)) return fail("godRays.maxDistance must be in [0.1, 1e5] m");
+  if (g.sampling != GodRaySampling::WorldGrid && g.sampling != GodRaySampling::UniformAlongRay)
+    return fail("godRays.sampling is not a GodRaySampling");
+  return Result::Ok;
+}
+
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (hasFeature(desc.features, Feature::GodRays)) {
-    error = "CreateDesc.features: GodRays is reserved for a later version";
-    return Result::NotImplemented;
-  }
   if (hasFeature(desc.features, Feature::ObjectCaustics)) {
     error = "CreateDesc.features: ObjectCaustics is reserved for a later version";
     return Result::NotImplemented;
@@ -212,6 +228,8 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (hasFeature(create.features, Feature::Dispersion) && !inRange(water.iorRgb, 1.0, 3.0))
     return fail("water.iorRgb must be in [1, 3]");
   if (!inRange(water.absorption, 0.0, 1e3)) return fail("water.absorption must be in [0, 1e3]");
+  if (hasFeature(create.features, Feature::GodRays) && !inRange(water.scattering, 0.0, 1e3))
+    return fail("water.scattering must be in [0, 1e3]");
 
   if (hasFeature(create.features, Feature::ShadowMask)) {
     const SunShadowMap& shadow = frame.shadow;
@@ -231,6 +249,7 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!inRange(s.triplanarSharpness, 1.0, 32.0))
     return fail("caustics.triplanarSharpness must be in [1, 32]");
   if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
+  if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }
 

@@ -13,6 +13,9 @@ namespace postfx::detail {
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error);
 
+// Range checks of the god-ray settings (part of validateFrameValues with Feature::GodRays).
+Result validateGodRays(const GodRaySettings& settings, std::string& error);
+
 // CPU-only checks of the frame: finite camera, sane projection, settings in range.
 Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std::string& error);
 

@@ -1,10 +1,15 @@
 // ocean_sample bench: per-pass GPU time of the plugin on the default scene, and each pass's
 // ratio to the floor pass measured in the same run (the only number comparable across
 // machines without a GPU). Also the water spectrum update's cost per resolution.
+// God rays: after the default run, one short run per sample count (4..64) at full and at half
+// resolution, each with a fresh plugin context (fresh timers) and its own floor measured in the
+// same run, reported as rows god_rays_<n> and god_rays_half_<n>.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <glcontext/context.h>
 
@@ -34,6 +39,35 @@ std::string jsonEscape(const std::string& text) {
   return out;
 }
 
+// Renders warm-up + `frames` frames with time running, then a few more so that the measured
+// frames' queries resolve (the plugin's ring never stalls).
+bool renderFrames(Renderer& renderer, FrameInput input, double startSeconds, int frames,
+                  std::string& error) {
+  const int total = kWarmupFrames + frames;
+  for (int frame = 0; frame < total; ++frame) {
+    input.timeSeconds = startSeconds + frame / 60.0;
+    if (!renderer.render(input, error)) return false;
+  }
+  glFinish();
+  for (int frame = 0; frame < postfx::kTimerRingDepth; ++frame) {
+    if (!renderer.render(input, error)) return false;
+  }
+  return true;
+}
+
+double passMs(const postfx::FrameStats& stats, const std::string& name) {
+  for (int i = 0; i < stats.passCount; ++i) {
+    if (name == stats.passes[i].name) return stats.passes[i].medianMs;
+  }
+  return 0.0;
+}
+
+struct Row {
+  std::string name;
+  double medianMs, floorMs;
+  bool skipped;
+};
+
 }  // namespace
 
 int runBench(const Options& options) {
@@ -57,24 +91,43 @@ int runBench(const Options& options) {
 
   // The camera holds still while time runs, as in a game; each frame is a full render.
   FrameInput input{preset.camera, preset.sun, options.timeSeconds};
-  const int total = kWarmupFrames + options.frames;
-  for (int frame = 0; frame < total; ++frame) {
-    input.timeSeconds = options.timeSeconds + frame / 60.0;
-    if (!renderer->render(input, error)) return fail(error);
-    if (frame % 10 == 0) std::fprintf(stderr, "\rbench: frame %d/%d", frame + 1, total);
+  std::fprintf(stderr, "bench: default settings, %d frames\n", options.frames);
+  if (!renderFrames(*renderer, input, options.timeSeconds, options.frames, error)) {
+    return fail(error);
   }
-  glFinish();
-  // A few more dispatches so the last measured frames' queries resolve (the ring never stalls).
-  for (int frame = 0; frame < postfx::kTimerRingDepth; ++frame) {
-    if (!renderer->render(input, error)) return fail(error);
+  std::vector<Row> rows;
+  {
+    const postfx::FrameStats& stats = plugin->stats();
+    const double floorMs = passMs(stats, "floor");
+    for (int i = 0; i < stats.passCount; ++i) {
+      rows.push_back(
+          {stats.passes[i].name, stats.passes[i].medianMs, floorMs, stats.passes[i].skipped});
+    }
   }
-  std::fprintf(stderr, "\rbench: %d frames measured        \n", options.frames);
+  // God-ray variants: same scene and frames, one fresh context each (a context's timers keep a
+  // median window, so reusing one would mix settings).
+  if (options.godRays) {
+    const int variantFrames = std::max(1, std::min(options.frames, 20));
+    for (bool half : {false, true}) {
+      for (int samples : {4, 8, 16, 32, 64}) {
+        const std::string name =
+            std::string(half ? "god_rays_half_" : "god_rays_") + std::to_string(samples);
+        std::fprintf(stderr, "bench: %s, %d frames\n", name.c_str(), variantFrames);
+        auto variant = PluginSetup::create(*renderer, options, /*benchmarkFloor=*/true, error);
+        if (!variant) return fail(error);
+        variant->godRays().sampleCount = samples;
+        variant->godRays().halfResolution = half;
+        if (!renderFrames(*renderer, input, options.timeSeconds, variantFrames, error)) {
+          return fail(error);
+        }
+        const postfx::FrameStats& stats = variant->stats();
+        rows.push_back({name, passMs(stats, "god_rays"), passMs(stats, "floor"),
+                        passMs(stats, "god_rays") == 0.0});
+        plugin = std::move(variant);  // the last created context is the renderer's pass
+      }
+    }
+  }
 
-  const postfx::FrameStats& stats = plugin->stats();
-  double floorMs = 0.0;
-  for (int i = 0; i < stats.passCount; ++i) {
-    if (std::string(stats.passes[i].name) == "floor") floorMs = stats.passes[i].medianMs;
-  }
   std::ostringstream json;
   json << "{\"device\": \"" << jsonEscape(context->renderer()) << "\", \"width\": " << options.width
        << ", \"height\": " << options.height << ", \"preset\": \"" << options.preset
@@ -82,14 +135,14 @@ int runBench(const Options& options) {
   std::printf("device: %s\n%dx%d, preset %s, %d frames (median after %d warm-up)\n\n",
               context->renderer().c_str(), options.width, options.height, options.preset.c_str(),
               options.frames, kWarmupFrames);
-  std::printf("%-16s %12s %12s\n", "pass", "median ms", "floor ratio");
-  for (int i = 0; i < stats.passCount; ++i) {
-    const postfx::PassStats& pass = stats.passes[i];
-    const double ratio = floorMs > 0.0 ? pass.medianMs / floorMs : 0.0;
-    std::printf("%-16s %12.3f %12.2f%s\n", pass.name, pass.medianMs, ratio,
-                pass.skipped ? "  (skipped)" : "");
-    json << (i ? ", " : "") << "{\"name\": \"" << pass.name
-         << "\", \"median_ms\": " << pass.medianMs << ", \"floor_ratio\": " << ratio << "}";
+  std::printf("%-20s %12s %12s\n", "pass", "median ms", "floor ratio");
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Row& row = rows[i];
+    const double ratio = row.floorMs > 0.0 ? row.medianMs / row.floorMs : 0.0;
+    std::printf("%-20s %12.3f %12.2f%s\n", row.name.c_str(), row.medianMs, ratio,
+                row.skipped ? "  (skipped)" : "");
+    json << (i ? ", " : "") << "{\"name\": \"" << row.name << "\", \"median_ms\": " << row.medianMs
+         << ", \"floor_ratio\": " << ratio << "}";
   }
   json << "]}\n";
 

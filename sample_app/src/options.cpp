@@ -27,11 +27,11 @@ std::string usage() {
 
 usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
-                      [--out FILE] [--no-caustics] [--tau T] [--water-resolution N]
+                      [--out FILE] [--no-caustics] [--no-god-rays] [--tau T] [--water-resolution N]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
       or .exr (linear radiance). Default output: ocean.png.
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
-      Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, T pauses time,
+      Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, G god rays, T pauses time,
       1-4 switch presets, Esc quits.
   ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE]
       Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a
@@ -71,6 +71,10 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     }
     if (flag == "--no-caustics") {
       options.caustics = false;
+      continue;
+    }
+    if (flag == "--no-god-rays") {
+      options.godRays = false;
       continue;
     }
     if (i + 1 >= argc) {

@@ -18,6 +18,7 @@ struct Options {
   int frames = 60;       // bench: measured frames after warm-up
   std::string json;      // bench: JSON output path
   bool caustics = true;  // the plugin's seabed caustics
+  bool godRays = true;   // the plugin's underwater god rays
   double tau = -1.0;     // caustics tightening; < 0 keeps the plugin's default
   int waterResolution = 256;
 };

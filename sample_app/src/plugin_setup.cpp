@@ -8,8 +8,8 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
                                                  bool benchmarkFloor, std::string& error) {
   std::unique_ptr<PluginSetup> setup(new PluginSetup());
   postfx::CreateDesc desc;
-  desc.features =
-      postfx::Feature::Caustics | postfx::Feature::ShadowMask | postfx::Feature::Dispersion;
+  desc.features = postfx::Feature::Caustics | postfx::Feature::ShadowMask |
+                  postfx::Feature::Dispersion | postfx::Feature::GodRays;
   if (benchmarkFloor) desc.features = desc.features | postfx::Feature::BenchmarkFloor;
   desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
   desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
@@ -18,6 +18,10 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     return nullptr;
   }
   setup->caustics_.enabled = options.caustics;
+  setup->godRays_.enabled = options.godRays;
+  // The sample lights its water column with its own ambient in-scattering too; half the
+  // plugin's default keeps the shafts from washing out Snell's window.
+  setup->godRays_.intensity = 0.7f;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
   PluginSetup* self = setup.get();
   renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
@@ -53,10 +57,14 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
       glm::vec3(desc.water.ior - 0.5f * spread, desc.water.ior, desc.water.ior + 0.5f * spread);
   desc.water.absorption =
       glm::vec3(frame.optics.absorption.r, frame.optics.absorption.g, frame.optics.absorption.b);
+  // The same scattering the sample's fog uses: the god rays' extinction matches it.
+  desc.water.scattering =
+      glm::vec3(frame.optics.scattering.r, frame.optics.scattering.g, frame.optics.scattering.b);
   desc.shadow.depth = {frame.shadowMap, GL_DEPTH_COMPONENT32F};
   desc.shadow.worldToLightClip = frame.shadowWorldToClip;
   desc.shadow.depthConvention = static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
   desc.caustics = caustics_;
+  desc.godRays = godRays_;
   if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(context_);
     return false;

@@ -23,6 +23,7 @@ class PluginSetup {
   PluginSetup& operator=(const PluginSetup&) = delete;
 
   postfx::CausticsSettings& caustics() { return caustics_; }
+  postfx::GodRaySettings& godRays() { return godRays_; }
   const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
   std::string timingSummary() const;  // "caustics 0.41 ms (median)" ...
 
@@ -32,6 +33,7 @@ class PluginSetup {
 
   postfx::Context* context_ = nullptr;
   postfx::CausticsSettings caustics_;
+  postfx::GodRaySettings godRays_;
 };
 
 }  // namespace ocean

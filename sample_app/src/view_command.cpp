@@ -21,6 +21,7 @@ struct ViewState {
   FrameInput input;
   bool paused = false;
   bool causticsEnabled = true;
+  bool godRaysEnabled = true;
   bool dragging = false;
   double lastX = 0.0, lastY = 0.0;
   bool presetRequested = false;
@@ -34,6 +35,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
   if (key == GLFW_KEY_T) state->paused = !state->paused;
   if (key == GLFW_KEY_C) state->causticsEnabled = !state->causticsEnabled;
+  if (key == GLFW_KEY_G) state->godRaysEnabled = !state->godRaysEnabled;
   if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) {
     state->presetName = kPresets[key - GLFW_KEY_1];
     state->presetRequested = true;
@@ -111,6 +113,7 @@ int runView(const Options& options) {
     } else {
       state.input = {state.preset.camera, state.preset.sun, options.timeSeconds};
       state.causticsEnabled = options.caustics;
+      state.godRaysEnabled = options.godRays;
       glfwSetWindowUserPointer(window, &state);
       glfwSetKeyCallback(window, onKey);
       double last = glfwGetTime(), titleTime = last;
@@ -126,6 +129,7 @@ int runView(const Options& options) {
         moveCamera(window, state, now - last);
         if (!state.paused) state.input.timeSeconds += now - last;
         plugin->caustics().enabled = state.causticsEnabled;
+        plugin->godRays().enabled = state.godRaysEnabled;
         last = now;
         if (!renderer->render(state.input, error)) {
           std::fprintf(stderr, "ocean_sample: %s\n", error.c_str());

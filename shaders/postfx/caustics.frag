@@ -5,26 +5,10 @@
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
+#include "postfx/water_sampling.glsl"
 
 // Tri-planar weights below this skip their projection's fetches entirely.
 const float kMinPlaneWeight = 0.02;
-
-// Sum of the cascades' slopes for one projection, each cascade at its own mip level so that
-// small tiles blur away with distance and stop showing their repetition.
-vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint) {
-  vec2 slopes = vec2(0.0);
-  int cascades = int(u.oblique.w);
-  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
-    if (c >= cascades) break;
-    vec4 axes = u.cascadeAxes[c];
-    // The camera's share of the coordinate was reduced modulo the tile in double on the CPU.
-    vec2 offset = plane == 1 ? u.cascadeOblique[c].xy : (plane == 0 ? axes.zy : axes.xy);
-    vec2 uv = offset + coordMetres * axes.w;
-    float lod = logFootprint + u.cascadeOblique[c].z;
-    slopes += textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
-  }
-  return slopes;
-}
 
 // Tri-planar lookup: the plane facing up projects the receiver ALONG THE REFRACTED LIGHT onto
 // the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
@@ -41,17 +25,6 @@ vec2 waterSlopes(vec3 p, vec3 n, float logFootprint) {
   if (w.z > kMinPlaneWeight) slopes += w.z * cascadeSlopes(p.xy, 2, logFootprint);
   return slopes;
 }
-
-#if POSTFX_SHADOW_MASK
-float sunVisibility(vec3 p) {
-  vec4 clip = u.shadowMatrix * vec4(p, 1.0);
-  if (!(clip.w > 0.0)) return 1.0;
-  vec3 ndc = clip.xyz / clip.w;
-  if (!(abs(ndc.x) <= 1.0 && abs(ndc.y) <= 1.0)) return 1.0;  // outside the map: lit
-  float ref = (u.shadowParams.y > 0.5 ? ndc.z * 0.5 + 0.5 : ndc.z) + u.shadowParams.x;
-  return texture(sunShadowMap, vec3(ndc.xy * 0.5 + 0.5, clamp(ref, 0.0, 1.0)));
-}
-#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);

@@ -137,10 +137,10 @@ TEST_F(PostfxBadInputTest, EachCaseFailsCleanly) {
 TEST_F(PostfxBadInputTest, CreateRejectsReservedAndInvalid) {
   postfx::Context* fx = reinterpret_cast<postfx::Context*>(0x1);
   postfx::CreateDesc desc;
-  desc.features = postfx::Feature::Caustics | postfx::Feature::GodRays;
+  desc.features = postfx::Feature::Caustics | postfx::Feature::ObjectCaustics;
   EXPECT_EQ(postfx::create(desc, fx), Result::NotImplemented);
   EXPECT_EQ(fx, nullptr);
-  EXPECT_NE(std::string(postfx::lastError(nullptr)).find("GodRays"), std::string::npos);
+  EXPECT_NE(std::string(postfx::lastError(nullptr)).find("ObjectCaustics"), std::string::npos);
   desc.features = postfx::Feature::Caustics;
   desc.depthConvention = 7;
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);

@@ -69,6 +69,10 @@ struct WaterSurface {
   // attenuated by exp(-absorption * d / cos(theta_t)) for a receiver d metres below the level,
   // theta_t the refracted sun's angle from the vertical. Default: clear sea water.
   glm::vec3 absorption{0.35f, 0.06f, 0.02f};
+  // Scattering coefficients per metre, linear RGB, [0, 1e3]: with absorption they give the
+  // extinction sigma_t = absorption + scattering that the god rays attenuate with, matching an
+  // underwater fog the host computes from the same two values. Only the god rays read it.
+  glm::vec3 scattering{0.02f, 0.03f, 0.04f};
 };
 
 struct SunShadowMap {
@@ -92,14 +96,15 @@ struct FrameDesc {
                       // (depth-stencil textures in GL_DEPTH_STENCIL_TEXTURE_MODE = DEPTH)
   TextureRef normal;  // world-space normal in CreateDesc::normalEncoding
   TextureRef albedo;  // GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGB10_A2 (linear rgb read)
-  // Host HDR light buffer the caustic light is ADDED to (blend ONE, ONE; alpha untouched):
-  // GL_RGBA16F, GL_RGBA32F or GL_R11F_G11F_B10F, mip level 0.
+  // Host HDR light buffer the caustic light and god rays are ADDED to (blend ONE, ONE; alpha
+  // untouched): GL_RGBA16F, GL_RGBA32F or GL_R11F_G11F_B10F, mip level 0.
   TextureRef target;
   Camera camera;
   Sun sun;
   WaterSurface water;
   SunShadowMap shadow;
   CausticsSettings caustics;
+  GodRaySettings godRays;  // read only with Feature::GodRays
 };
 
 }  // namespace postfx

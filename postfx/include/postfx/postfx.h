@@ -25,7 +25,7 @@ namespace postfx {
 enum class Feature : std::uint32_t {
   None = 0,
   Caustics = 1u << 0,          // seabed caustics (seed 002, section 4)
-  GodRays = 1u << 1,           // reserved: create() returns NotImplemented
+  GodRays = 1u << 1,           // underwater light shafts (seed 002, section 4, eq. 2)
   ObjectCaustics = 1u << 2,    // reserved: create() returns NotImplemented
   Dispersion = 1u << 3,        // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
   ShadowMask = 1u << 4,        // mask caustics by the host's sun shadow map (FrameDesc::shadow)
@@ -63,13 +63,16 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // Adds this frame's caustic light into desc.target. Every input is validated before any GL
 // state is touched: on error nothing is drawn and GL state is exactly as it was. A pass with
 // nothing to do (caustics disabled, sun at/below the horizon, no part of the view frustum below
-// the water level) is skipped and reports 0 ms.
-// With Feature::BenchmarkFloor, a "floor" pass runs first whenever caustics run: it reads the
-// same inputs and writes the same outputs with no math (adds exactly 0), so that
+// the water level) is skipped and reports 0 ms. With Feature::GodRays the god-ray pass (timed as
+// "god_rays"; at half resolution the march and the upsample together) runs after the caustics,
+// skipped on the same conditions with godRays.enabled.
+// With Feature::BenchmarkFloor, a "floor" pass runs first whenever caustics or god rays run: it
+// reads the same inputs and writes the same outputs with no math (adds exactly 0), so that
 // caustics.medianMs / floor.medianMs measures the shader's cost independently of the machine.
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
-// Deletes the context's GL objects (current GL context required). Null is a no-op.
+// Deletes the context's GL objects (current GL context required; without one they are leaked
+// rather than abort the process). Null is a no-op.
 void destroy(Context* context) noexcept;
 
 // The message of the last failed call on `context`, or, for null, of the last failed create()

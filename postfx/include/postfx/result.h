@@ -9,10 +9,11 @@ enum class Result {
   MissingTexture,       // a required texture is 0 or not a texture name
   UnsupportedFormat,    // a texture's internal format or target is not one this input accepts
   SizeMismatch,         // textures that must match in size do not
-  NotImplemented,       // a feature reserved for a later version (GodRays, ObjectCaustics)
+  NotImplemented,       // a feature reserved for a later version (ObjectCaustics)
   ShaderCompileFailed,  // create() could not build a program; the message has the driver log
   GlError,              // the driver refused a GL object (framebuffer incomplete, ...)
   OutOfMemory,          // allocation failed inside the library
+  NoContext,            // no GL context is current on the calling thread
 };
 
 // Stable English name of the code, e.g. "UnsupportedFormat".

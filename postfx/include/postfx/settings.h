@@ -32,3 +32,51 @@ struct CausticsSettings {
 };
 
 }  // namespace postfx
+
+namespace postfx {
+
+// How the god-ray march places its samples along each view ray.
+enum class GodRaySampling {
+  // Seed 002 section 4: where the ray crosses the planes of a world-snapped grid. The samples
+  // stay put in the world when the camera moves, so the shafts do not crawl or flicker.
+  WorldGrid,
+  // sampleCount points evenly spread along the ray: slides with the camera (flickers). Kept for
+  // comparisons (the temporal-stability test) only.
+  UniformAlongRay,
+};
+
+// Per-frame tuning of the god rays (Feature::GodRays), a plain struct with defaults. Every float
+// must be finite and inside its documented range, or dispatch() returns InvalidArgument and
+// draws nothing. The light they add is in-scattered sunlight (see godrays.frag for the model):
+//   L = E_sun * intensity * sigma_s / sigma_t * (1 - exp(-sigma_t * D)) * gamma,
+// gamma the seed's eq. (2) average of rho_i * omega_i along the ray (weighted by each sample's
+// segment length and view-path transmittance), in [0, 1]; sigma_* from WaterSurface.
+struct GodRaySettings {
+  // Off: the pass is skipped (0 ms).
+  bool enabled = true;
+  // Most grid-plane hits (samples) per pixel, [4, 64]. Cost is linear in it.
+  int sampleCount = 16;
+  // Distance between neighbouring planes of each family (m), [0.01, 1e3]. Smaller gives finer
+  // shafts near the camera but reaches less far with the same sampleCount.
+  float gridSpacing = 0.75f;
+  // Multiplier on the in-scattered sun light, unitless, [0, 1e4]. Stands for the phase function
+  // and artistic scale.
+  float intensity = 1.5f;
+  // Distance below the water level (m) over which samples fade in from 0 at the surface, which
+  // hides the grid where the refracted rays have not focused yet, [0, 1e4]. 0 = no fade.
+  float surfaceFadeDistance = 2.0f;
+  // e-folding depth (m) of the extra fade with depth below the level (the seed's simple
+  // out-scattering term), [0, 1e5]. 0 = no extra fade.
+  float depthFadeDistance = 40.0f;
+  // Longest march along a view ray (m), used for the sky and anything farther, [0.1, 1e5].
+  float maxDistance = 60.0f;
+  // March at half the target's width and height into a plugin-owned RGBA16F texture, then a
+  // depth-aware (bilateral) upsample adds it into the target: ~1/4 the march cost.
+  bool halfResolution = false;
+  // Shift the grid per pixel by a 4x4 ordered-dither phase that is fixed on screen and in time:
+  // breaks the banding of few samples into fine static noise, without temporal flicker.
+  bool dither = false;
+  GodRaySampling sampling = GodRaySampling::WorldGrid;
+};
+
+}  // namespace postfx

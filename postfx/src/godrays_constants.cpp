@@ -1,0 +1,55 @@
+#include "godrays_constants.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "frame_constants.h"
+
+namespace postfx::detail {
+
+GodRayGrid godRayGrid(const glm::dvec3& towardSun, double ior) {
+  GodRayGrid grid;
+  const glm::dvec3 sun = glm::normalize(towardSun);
+  grid.y = -refractedSunDown(sun, ior);
+  // The plane-of-incidence normal is horizontal and perpendicular to the refracted ray (which
+  // lies in that plane), so it is already orthogonal to y.
+  grid.x = incidencePlaneNormal(sun);
+  grid.z = glm::normalize(glm::cross(grid.x, grid.y));
+  return grid;
+}
+
+double godRayGridPhase(double value, double spacing) {
+  const double phase = value - std::floor(value / spacing) * spacing;
+  return phase >= spacing || phase < 0.0 ? 0.0 : phase;  // rounding can land on the bound
+}
+
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int halfWidth, int halfHeight) {
+  shared::GodRaysBlock b{};
+  const GodRaySettings& s = frame.godRays;
+  const WaterSurface& water = frame.water;
+  const GodRayGrid grid = godRayGrid(frame.sun.direction, water.ior);
+  const double spacing = s.gridSpacing;
+  b.gridX = glm::vec4(glm::vec3(grid.x), s.gridSpacing);
+  b.gridZ = glm::vec4(glm::vec3(grid.z), static_cast<float>(s.sampleCount));
+  // World snapping: the grid's planes pass through the world origin; only the camera's offset
+  // within its cell reaches the GPU.
+  const glm::dvec3& camera = frame.camera.position;
+  b.gridOffset = glm::vec4(static_cast<float>(godRayGridPhase(glm::dot(camera, grid.x), spacing)),
+                           static_cast<float>(godRayGridPhase(glm::dot(camera, grid.z), spacing)),
+                           s.sampling == GodRaySampling::UniformAlongRay ? 1.0f : 0.0f,
+                           s.dither ? 1.0f : 0.0f);
+  b.fade = glm::vec4(s.surfaceFadeDistance, s.depthFadeDistance, s.maxDistance, 0.0f);
+  const glm::dvec3 extinction = glm::dvec3(water.absorption) + glm::dvec3(water.scattering);
+  b.extinction = glm::vec4(glm::vec3(extinction), 0.0f);
+  // grid.y.y >= cos(critical angle) ~ 0.66 for a sun above the horizon (the pass is skipped
+  // otherwise): no division by ~0.
+  b.sunPath = glm::vec4(glm::vec3(extinction / std::max(grid.y.y, 1e-3)), 0.0f);
+  b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
+  b.scattering = glm::vec4(water.scattering, 0.0f);
+  b.halfViewport =
+      glm::vec4(1.0f / static_cast<float>(halfWidth), 1.0f / static_cast<float>(halfHeight),
+                static_cast<float>(halfWidth), static_cast<float>(halfHeight));
+  return b;
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,47 @@
+#pragma once
+// The god-ray pass: a full-screen march blended additively (ONE, ONE) into the host target, or
+// at half resolution into a plugin-owned RGBA16F texture (alpha = pixel distance) followed by a
+// depth-aware upsample that adds into the target. Runs under the state CausticsPass::bindState
+// set (units, samplers, caustics block, blend); adds its own block, framebuffers and unit 5.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <glkit/program.h>
+#include <postfx/postfx.h>
+
+#include "shared_math.h"
+
+namespace postfx::detail {
+
+class GodRaysPass {
+ public:
+  static constexpr GLuint kHalfUnit = 5;
+
+  GodRaysPass() = default;
+  GodRaysPass(const GodRaysPass&) = delete;
+  GodRaysPass& operator=(const GodRaysPass&) = delete;
+  ~GodRaysPass();
+
+  // Builds the programs (with the caustics pass's #defines) and GL objects (DSA: binds nothing).
+  Result init(const std::string& defines, std::string& error);
+  void release();
+
+  // Attaches the host target, sizes the half-resolution texture when used, uploads the block.
+  Result prepare(const FrameDesc& frame, int width, int height, const shared::GodRaysBlock& block,
+                 std::string& error);
+  void draw(const FrameDesc& frame, int width, int height);
+  void finish();  // lets go of the host's texture
+
+  static int halfSize(int size) { return (size + 1) / 2; }
+
+ private:
+  void ensureHalf(int width, int height);
+
+  glkit::Program full_, half_, upsample_;
+  GLuint framebuffer_ = 0, halfFramebuffer_ = 0, uniformBuffer_ = 0;
+  GLuint halfTexture_ = 0, halfSampler_ = 0;
+  int halfWidth_ = 0, halfHeight_ = 0;
+};
+
+}  // namespace postfx::detail

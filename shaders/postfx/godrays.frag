@@ -1,0 +1,128 @@
+#version 450 core
+// Underwater god rays (seed 002, section 4, eq. 2): march each view ray through a grid of planes
+// whose up axis follows the refracted sun and that is snapped to the world, evaluate the caustic
+// factor omega where the ray crosses a plane, and average rho_i * omega_i along the ray.
+//
+// Light model (single scattering of the sun in a homogeneous medium, sigma_t = sigma_a +
+// sigma_s, the extinction the host's underwater fog uses):
+//   L = E_sun * intensity * integral_0^D sigma_s * S(t) * exp(-sigma_t * t) dt
+//   S(t) = rho * omega * shadow * exp(-sigma_t * depth / cos(theta_t))   (sun path in water)
+// The integral is the analytic in-scatter of a homogeneous segment (godRayInscatter) times the
+// transmittance-weighted mean of S over the samples: gamma = sum(w_i S_i) / sum(w_i),
+// w_i = dt_i * exp(-sigma_t * t_i). With w_i = 1 that is the seed's sum(rho_i omega_i) / D_n; the
+// weights make it an unbiased quadrature and extend the sampled part's mean over the rest of the
+// ray when sampleCount runs out before its end. L <= E * intensity * sigma_s / sigma_t: bounded.
+// Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_HALF (write the half-size
+// texture: always written, alpha = the pixel's distance for the depth-aware upsample).
+#include "postfx/godrays_common.glsl"
+#include "shared/postfx_caustics.h"
+#include "shared/postfx_godrays.h"
+#include "postfx/water_sampling.glsl"
+
+// 4x4 ordered dither, fixed on screen and in time: no temporal noise.
+float bayer4(ivec2 p) {
+  const float m[16] = float[](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0,
+                              15.0, 7.0, 13.0, 5.0);
+  return (m[(p.y & 3) * 4 + (p.x & 3)] + 0.5) * (1.0 / 16.0);
+}
+
+// S(t) of the model above at camera-relative point p, t metres along the ray.
+vec3 sunSource(vec3 p, float t) {
+  float depthBelow = u.depthAndWater.z - p.y;
+  float rho = godRayParticipation(depthBelow, g.fade.x, g.fade.y);
+  if (!(rho > 0.0)) return vec3(0.0);
+#if POSTFX_SHADOW_MASK
+  rho *= sunVisibility(p);
+  if (!(rho > 0.0)) return vec3(0.0);
+#endif
+  // Where this point's light entered the water: along the refracted sun to the water plane (the
+  // caustics pass's upward projection). No tri-planar: the medium has no normal.
+  vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
+  float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
+  vec3 waterNormal = waterNormalFromSlopes(cascadeSlopes(along, 1, logFootprint));
+  float omega = causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz,
+                              u.towardSun.w, u.reference.w);
+  return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);
+}
+
+void emit(vec3 light, float pixelDistance) {
+#if POSTFX_GODRAYS_HALF
+  outLight = vec4(light, pixelDistance);
+#else
+  if (!(light.r + light.g + light.b > 0.0)) discard;  // saves the blend; drops NaN too
+  outLight = vec4(light, 0.0);
+#endif
+}
+
+void main() {
+#if POSTFX_GODRAYS_HALF
+  // Half-size texel i stands for full-resolution pixel 2i (the upsample relies on it).
+  ivec2 pixel = min(ivec2(gl_FragCoord.xy) * 2, ivec2(u.viewport.zw) - 1);
+#else
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+#endif
+  float pixelDistance;
+  vec3 d = mat3(u.viewToWorld) * pixelViewRay(pixel, pixelDistance);
+  // Guards: NaN depth, and the underwater part of the ray (zero-length or none: no light).
+  if (!(pixelDistance > 0.0) || !(abs(d.y) <= 1.0)) {
+    emit(vec3(0.0), kSkyDistance);
+    return;
+  }
+  vec2 range = godRayUnderwaterRange(u.depthAndWater.z, d.y, min(pixelDistance, g.fade.z));
+  float tStart = range.x, tEnd = range.y;
+  if (!(tEnd > tStart)) {
+    emit(vec3(0.0), pixelDistance);
+    return;
+  }
+  int count = int(g.gridZ.w);
+  float phase = g.gridOffset.w > 0.5 ? bayer4(ivec2(gl_FragCoord.xy)) : 0.5;
+  vec3 weighted = vec3(0.0), weights = vec3(0.0);
+  int taken = 0;
+  if (g.gridOffset.z > 0.5) {
+    // Uniform along the ray (comparison mode): the samples slide with the camera.
+    float dt = (tEnd - tStart) / float(count);
+    for (int i = 0; i < 64; ++i) {
+      if (i >= count) break;
+      float t = tStart + (float(i) + phase) * dt;
+      vec3 w = dt * exp(-g.extinction.rgb * (t - tStart));
+      weighted += w * sunSource(d * t, t);
+      weights += w;
+    }
+    taken = count;
+  } else {
+    // World grid: 2D DDA over the x' and z' plane families. A family the ray is parallel to
+    // never fires (its crossing stays at GODRAYS_NEVER).
+    float s = g.gridX.w;
+    float dx = dot(d, g.gridX.xyz), dz = dot(d, g.gridZ.xyz);
+    float shift = g.gridOffset.w > 0.5 ? (phase - 0.5) * s : 0.0;
+    float tx = godRayFirstCrossing(g.gridOffset.x + shift, dx, s, tStart);
+    float tz = godRayFirstCrossing(g.gridOffset.y + shift, dz, s, tStart);
+    float stepX = godRayCrossingStep(dx, s), stepZ = godRayCrossingStep(dz, s);
+    float tPrev = tStart;
+    for (int i = 0; i < 64; ++i) {
+      if (i >= count) break;
+      float t = min(tx, tz);
+      if (!(t <= tEnd)) break;
+      vec3 w = (t - tPrev) * exp(-g.extinction.rgb * (t - tStart));
+      weighted += w * sunSource(d * t, t);
+      weights += w;
+      ++taken;
+      tPrev = t;
+      // Both families at once where the ray crosses a grid line: no zero-length sample.
+      if (tx <= t) tx += stepX;
+      if (tz <= t) tz += stepZ;
+    }
+  }
+  if (taken == 0) {
+    // A march shorter than one cell crosses no plane: its end point (a world-fixed point of the
+    // scene or the surface) stands for it.
+    weighted = sunSource(d * tEnd, tEnd);
+    weights = vec3(1.0);
+  }
+  vec3 gamma = vec3(weights.r > 0.0 ? weighted.r / weights.r : 0.0,
+                    weights.g > 0.0 ? weighted.g / weights.g : 0.0,
+                    weights.b > 0.0 ? weighted.b / weights.b : 0.0);
+  vec3 light = g.lightScale.rgb * godRayInscatter(g.scattering.rgb, g.extinction.rgb,
+                                                  tEnd - tStart) * gamma;
+  emit(all(lessThan(abs(light), vec3(1e30))) ? light : vec3(0.0), pixelDistance);
+}

@@ -1,0 +1,30 @@
+// Water-texture and shadow-map lookups shared by the caustics and god-ray passes (include after
+// caustics_io.glsl): one body, so the god rays see exactly the caustics' light pattern.
+
+// Sum of the cascades' slopes for one projection, each cascade at its own mip level so that
+// small tiles blur away with distance and stop showing their repetition.
+vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint) {
+  vec2 slopes = vec2(0.0);
+  int cascades = int(u.oblique.w);
+  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
+    if (c >= cascades) break;
+    vec4 axes = u.cascadeAxes[c];
+    // The camera's share of the coordinate was reduced modulo the tile in double on the CPU.
+    vec2 offset = plane == 1 ? u.cascadeOblique[c].xy : (plane == 0 ? axes.zy : axes.xy);
+    vec2 uv = offset + coordMetres * axes.w;
+    float lod = logFootprint + u.cascadeOblique[c].z;
+    slopes += textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
+  }
+  return slopes;
+}
+
+#if POSTFX_SHADOW_MASK
+float sunVisibility(vec3 p) {
+  vec4 clip = u.shadowMatrix * vec4(p, 1.0);
+  if (!(clip.w > 0.0)) return 1.0;
+  vec3 ndc = clip.xyz / clip.w;
+  if (!(abs(ndc.x) <= 1.0 && abs(ndc.y) <= 1.0)) return 1.0;  // outside the map: lit
+  float ref = (u.shadowParams.y > 0.5 ? ndc.z * 0.5 + 0.5 : ndc.z) + u.shadowParams.x;
+  return texture(sunShadowMap, vec3(ndc.xy * 0.5 + 0.5, clamp(ref, 0.0, 1.0)));
+}
+#endif
