@@ -18,9 +18,12 @@ void main() {
     // Nothing was drawn. A ray that enters the water and meets no geometry (past the seabed's
     // edge, or level under water) sees infinitely deep water: pure in-scattering. From above,
     // the surface pass then blends its reflection over it; from below it covers what it hits.
+    // Under water the lighting pass wrote 0 here, so `radiance` is what the plugin added (its
+    // god rays): keep it on top of the deep-water colour.
     bool entersWater = cameraHeight.x < 0.0 || viewDirection(uv).y < 0.0;
     vec3 deep = waterInscatter(scattering.rgb, sigmaT, ambient.rgb, max(-cameraHeight.x, 0.0));
-    outRadiance = vec4(entersWater ? deep : radiance, 1.0);
+    vec3 added = cameraHeight.x < 0.0 ? radiance : vec3(0.0);
+    outRadiance = vec4(entersWater ? deep + added : radiance, 1.0);
     return;
   }
   vec3 relative = reconstructRelative(uv, depth);

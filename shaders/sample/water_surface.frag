@@ -52,7 +52,9 @@ void main() {
   vec3 view = normalize(relativePosition);  // camera -> surface
   float ior = waterParams.x;
   vec3 sigmaT = absorption.rgb + scattering.rgb;
-  vec3 deepColor = waterInscatter(scattering.rgb, sigmaT, ambient.rgb, 0.0);
+  // The same deep-water colour the fog pass wrote for rays that leave the scene.
+  vec3 deepColor =
+      waterInscatter(scattering.rgb, sigmaT, ambient.rgb, max(-cameraHeight.x, 0.0));
   // Which side we look from is the camera's side of the water, not the triangle's facing: from
   // below, the back of a far crest faces us and must still read as seen from below.
   if (cameraHeight.x >= 0.0) {
@@ -72,5 +74,7 @@ void main() {
   if (f < 1.0) sky = skyRadiance(normalize(refract(view, nb, ior)), sunDirection.xyz);
   vec3 color = (1.0 - f) * sky + f * deepColor;
   vec3 transmittance = exp(-sigmaT * length(relativePosition));
-  outColor = vec4(color * transmittance + deepColor * (1.0 - transmittance), 1.0);
+  // The fog pass already wrote deepColor (plus any light the plugin added in the water column)
+  // here: add only the difference the surface makes, so that added light survives.
+  outColor = vec4(transmittance * (color - deepColor), 0.0);
 }
