@@ -15,9 +15,9 @@
 
 #include "camera.h"
 #include "commands.h"
+#include "headless_session.h"
 #include "plugin_setup.h"
 #include "renderer.h"
-#include "scene_setup.h"
 #include "water_bench.h"
 
 namespace ocean {
@@ -71,33 +71,24 @@ struct Row {
 }  // namespace
 
 int runBench(const Options& options) {
-  std::string error, known;
-  Preset preset;
-  if (!findPreset(options.preset, preset, known)) {
-    return fail("unknown preset '" + options.preset + "' (known: " + known + ")");
+  std::string error;
+  HeadlessSession session;
+  if (!openHeadlessSession(options, /*debug=*/false, /*benchmarkFloor=*/true, session, error)) {
+    return fail(error);
   }
-  ocean_scene::Model scene;
-  if (!buildScene(options.models, scene, error)) return fail(error);
-  auto context = glcontext::HeadlessContext::create(/*debug=*/false, error);
-  if (!context) return fail(error);
-  RenderSettings settings;
-  settings.width = options.width;
-  settings.height = options.height;
-  settings.waterResolution = options.waterResolution;
-  auto renderer = Renderer::create(settings, scene, error);
-  if (!renderer) return fail(error);
-  auto plugin = PluginSetup::create(*renderer, options, /*benchmarkFloor=*/true, error);
-  if (!plugin) return fail(error);
+  Renderer& renderer = *session.renderer;
+  const Preset& preset = session.preset;
+  const glcontext::HeadlessContext* context = session.context.get();
 
   // The camera holds still while time runs, as in a game; each frame is a full render.
   FrameInput input{preset.camera, preset.sun, options.timeSeconds};
   std::fprintf(stderr, "bench: default settings, %d frames\n", options.frames);
-  if (!renderFrames(*renderer, input, options.timeSeconds, options.frames, error)) {
+  if (!renderFrames(renderer, input, options.timeSeconds, options.frames, error)) {
     return fail(error);
   }
   std::vector<Row> rows;
   {
-    const postfx::FrameStats& stats = plugin->stats();
+    const postfx::FrameStats& stats = session.plugin->stats();
     const double floorMs = passMs(stats, "floor");
     for (int i = 0; i < stats.passCount; ++i) {
       rows.push_back(
@@ -113,17 +104,17 @@ int runBench(const Options& options) {
         const std::string name =
             std::string(half ? "god_rays_half_" : "god_rays_") + std::to_string(samples);
         std::fprintf(stderr, "bench: %s, %d frames\n", name.c_str(), variantFrames);
-        auto variant = PluginSetup::create(*renderer, options, /*benchmarkFloor=*/true, error);
+        auto variant = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
         if (!variant) return fail(error);
         variant->godRays().sampleCount = samples;
         variant->godRays().halfResolution = half;
-        if (!renderFrames(*renderer, input, options.timeSeconds, variantFrames, error)) {
+        if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
           return fail(error);
         }
         const postfx::FrameStats& stats = variant->stats();
         rows.push_back({name, passMs(stats, "god_rays"), passMs(stats, "floor"),
                         passMs(stats, "god_rays") == 0.0});
-        plugin = std::move(variant);  // the last created context is the renderer's pass
+        session.plugin = std::move(variant);  // the last created context is the renderer's pass
       }
     }
   }

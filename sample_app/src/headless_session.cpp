@@ -1,0 +1,35 @@
+#include "headless_session.h"
+
+#include "scene_setup.h"
+
+namespace ocean {
+
+bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor,
+                         HeadlessSession& session, std::string& error) {
+  std::string known;
+  if (!findPreset(options.preset, session.preset, known)) {
+    error = "unknown preset '" + options.preset + "' (known: " + known + ")";
+    return false;
+  }
+  ocean_scene::Model scene;
+  if (!buildScene(options.models, scene, error)) return false;
+  session.context = glcontext::HeadlessContext::create(debug, error);
+  if (!session.context) return false;
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (options.width > maxSize || options.height > maxSize) {
+    error = "size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+            " exceeds this GPU's limit of " + std::to_string(maxSize);
+    return false;
+  }
+  RenderSettings settings;
+  settings.width = options.width;
+  settings.height = options.height;
+  settings.waterResolution = options.waterResolution;
+  session.renderer = Renderer::create(settings, scene, error);
+  if (!session.renderer) return false;
+  session.plugin = PluginSetup::create(*session.renderer, options, benchmarkFloor, error);
+  return session.plugin != nullptr;
+}
+
+}  // namespace ocean
