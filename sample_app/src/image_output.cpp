@@ -20,8 +20,12 @@ bool writeFlipped(const std::string& path, int width, int height, const T* pixel
                   OIIO::TypeDesc type, std::string& error) {
   namespace fs = std::filesystem;
   const fs::path target(path);
-  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".partial" +
-                                                     target.extension().string());
+  // Appending (rather than chaining operator+) also sidesteps a GCC 12 -Wrestrict false positive.
+  std::string temporaryName = ".";
+  temporaryName += target.filename().string();
+  temporaryName += ".partial";
+  temporaryName += target.extension().string();
+  const fs::path temporary = target.parent_path() / temporaryName;
   auto output = OIIO::ImageOutput::create(path);
   if (!output) {
     error = "cannot write '" + path + "': " + OIIO::geterror();

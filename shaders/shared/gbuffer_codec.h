@@ -8,9 +8,9 @@
 SHARED_BEGIN
 
 // Depth conventions (values of gbuffer::DepthConvention).
-SHARED_CONST int DEPTH_REVERSE_Z = 0;        // clip control [0,1], near = 1, far/sky = 0
-SHARED_CONST int DEPTH_FORWARD_ZERO_ONE = 1; // clip control [0,1], near = 0, far/sky = 1
-SHARED_CONST int DEPTH_FORWARD_NEG_ONE = 2;  // GL default [-1,1] clip, window depth near 0, far 1
+SHARED_CONST int DEPTH_REVERSE_Z = 0;         // clip control [0,1], near = 1, far/sky = 0
+SHARED_CONST int DEPTH_FORWARD_ZERO_ONE = 1;  // clip control [0,1], near = 0, far/sky = 1
+SHARED_CONST int DEPTH_FORWARD_NEG_ONE = 2;   // GL default [-1,1] clip, window depth near 0, far 1
 
 // Normal encodings (values of gbuffer::NormalEncoding).
 SHARED_CONST int NORMAL_OCTAHEDRAL = 0;  // RG16_SNORM or RG16F/RG32F: octahedral in [-1,1]^2

@@ -15,32 +15,33 @@ struct CausticsBlock {
 #else
 layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
 #endif
-  mat4 viewToWorld;        // rotation only: view space -> camera-relative world space
-  mat4 shadowMatrix;       // camera-relative world -> light clip space
-  vec4 viewport;           // 1/width, 1/height, width, height
-  vec4 projection;         // P[0][0], P[1][1], P[2][0], P[2][1]
-  vec4 depthAndWater;      // P[2][2], P[3][2], water level - camera y (m), radians per pixel
-  vec4 towardSun;          // xyz: unit vector toward the sun; w: tau
-  vec4 reference;          // xyz: unit vector perpendicular to the plane of incidence;
-                           // w: reflection weight
-  vec4 refractedUp;        // xyz: unperturbed refracted sun ray reversed (receiver -> surface)
-                           // w: surface fade depth (m)
-  vec4 eta;                // 1 / IOR for R, G, B; w: tri-planar sharpness
-  vec4 lightScale;         // sun irradiance * intensity (rgb); w: unused
-  vec4 absorptionPerDepth; // absorption / cos(theta_t), per metre of depth (rgb); w: unused
-  vec4 oblique;            // refractedUp.xz / refractedUp.y (x, y); z: lod bias; w: cascades
-  vec4 cascadeAxes[POSTFX_MAX_CASCADES];    // fract((camera - water origin) / tile) along x, y,
-                                            // z; w: 1 / tile (1/m)
-  vec4 cascadeOblique[POSTFX_MAX_CASCADES]; // fract of the camera's oblique coordinates u, v;
-                                            // z: log2(texels per metre); w: unused
-  vec4 shadowParams;       // x: signed window-depth bias, y: 1 for a [-1,1] shadow convention,
-                           // z: unused, w: floor-pass scale (always 0)
+  mat4 viewToWorld;         // rotation only: view space -> camera-relative world space
+  mat4 shadowMatrix;        // camera-relative world -> light clip space
+  vec4 viewport;            // 1/width, 1/height, width, height
+  vec4 projection;          // P[0][0], P[1][1], P[2][0], P[2][1]
+  vec4 depthAndWater;       // P[2][2], P[3][2], water level - camera y (m), radians per pixel
+  vec4 towardSun;           // xyz: unit vector toward the sun; w: tau
+  vec4 reference;           // xyz: unit vector perpendicular to the plane of incidence;
+                            // w: reflection weight
+  vec4 refractedUp;         // xyz: unperturbed refracted sun ray reversed (receiver -> surface)
+                            // w: surface fade depth (m)
+  vec4 eta;                 // 1 / IOR for R, G, B; w: tri-planar sharpness
+  vec4 lightScale;          // sun irradiance * intensity (rgb); w: unused
+  vec4 absorptionPerDepth;  // absorption / cos(theta_t), per metre of depth (rgb); w: unused
+  vec4 oblique;             // refractedUp.xz / refractedUp.y (x, y); z: lod bias; w: cascades
+  vec4 cascadeAxes[POSTFX_MAX_CASCADES];     // fract((camera - water origin) / tile) along x, y,
+                                             // z; w: 1 / tile (1/m)
+  vec4 cascadeOblique[POSTFX_MAX_CASCADES];  // fract of the camera's oblique coordinates u, v;
+                                             // z: log2(texels per metre); w: unused
+  vec4 shadowParams;  // x: signed window-depth bias, y: 1 for a [-1,1] shadow convention,
+                      // z: unused, w: floor-pass scale (always 0)
 #ifdef __cplusplus
 };
 static_assert(sizeof(CausticsBlock) == 2 * 64 + 10 * 16 + 2 * POSTFX_MAX_CASCADES * 16 + 16,
               "CausticsBlock must match its std140 layout");
 #else
-} u;
+}
+u;
 #endif
 
 SHARED_END

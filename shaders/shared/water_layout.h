@@ -14,10 +14,10 @@ SHARED_CONST int WATER_MAX_CASCADES = 4;
 // dDz/dz + i dDx/dz).
 SHARED_CONST int WATER_SCRATCH_LAYERS_PER_CASCADE = 2;
 
-SHARED_CONST int WATER_SPECTRUM_BINDING = 0;  // shader storage: amplitudes and cycle counts
-SHARED_CONST int WATER_SCRATCH_UNIT = 0;      // image unit: RGBA32F scratch array
-SHARED_CONST int WATER_SLOPE_UNIT = 1;        // image unit: RGBA16F slope array, level 0
-SHARED_CONST int WATER_DISPLACEMENT_UNIT = 2; // image unit: RGBA16F displacement array, level 0
+SHARED_CONST int WATER_SPECTRUM_BINDING = 0;   // shader storage: amplitudes and cycle counts
+SHARED_CONST int WATER_SCRATCH_UNIT = 0;       // image unit: RGBA32F scratch array
+SHARED_CONST int WATER_SLOPE_UNIT = 1;         // image unit: RGBA16F slope array, level 0
+SHARED_CONST int WATER_DISPLACEMENT_UNIT = 2;  // image unit: RGBA16F displacement array, level 0
 SHARED_CONST int WATER_IMAGE_UNIT_COUNT = 3;
 
 // A wave's phase is (cycles * loopPhase) mod 2^32 in units of 2 pi / 2^32 (exact in uint math).
