@@ -46,9 +46,7 @@ GlStateGuard::GlStateGuard() {
   glActiveTexture(static_cast<GLenum>(activeTexture_));
   glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniformBuffer_);
   for (GLuint i = 0; i < GLuint(kUniformBindings); ++i) {
-    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, i, &uniformIndexed_[i]);
-    glGetInteger64i_v(GL_UNIFORM_BUFFER_START, i, &uniformStart_[i]);
-    glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, i, &uniformSize_[i]);
+    uniformIndexed_[i] = glkit::IndexedBufferBinding::save(GL_UNIFORM_BUFFER, i);
   }
   glGetIntegerv(GL_QUERY_BUFFER_BINDING, &queryBuffer_);
 }
@@ -100,15 +98,7 @@ GlStateGuard::~GlStateGuard() {
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));
   // glBindBufferBase/Range also set the generic binding, so the indexed one goes first.
-  for (GLuint i = 0; i < GLuint(kUniformBindings); ++i) {
-    const GLuint indexed = static_cast<GLuint>(uniformIndexed_[i]);
-    if (indexed == 0 || uniformSize_[i] == 0) {
-      glBindBufferBase(GL_UNIFORM_BUFFER, i, indexed);
-    } else {
-      glBindBufferRange(GL_UNIFORM_BUFFER, i, indexed, static_cast<GLintptr>(uniformStart_[i]),
-                        static_cast<GLsizeiptr>(uniformSize_[i]));
-    }
-  }
+  for (const glkit::IndexedBufferBinding& binding : uniformIndexed_) binding.restore();
   glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniformBuffer_));
   glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(queryBuffer_));
 }

@@ -6,6 +6,8 @@
 
 #include <array>
 
+#include <glkit/buffer_binding.h>
+
 namespace postfx::detail {
 
 class GlStateGuard {
@@ -44,8 +46,7 @@ class GlStateGuard {
   // Indexed uniform-buffer bindings the passes use: the caustics block and the god-ray block.
   static constexpr int kUniformBindings = 2;
   GLint uniformBuffer_ = 0;
-  std::array<GLint, kUniformBindings> uniformIndexed_{};
-  std::array<GLint64, kUniformBindings> uniformStart_{}, uniformSize_{};
+  std::array<glkit::IndexedBufferBinding, kUniformBindings> uniformIndexed_{};
   GLint queryBuffer_ = 0;
 };
 

@@ -19,10 +19,7 @@ GlStateGuard::GlStateGuard() {
   }
   // glBindBufferBase also replaces the generic binding, so both are saved.
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageGeneric_);
-  const GLuint slot = WATER_SPECTRUM_BINDING;
-  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, slot, &storageIndexed_);
-  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, slot, &storageStart_);
-  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, slot, &storageSize_);
+  storage_ = glkit::IndexedBufferBinding::save(GL_SHADER_STORAGE_BUFFER, WATER_SPECTRUM_BINDING);
 }
 
 GlStateGuard::~GlStateGuard() {
@@ -33,14 +30,7 @@ GlStateGuard::~GlStateGuard() {
                        image.layered ? GL_TRUE : GL_FALSE, image.layer,
                        static_cast<GLenum>(image.access), static_cast<GLenum>(image.format));
   }
-  const GLuint slot = WATER_SPECTRUM_BINDING;
-  const GLuint indexed = static_cast<GLuint>(storageIndexed_);
-  if (indexed != 0 && storageSize_ > 0) {
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, slot, indexed, static_cast<GLintptr>(storageStart_),
-                      static_cast<GLsizeiptr>(storageSize_));
-  } else {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot, indexed);
-  }
+  storage_.restore();
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageGeneric_));
 }
 

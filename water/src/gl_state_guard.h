@@ -4,6 +4,8 @@
 
 #include <array>
 
+#include <glkit/buffer_binding.h>
+
 namespace water::detail {
 
 class GlStateGuard {
@@ -19,8 +21,8 @@ class GlStateGuard {
   };
   GLint program_ = 0;
   std::array<ImageUnit, 3> images_{};
-  GLint storageGeneric_ = 0, storageIndexed_ = 0;
-  GLint64 storageStart_ = 0, storageSize_ = 0;
+  GLint storageGeneric_ = 0;
+  glkit::IndexedBufferBinding storage_;
 };
 
 }  // namespace water::detail
