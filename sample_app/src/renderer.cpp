@@ -103,7 +103,7 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   return true;
 }
 
-void Renderer::updateFrameConstants(const FrameInput& input) {
+glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
   const Camera& camera = input.camera;
   const double aspect = double(settings_.width) / settings_.height;
   const glm::dmat4 projection = camera.projection(aspect);
@@ -126,8 +126,7 @@ void Renderer::updateFrameConstants(const FrameInput& input) {
       gbuffer::projectionParams(projection, gbuffer::DepthConvention::ReverseZ);
   frame.projectionXY = params.xy;
   frame.projectionZ = glm::vec4(params.z, float(gbuffer::DepthConvention::ReverseZ), 0.0f);
-  frame.cameraHeight = glm::vec4(float(camera.position.y - optics_.level),
-                                 float(std::fmod(input.timeSeconds, 1000.0)), 0.0f, 0.0f);
+  frame.cameraHeight = glm::vec4(float(camera.position.y - optics_.level), 0.0f, 0.0f, 0.0f);
   frame.sunDirection = glm::vec4(glm::vec3(toSun), toSun.y > 0.0 ? 1.0f : 0.0f);
   // Irradiance on a surface facing the sun scales with nothing else; the atmosphere reddens
   // and dims a low sun.
@@ -150,11 +149,12 @@ void Renderer::updateFrameConstants(const FrameInput& input) {
   frame.cascadeInfo =
       glm::vec4(float(std::min(ocean_->cascadeCount(), 4)), settings_.exposure, 0.0f, 0.0f);
   glNamedBufferSubData(frameUniforms_, 0, sizeof(frame), &frame);
+  return projection;
 }
 
 bool Renderer::render(const FrameInput& input, std::string& error) {
   if (ocean_->update(input.timeSeconds, error) != water::Result::Ok) return false;
-  updateFrameConstants(input);
+  const glm::dmat4 projection = updateFrameConstants(input);
   const int width = settings_.width, height = settings_.height;
   const glm::dvec3 eye = input.camera.position;
 
@@ -202,13 +202,8 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glPopDebugGroup();
 
   if (plugin_) {
-    const HostFrame frame{targets_,
-                          input,
-                          *ocean_,
-                          optics_,
-                          shadowMap_.texture(),
-                          shadowWorldToClip_,
-                          input.camera.projection(double(width) / height)};
+    const HostFrame frame{targets_,           input,     *ocean_, optics_, shadowMap_.texture(),
+                          shadowWorldToClip_, projection};
     if (!plugin_(frame, error)) return false;
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
   }

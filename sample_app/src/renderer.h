@@ -72,7 +72,8 @@ class Renderer {
  private:
   Renderer() = default;
   bool initialise(const ocean_scene::Model& scene, std::string& error);
-  void updateFrameConstants(const FrameInput& input);
+  // Uploads the frame constants; returns the camera projection it derived them from.
+  glm::dmat4 updateFrameConstants(const FrameInput& input);
 
   RenderSettings settings_;
   water::Optics optics_;

@@ -5,6 +5,7 @@
 #include "shared/sample_frame.h"
 #include "shared/sample_optics.h"
 #include "sample/reconstruct.glsl"
+#include "sample/water_column.glsl"
 in vec2 uv;
 layout(binding = 0) uniform sampler2D depthTexture;
 layout(binding = 1) uniform sampler2D radianceTexture;
@@ -21,7 +22,7 @@ void main() {
     // Under water the lighting pass wrote 0 here, so `radiance` is what the plugin added (its
     // god rays): keep it on top of the deep-water colour.
     bool entersWater = cameraHeight.x < 0.0 || viewDirection(uv).y < 0.0;
-    vec3 deep = waterInscatter(scattering.rgb, sigmaT, ambient.rgb, max(-cameraHeight.x, 0.0));
+    vec3 deep = deepWaterColour();
     vec3 added = cameraHeight.x < 0.0 ? radiance : vec3(0.0);
     outRadiance = vec4(entersWater ? deep + added : radiance, 1.0);
     return;

@@ -5,6 +5,7 @@
 #include "shared/sample_frame.h"
 #include "shared/sample_optics.h"
 #include "sample/reconstruct.glsl"
+#include "sample/water_column.glsl"
 in vec2 surfaceXZ;
 in vec3 relativePosition;
 layout(binding = 0) uniform sampler2D depthTexture;
@@ -52,9 +53,7 @@ void main() {
   vec3 view = normalize(relativePosition);  // camera -> surface
   float ior = waterParams.x;
   vec3 sigmaT = absorption.rgb + scattering.rgb;
-  // The same deep-water colour the fog pass wrote for rays that leave the scene.
-  vec3 deepColor =
-      waterInscatter(scattering.rgb, sigmaT, ambient.rgb, max(-cameraHeight.x, 0.0));
+  vec3 deepColor = deepWaterColour();
   // Which side we look from is the camera's side of the water, not the triangle's facing: from
   // below, the back of a far crest faces us and must still read as seen from below.
   if (cameraHeight.x >= 0.0) {

@@ -18,7 +18,7 @@ layout(std140, binding = 0) uniform SampleFrame {
   MAT4 shadowViewProjection;  // camera-relative world -> shadow clip ([0,1] depth, forward)
   VEC4 projectionXY;          // gbuffer ProjectionParams.xy
   VEC4 projectionZ;           // xy: gbuffer ProjectionParams.z; z: depth convention; w: unused
-  VEC4 cameraHeight;          // x: camera y - water level (m); y: time (s, wrapped); zw unused
+  VEC4 cameraHeight;          // x: camera y - water level (m); yzw unused
   VEC4 sunDirection;          // xyz: unit toward the sun (world); w: 1 if above horizon
   VEC4 sunIrradiance;         // rgb: above-water irradiance at normal incidence
   VEC4 refractedSun;          // xyz: unit toward the sun as seen under water; w: 1-Fresnel
