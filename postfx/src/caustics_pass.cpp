@@ -1,5 +1,7 @@
 #include "caustics_pass.h"
 
+#include "host_target.h"
+
 #include <string>
 
 #include "shader_library.h"
@@ -145,14 +147,10 @@ void CausticsPass::clearRaw(int width, int height) {
 Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                              const shared::CausticsBlock& block, std::string& error) {
   ensureRaw(textures.width, textures.height);
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, frame.target.texture, 0);
   if (floorFramebuffer_ != 0)
     glNamedFramebufferTexture(floorFramebuffer_, GL_COLOR_ATTACHMENT0, frame.target.texture, 0);
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_DRAW_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
+  if (!attachHostTarget(framebuffer_, frame.target.texture, "caustics", error)) {
     finish();
-    error = "target: framebuffer with the HDR target is incomplete (status " +
-            std::to_string(status) + ")";
     return Result::GlError;
   }
   glNamedBufferSubData(uniformBuffer_, 0, sizeof(block), &block);

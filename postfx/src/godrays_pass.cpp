@@ -1,5 +1,7 @@
 #include "godrays_pass.h"
 
+#include "host_target.h"
+
 #include "shader_library.h"
 
 namespace postfx::detail {
@@ -80,12 +82,8 @@ void GodRaysPass::ensureHalf(int width, int height) {
 Result GodRaysPass::prepare(const FrameDesc& frame, int width, int height,
                             const shared::GodRaysBlock& block, std::string& error) {
   if (frame.godRays.halfResolution) ensureHalf(width, height);
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, frame.target.texture, 0);
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_DRAW_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
+  if (!attachHostTarget(framebuffer_, frame.target.texture, "god-ray", error)) {
     finish();
-    error = "target: god-ray framebuffer with the HDR target is incomplete (status " +
-            std::to_string(status) + ")";
     return Result::GlError;
   }
   glNamedBufferSubData(uniformBuffer_, 0, sizeof(block), &block);
