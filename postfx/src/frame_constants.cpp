@@ -53,7 +53,7 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   const bool dispersion = hasFeature(create.features, Feature::Dispersion);
   const glm::vec3 ior = dispersion ? surface.iorRgb : glm::vec3(surface.ior);
   b.eta = glm::vec4(1.0f / ior, settings.triplanarSharpness);
-  b.lightScale = glm::vec4(frame.sun.irradiance * settings.intensity, 0.0f);
+  b.lightScale = glm::vec4(frame.sun.irradiance * settings.intensity, settings.minCascadeContrast);
   // up.y >= cos(critical angle) ~ 0.66 for any sun above the horizon: never a division by ~0.
   b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / up.y, 0.0);
   const double kx = up.x / up.y, kz = up.z / up.y;
@@ -72,6 +72,14 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     const double texelsPerMetre = std::max(water.width, water.height) / tile;
     b.cascadeOblique[c] = glm::vec4(tileFraction(obliqueU, tile), tileFraction(obliqueV, tile),
                                     std::log2(texelsPerMetre), 0.0);
+    // Paraxial focusing: a curvature kappa modulates the irradiance at path length L by
+    // L * (1 - 1/n) * kappa, and L = depth / up.y along the unperturbed refracted sun.
+    const double laplacian = surface.rmsLaplacian[c];
+    const double wavelength = surface.longestWavelength[c];
+    b.cascadeSkip[c] = glm::vec4(
+        laplacian > 0.0 ? static_cast<float>((1.0 - 1.0 / double(surface.ior)) * laplacian / up.y)
+                        : -1.0f,
+        wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, 0.0f, 0.0f);
   }
 
   const bool shadow = hasFeature(create.features, Feature::ShadowMask);

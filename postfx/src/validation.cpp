@@ -224,6 +224,12 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   for (int c = 0; c < water.cascadeCount; ++c)
     if (!inRange(water.tileSize[c], 1e-3, 1e7))
       return fail("water.tileSize[" + std::to_string(c) + "] must be in [1e-3, 1e7] m");
+  for (int c = 0; c < water.cascadeCount; ++c) {
+    if (!inRange(water.rmsLaplacian[c], 0.0, 1e9))
+      return fail("water.rmsLaplacian[" + std::to_string(c) + "] must be in [0, 1e9] 1/m");
+    if (!inRange(water.longestWavelength[c], 0.0, 1e9))
+      return fail("water.longestWavelength[" + std::to_string(c) + "] must be in [0, 1e9] m");
+  }
   if (!inRange(water.ior, 1.0, 3.0)) return fail("water.ior must be in [1, 3]");
   if (hasFeature(create.features, Feature::Dispersion) && !inRange(water.iorRgb, 1.0, 3.0))
     return fail("water.iorRgb must be in [1, 3]");
@@ -249,6 +255,8 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!inRange(s.triplanarSharpness, 1.0, 32.0))
     return fail("caustics.triplanarSharpness must be in [1, 32]");
   if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
+  if (!inRange(s.minCascadeContrast, 0.0, 1.0))
+    return fail("caustics.minCascadeContrast must be in [0, 1]");
   if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }

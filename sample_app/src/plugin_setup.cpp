@@ -50,7 +50,11 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.water.level = frame.optics.level;
   desc.water.texture = {ocean.slopeTexture(), GL_RGBA16F};
   desc.water.cascadeCount = std::min(ocean.cascadeCount(), postfx::kMaxCascades);
-  for (int c = 0; c < desc.water.cascadeCount; ++c) desc.water.tileSize[c] = ocean.tileSize(c);
+  for (int c = 0; c < desc.water.cascadeCount; ++c) {
+    desc.water.tileSize[c] = ocean.tileSize(c);
+    desc.water.rmsLaplacian[c] = ocean.waveStats(c).rmsLaplacian;
+    desc.water.longestWavelength[c] = ocean.waveStats(c).longestWavelength;
+  }
   desc.water.ior = float(frame.optics.ior);
   const float spread = float(frame.optics.iorSpread);
   desc.water.iorRgb =

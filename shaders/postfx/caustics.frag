@@ -13,16 +13,16 @@ const float kMinPlaneWeight = 0.02;
 // Tri-planar lookup: the plane facing up projects the receiver ALONG THE REFRACTED LIGHT onto
 // the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
 // Blended by the G-buffer normal.
-vec2 waterSlopes(vec3 p, vec3 n, float logFootprint) {
+vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow) {
   vec3 w = pow(abs(n), vec3(u.eta.w));
   w /= max(w.x + w.y + w.z, 1e-20);
   vec2 slopes = vec2(0.0);
   if (w.y > kMinPlaneWeight) {
     vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
-    slopes += w.y * cascadeSlopes(along, 1, logFootprint);
+    slopes += w.y * cascadeSlopes(along, 1, logFootprint, depthBelow);
   }
-  if (w.x > kMinPlaneWeight) slopes += w.x * cascadeSlopes(p.zy, 0, logFootprint);
-  if (w.z > kMinPlaneWeight) slopes += w.z * cascadeSlopes(p.xy, 2, logFootprint);
+  if (w.x > kMinPlaneWeight) slopes += w.x * cascadeSlopes(p.zy, 0, logFootprint, depthBelow);
+  if (w.z > kMinPlaneWeight) slopes += w.z * cascadeSlopes(p.xy, 2, logFootprint, depthBelow);
   return slopes;
 }
 
@@ -60,7 +60,7 @@ void main() {
   float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
   float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
 
-  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint));
+  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, depthBelow));
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;
 #if POSTFX_DISPERSION

@@ -1,19 +1,33 @@
 // Water-texture and shadow-map lookups shared by the caustics and god-ray passes (include after
 // caustics_io.glsl): one body, so the god rays see exactly the caustics' light pattern.
 
+// How much of cascade c a point `depthBelow` metres under the level, seen with a footprint of
+// 2^logFootprint metres, can show: 0 where the cascade's waves cannot focus light at that depth
+// yet (their first-order irradiance modulation is below the contrast cut-off; they only tilt
+// it) or are all finer than the footprint. Skipping those saves a filtered fetch each.
+float cascadeWeight(int c, float depthBelow, float logFootprint) {
+  vec4 skip = u.cascadeSkip[c];
+  if (logFootprint >= skip.y) return 0.0;
+  float cut = u.lightScale.w;
+  if (skip.x < 0.0 || cut <= 0.0) return 1.0;
+  return smoothstep(cut, 2.0 * cut, depthBelow * skip.x);
+}
+
 // Sum of the cascades' slopes for one projection, each cascade at its own mip level so that
 // small tiles blur away with distance and stop showing their repetition.
-vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint) {
+vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint, float depthBelow) {
   vec2 slopes = vec2(0.0);
   int cascades = int(u.oblique.w);
   for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
     if (c >= cascades) break;
+    float weight = cascadeWeight(c, depthBelow, logFootprint);
+    if (!(weight > 0.0)) continue;
     vec4 axes = u.cascadeAxes[c];
     // The camera's share of the coordinate was reduced modulo the tile in double on the CPU.
     vec2 offset = plane == 1 ? u.cascadeOblique[c].xy : (plane == 0 ? axes.zy : axes.xy);
     vec2 uv = offset + coordMetres * axes.w;
     float lod = logFootprint + u.cascadeOblique[c].z;
-    slopes += textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
+    slopes += weight * textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
   }
   return slopes;
 }

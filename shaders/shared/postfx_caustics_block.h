@@ -26,18 +26,21 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
   vec4 refractedUp;         // xyz: unperturbed refracted sun ray reversed (receiver -> surface)
                             // w: surface fade depth (m)
   vec4 eta;                 // 1 / IOR for R, G, B; w: tri-planar sharpness
-  vec4 lightScale;          // sun irradiance * intensity (rgb); w: unused
+  vec4 lightScale;          // sun irradiance * intensity (rgb); w: min cascade contrast
   vec4 absorptionPerDepth;  // absorption / cos(theta_t), per metre of depth (rgb); w: unused
   vec4 oblique;             // refractedUp.xz / refractedUp.y (x, y); z: lod bias; w: cascades
   vec4 cascadeAxes[POSTFX_MAX_CASCADES];     // fract((camera - water origin) / tile) along x, y,
                                              // z; w: 1 / tile (1/m)
   vec4 cascadeOblique[POSTFX_MAX_CASCADES];  // fract of the camera's oblique coordinates u, v;
                                              // z: log2(texels per metre); w: unused
+  vec4 cascadeSkip[POSTFX_MAX_CASCADES];     // x: irradiance modulation per metre below the level
+                                             // (< 0: unknown, always sampled); y: log2 of half the
+                                             // longest wavelength (m; huge: unknown); zw: unused
   vec4 shadowParams;  // x: signed window-depth bias, y: 1 for a [-1,1] shadow convention,
                       // z: unused, w: floor-pass scale (always 0)
 #ifdef __cplusplus
 };
-static_assert(sizeof(CausticsBlock) == 2 * 64 + 10 * 16 + 2 * POSTFX_MAX_CASCADES * 16 + 16,
+static_assert(sizeof(CausticsBlock) == 2 * 64 + 10 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 16,
               "CausticsBlock must match its std140 layout");
 #else
 }

@@ -9,6 +9,7 @@
 #include <glkit/current_context.h>
 #include <glkit/program.h>
 #include <water/initial_spectrum.h>
+#include <water/spectrum.h>
 
 #include "gl_state_guard.h"
 #include "shader_interface.h"
@@ -110,6 +111,7 @@ Result Ocean::initialise(std::string& error) {
     return Result::ShaderCompileFailed;
   }
 
+  waveStats_ = cascadeWaveStats(desc_);
   const std::vector<unsigned char> spectrum = packSpectrum(buildInitialSpectrum(desc_));
   glCreateBuffers(1, &spectrumBuffer_);
   glNamedBufferStorage(spectrumBuffer_, static_cast<GLsizeiptr>(spectrum.size()), spectrum.data(),

@@ -91,12 +91,13 @@ std::vector<CascadeBand> cascadeBands(const OceanDesc& desc) {
   return bands;
 }
 
-double discreteMeanSquareSlope(const OceanDesc& desc) {
+std::vector<CascadeWaveStats> cascadeWaveStats(const OceanDesc& desc) {
   const std::vector<CascadeBand> bands = cascadeBands(desc);
   const int n = desc.resolution;
-  double sum = 0.0;
+  std::vector<CascadeWaveStats> stats(bands.size());
   for (int c = 0; c < desc.cascadeCount; ++c) {
     const double dk = 2.0 * kPi / desc.tileSize[c];
+    double slope2 = 0.0, laplacian2 = 0.0;
     for (int m = 0; m < n; ++m) {
       for (int i = 0; i < n; ++i) {
         const int si = signedFrequency(i, n), sm = signedFrequency(m, n);
@@ -104,9 +105,22 @@ double discreteMeanSquareSlope(const OceanDesc& desc) {
         const double kx = si * dk, kz = sm * dk;
         const double k = std::hypot(kx, kz);
         if (!(k >= bands[c].kMin && k < bands[c].kMax) || k == 0.0) continue;
-        sum += k * k * waveSpectrum(kx, kz, desc) * dk * dk;
+        const double variance = waveSpectrum(kx, kz, desc) * dk * dk;
+        slope2 += k * k * variance;
+        laplacian2 += k * k * k * k * variance;
       }
     }
+    stats[c].rmsSlope = std::sqrt(slope2);
+    stats[c].rmsLaplacian = std::sqrt(laplacian2);
+    stats[c].longestWavelength = 2.0 * kPi / std::max(bands[c].kMin, dk);
+  }
+  return stats;
+}
+
+double discreteMeanSquareSlope(const OceanDesc& desc) {
+  double sum = 0.0;
+  for (const CascadeWaveStats& cascade : cascadeWaveStats(desc)) {
+    sum += cascade.rmsSlope * cascade.rmsSlope;
   }
   return sum;
 }

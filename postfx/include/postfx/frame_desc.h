@@ -61,6 +61,16 @@ struct WaterSurface {
   TextureRef texture;
   int cascadeCount = 1;                                    // [1, kMaxCascades], <= layer count
   double tileSize[kMaxCascades] = {64.0, 16.0, 4.0, 1.0};  // metres per tile, > 0
+  // Optional statistics of each cascade's waves (water::Ocean::waveStats gives them). They let
+  // a pixel leave out the cascades it cannot see (CausticsSettings::minCascadeContrast):
+  //  - rmsLaplacian (1/m): RMS of the Laplacian of the cascade's height. To first order its
+  //    waves modulate the irradiance at path length L below the surface by L*(1-1/n)*rmsLaplacian:
+  //    long, gentle waves only tilt the light at shallow depth, they cannot focus it there.
+  //  - longestWavelength (m): where a pixel's (or god-ray sample's) footprint is more than half
+  //    of it, every wave of the cascade is finer than the footprint and averages out.
+  // 0 = unknown: the cascade is always sampled. Finite and >= 0.
+  double rmsLaplacian[kMaxCascades] = {0.0, 0.0, 0.0, 0.0};
+  double longestWavelength[kMaxCascades] = {0.0, 0.0, 0.0, 0.0};
   // Index of refraction of the water relative to air, [1, 3].
   float ior = 1.333f;
   // Per-channel IOR (R, G, B) used instead of `ior` when the context has Feature::Dispersion.

@@ -29,6 +29,13 @@ struct CausticsSettings {
   // Added to the water-texture mip level chosen from each pixel's footprint, in mip levels,
   // [-4, 8]. Positive blurs earlier with distance, which hides tile repetition sooner.
   float lodBias = 0.0f;
+
+  // Cascades whose first-order irradiance modulation at a receiver's depth
+  // (WaterSurface::rmsLaplacian) is below this are not sampled there; the ones between it and
+  // twice it fade in. [0, 1]; 0 samples every cascade everywhere. Also applies to the god rays.
+  // Each cascade skipped saves one filtered water fetch per pixel (the pass's main cost); the
+  // error it costs is in the report (ocean_sample report).
+  float minCascadeContrast = 0.1f;
 };
 
 }  // namespace postfx

@@ -19,9 +19,11 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <water/ocean_desc.h>
 #include <water/result.h>
+#include <water/spectrum.h>
 
 namespace water {
 
@@ -49,6 +51,8 @@ class Ocean {
   int cascadeCount() const { return desc_.cascadeCount; }
   double tileSize(int cascade) const { return desc_.tileSize[cascade]; }
   const OceanDesc& desc() const { return desc_; }
+  // Expected statistics of each cascade's waves (for postfx::WaterSurface's cascade fields).
+  const CascadeWaveStats& waveStats(int cascade) const { return waveStats_[cascade]; }
   // GPU memory the module allocated, bytes (buffers and textures with all mip levels).
   size_t gpuBytes() const { return gpuBytes_; }
 
@@ -57,6 +61,7 @@ class Ocean {
   Result initialise(std::string& error);
 
   OceanDesc desc_;
+  std::vector<CascadeWaveStats> waveStats_;
   GLuint spectrumBuffer_ = 0;  // static per-mode amplitudes and cycle counts
   GLuint scratch_ = 0;         // RGBA32F array: row-transformed signals, 2 layers per cascade
   GLuint slope_ = 0, displacement_ = 0;

@@ -39,4 +39,18 @@ double discreteMeanSquareSlope(const OceanDesc& desc);
 // the spreading integrates to one over the full circle). The physics reference.
 double integratedMeanSquareSlope(const OceanDesc& desc);
 
+// What a renderer needs to know about one cascade's waves to decide whether a pixel can see
+// them at all (postfx::WaterSurface carries these to the caustics and god rays).
+struct CascadeWaveStats {
+  // sqrt(E[(dh/dx)^2 + (dh/dz)^2]) over the cascade's modes (unitless).
+  double rmsSlope = 0.0;
+  // sqrt(E[(laplacian h)^2]) (1/m). Light refracted into water of index n through this
+  // curvature alone focuses, to first order, at a path length n / ((n - 1) * rmsLaplacian).
+  double rmsLaplacian = 0.0;
+  // Longest wavelength the cascade holds (m): 2 pi / max(kMin, its tile's fundamental).
+  double longestWavelength = 0.0;
+};
+// One entry per cascade, summed over the same discrete modes the FFT holds.
+std::vector<CascadeWaveStats> cascadeWaveStats(const OceanDesc& desc);
+
 }  // namespace water
