@@ -54,9 +54,13 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   const glm::vec3 ior = dispersion ? surface.iorRgb : glm::vec3(surface.ior);
   b.eta = glm::vec4(1.0f / ior, settings.triplanarSharpness);
   b.lightScale = glm::vec4(frame.sun.irradiance * settings.intensity, 0.0f);
-  // up.y >= cos(critical angle) ~ 0.66 for any sun above the horizon: never a division by ~0.
-  b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / up.y, 0.0);
-  const double kx = up.x / up.y, kz = up.z / up.y;
+  // up.y >= cos(critical angle) ~ 0.66 for water and a sun above the horizon, but it tends to
+  // 0 as the IOR tends to 1 with a grazing sun (IOR 1 and a sun 1e-40 rad high gave 1e40: Inf
+  // in float, Inf in the added light). The floor keeps both quotients finite in float and changes
+  // nothing where up.y > 1e-6.
+  const double upY = std::max(up.y, 1e-6);
+  b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / upY, 0.0);
+  const double kx = up.x / upY, kz = up.z / upY;
   b.oblique = glm::vec4(static_cast<float>(kx), static_cast<float>(kz), settings.lodBias,
                         static_cast<float>(surface.cascadeCount));
 
