@@ -54,9 +54,13 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   const glm::vec3 ior = dispersion ? surface.iorRgb : glm::vec3(surface.ior);
   b.eta = glm::vec4(1.0f / ior, settings.triplanarSharpness);
   b.lightScale = glm::vec4(frame.sun.irradiance * settings.intensity, settings.minCascadeContrast);
-  // up.y >= cos(critical angle) ~ 0.66 for any sun above the horizon: never a division by ~0.
-  b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / up.y, 0.0);
-  const double kx = up.x / up.y, kz = up.z / up.y;
+  // up.y >= cos(critical angle) ~ 0.66 for water and a sun above the horizon, but it tends to
+  // 0 as the IOR tends to 1 with a grazing sun (IOR 1 and a sun 1e-40 rad high gave 1e40: Inf
+  // in float, Inf in the added light). The floor keeps both quotients finite in float and changes
+  // nothing where up.y > 1e-6.
+  const double upY = std::max(up.y, 1e-6);
+  b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / upY, 0.0);
+  const double kx = up.x / upY, kz = up.z / upY;
   b.oblique = glm::vec4(static_cast<float>(kx), static_cast<float>(kz), settings.lodBias,
                         static_cast<float>(surface.cascadeCount));
 
@@ -77,7 +81,7 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     const double laplacian = surface.rmsLaplacian[c];
     const double wavelength = surface.longestWavelength[c];
     b.cascadeSkip[c] = glm::vec4(
-        laplacian > 0.0 ? static_cast<float>((1.0 - 1.0 / double(surface.ior)) * laplacian / up.y)
+        laplacian > 0.0 ? static_cast<float>((1.0 - 1.0 / double(surface.ior)) * laplacian / upY)
                         : -1.0f,
         wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, 0.0f, 0.0f);
   }

@@ -1,0 +1,7 @@
+# God-ray CPU reference (sample_app/reference): the plugin's god rays against the dense integral.
+if(TARGET ocean_reference)
+  postfx_add_test(godray_reference_tests
+    SOURCES gl/godray_reference_test.cpp gl/postfx_scene.cpp
+    LIBS ocean_reference postfx gbuffer glm::glm PkgConfig::EPOXY
+    GL LABELS reference)
+endif()
