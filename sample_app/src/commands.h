@@ -8,5 +8,6 @@ namespace ocean {
 int runRender(const Options& options);
 int runView(const Options& options);
 int runBench(const Options& options);
+int runReport(const Options& options);
 
 }  // namespace ocean

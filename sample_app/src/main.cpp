@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
       return ocean::runView(options);
     case ocean::Command::Bench:
       return ocean::runBench(options);
+    case ocean::Command::Report:
+      return ocean::runReport(options);
   }
   return 2;
 }

@@ -36,6 +36,10 @@ usage:
   ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE]
       Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a
       floor pass that reads the same inputs and writes the same outputs with no math.
+  ocean_sample report [--out DIR] [--quick]
+      Error against run time of every method and quality setting: each pass timed (median,
+      with its floor) and compared with a CPU reference of the same frame. Writes
+      DIR/error_vs_time.csv, .md and .png (default DIR: report). --quick: a smoke run.
   ocean_sample --help
 
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
@@ -59,6 +63,9 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     options.command = Command::View;
   } else if (command == "bench") {
     options.command = Command::Bench;
+  } else if (command == "report") {
+    options.command = Command::Report;
+    options.out = "report";
   } else {
     error = "unknown command '" + std::string(command) + "' (try --help)";
     return false;
@@ -75,6 +82,10 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     }
     if (flag == "--no-god-rays") {
       options.godRays = false;
+      continue;
+    }
+    if (flag == "--quick") {
+      options.quick = true;
       continue;
     }
     if (i + 1 >= argc) {

@@ -6,7 +6,7 @@
 
 namespace ocean {
 
-enum class Command { Help, Render, View, Bench };
+enum class Command { Help, Render, View, Bench, Report };
 
 struct Options {
   Command command = Command::Help;
@@ -21,6 +21,7 @@ struct Options {
   bool godRays = true;   // the plugin's underwater god rays
   double tau = -1.0;     // caustics tightening; < 0 keeps the plugin's default
   int waterResolution = 256;
+  bool quick = false;  // report: a smoke run in a few minutes
 };
 
 inline constexpr int kMaxImageSide = 16384;

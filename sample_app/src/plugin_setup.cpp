@@ -17,6 +17,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return nullptr;
   }
+  setup->createDesc_ = desc;
   setup->caustics_.enabled = options.caustics;
   setup->godRays_.enabled = options.godRays;
   // The sample lights its water column with its own ambient in-scattering too; half the
@@ -69,6 +70,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.shadow.depthConvention = static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
   desc.caustics = caustics_;
   desc.godRays = godRays_;
+  lastFrame_ = desc;
   if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(context_);
     return false;

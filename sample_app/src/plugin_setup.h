@@ -26,12 +26,18 @@ class PluginSetup {
   postfx::GodRaySettings& godRays() { return godRays_; }
   const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
   std::string timingSummary() const;  // "caustics 0.41 ms (median)" ...
+  // What the last dispatch was given, for tools that re-dispatch the same frame with other
+  // settings (ocean_sample report). Its textures stay valid until the next render.
+  const postfx::CreateDesc& createDesc() const { return createDesc_; }
+  const postfx::FrameDesc& lastFrame() const { return lastFrame_; }
 
  private:
   PluginSetup() = default;
   bool dispatch(const HostFrame& frame, std::string& error);
 
   postfx::Context* context_ = nullptr;
+  postfx::CreateDesc createDesc_;
+  postfx::FrameDesc lastFrame_;
   postfx::CausticsSettings caustics_;
   postfx::GodRaySettings godRays_;
 };

@@ -1,0 +1,96 @@
+#include "godray_rows.h"
+
+#include <cstdio>
+
+#include <godray_reference.h>
+
+#include "error_metrics.h"
+
+namespace ocean::report {
+namespace {
+
+std::vector<double> flatten(const std::vector<glm::vec4>& image) {
+  std::vector<double> out;
+  out.reserve(image.size() * 3);
+  for (const glm::vec4& p : image)
+    for (int c = 0; c < 3; ++c) out.push_back(double(p[c]));
+  return out;
+}
+
+std::vector<double> flatten(const std::vector<glm::dvec3>& image) {
+  std::vector<double> out;
+  out.reserve(image.size() * 3);
+  for (const glm::dvec3& p : image)
+    for (int c = 0; c < 3; ++c) out.push_back(p[c]);
+  return out;
+}
+
+}  // namespace
+
+bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hostFrame,
+                    const ReportTarget& target, const GodRayReportSettings& settings,
+                    std::vector<Row>& rows, std::string& note, std::string& error) {
+  postfx::CreateDesc create = host;
+  create.features = postfx::Feature::GodRays;
+  if (postfx::hasFeature(host.features, postfx::Feature::ShadowMask))
+    create.features = create.features | postfx::Feature::ShadowMask;
+  postfx::FrameDesc frame = hostFrame;
+  frame.caustics.enabled = false;
+  frame.godRays.enabled = true;
+
+  std::fprintf(stderr, "report: god-ray reference, %d and %d samples per pixel\n",
+               settings.referenceSamples / 2, settings.referenceSamples);
+  const reference::GodRayInputs inputs = reference::captureGodRayInputs(create, frame);
+  reference::GodRayReferenceOptions options;
+  options.samples = settings.referenceSamples;
+  const std::vector<double> dense =
+      flatten(reference::renderGodRayReference(create, frame, inputs, options));
+  options.samples = settings.referenceSamples / 2;
+  const std::vector<double> half =
+      flatten(reference::renderGodRayReference(create, frame, inputs, options));
+  const double convergence = compareWithReference(half, dense).relativeRmse;
+  char text[256];
+  std::snprintf(text, sizeof(text),
+                "God rays: dense march with %d segments per pixel in double (the same model); "
+                "%d vs %d segments differ by %.2g relative RMSE.",
+                settings.referenceSamples, settings.referenceSamples / 2, settings.referenceSamples,
+                convergence);
+  note = text;
+
+  struct Variant {
+    const char* method;
+    bool halfResolution;
+    postfx::GodRaySampling sampling;
+  };
+  const Variant variants[] = {
+      {"god rays, world grid", false, postfx::GodRaySampling::WorldGrid},
+      {"god rays, world grid, half res", true, postfx::GodRaySampling::WorldGrid},
+      {"god rays, uniform along ray", false, postfx::GodRaySampling::UniformAlongRay},
+  };
+  const int counts[] = {4, 8, 16, 32, 64};
+  int done = 0;
+  for (const Variant& variant : variants) {
+    for (int samples : counts) {
+      std::fprintf(stderr, "report: %s, %d samples (%d/15)\n", variant.method, samples, ++done);
+      frame.godRays.sampleCount = samples;
+      frame.godRays.halfResolution = variant.halfResolution;
+      frame.godRays.sampling = variant.sampling;
+      PassRun run;
+      if (!runPass(create, frame, "god_rays", target, settings.timedFrames, run, error))
+        return false;
+      const ErrorStats stats = compareWithReference(flatten(run.image), dense);
+      Row row;
+      row.pass = "god_rays";
+      row.method = variant.method;
+      row.setting = std::to_string(samples) + " samples";
+      row.medianMs = run.medianMs;
+      row.floorMs = run.floorMs;
+      row.relativeRmse = stats.relativeRmse;
+      row.correlation = stats.correlation;
+      rows.push_back(row);
+    }
+  }
+  return true;
+}
+
+}  // namespace ocean::report

@@ -1,0 +1,66 @@
+#include "pass_runner.h"
+
+namespace ocean::report {
+namespace {
+
+constexpr int kWarmupFrames = 4;
+
+double medianOf(const postfx::FrameStats& stats, const char* name) {
+  for (int i = 0; i < stats.passCount; ++i)
+    if (std::string(stats.passes[i].name) == name) return stats.passes[i].medianMs;
+  return 0.0;
+}
+
+}  // namespace
+
+ReportTarget::ReportTarget(int width, int height) : width_(width), height_(height) {
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
+  glTextureStorage2D(texture_, 1, GL_RGBA32F, width, height);
+}
+
+ReportTarget::~ReportTarget() {
+  glDeleteTextures(1, &texture_);
+}
+
+bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* passName,
+             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error) {
+  create.features = create.features | postfx::Feature::BenchmarkFloor;
+  postfx::Context* context = nullptr;
+  if (postfx::create(create, context) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(nullptr);
+    return false;
+  }
+  frame.target = {target.texture(), GL_RGBA32F};
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  bool ok = true;
+  // The timers never stall, so a frame's numbers arrive a few dispatches later: run the ring's
+  // depth more, and finish each frame so the queries time this pass alone.
+  const int total = kWarmupFrames + timedFrames + postfx::kTimerRingDepth;
+  for (int i = 0; i < total && ok; ++i) {
+    ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
+    glFinish();
+  }
+  if (ok) {
+    out.medianMs = medianOf(postfx::stats(*context), passName);
+    out.floorMs = medianOf(postfx::stats(*context), "floor");
+    glClearTexImage(target.texture(), 0, GL_RGBA, GL_FLOAT, zero);
+    ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
+  }
+  if (!ok) {
+    error = std::string("postfx: ") + postfx::lastError(context);
+  } else {
+    const size_t pixels = size_t(target.width()) * size_t(target.height());
+    out.image.resize(pixels);
+    glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels * sizeof(glm::vec4)),
+                      out.image.data());
+    out.raw.clear();
+    if (const GLuint raw = postfx::rawCausticTexture(*context)) {
+      out.raw.resize(pixels);
+      glGetTextureImage(raw, 0, GL_RED, GL_FLOAT, GLsizei(pixels * sizeof(float)), out.raw.data());
+    }
+  }
+  postfx::destroy(context);
+  return ok;
+}
+
+}  // namespace ocean::report

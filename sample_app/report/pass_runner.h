@@ -1,0 +1,42 @@
+#pragma once
+// Runs one plugin configuration on a host frame the way the report needs it: a fresh context
+// (fresh timers), the frame dispatched repeatedly into a report-owned target for the median GPU
+// time of the pass and of the floor measured beside it, then once more into a cleared target
+// for the image the error is computed from.
+#include <epoxy/gl.h>
+
+#include <string>
+#include <vector>
+
+#include <postfx/postfx.h>
+#include <glm/glm.hpp>
+
+namespace ocean::report {
+
+struct PassRun {
+  double medianMs = 0.0, floorMs = 0.0;
+  std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order
+  std::vector<float> raw;        // raw caustic factor (with Feature::RawCausticOutput)
+};
+
+// A GL_RGBA32F target of the frame's size, owned by the report.
+class ReportTarget {
+ public:
+  ReportTarget(int width, int height);
+  ~ReportTarget();
+  ReportTarget(const ReportTarget&) = delete;
+  ReportTarget& operator=(const ReportTarget&) = delete;
+  GLuint texture() const { return texture_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  GLuint texture_ = 0;
+  int width_, height_;
+};
+
+// `frame`'s target is replaced by `target`; BenchmarkFloor is added to `create.features`.
+bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* passName,
+             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error);
+
+}  // namespace ocean::report

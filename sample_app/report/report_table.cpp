@@ -1,0 +1,87 @@
+#include "report_table.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace ocean::report {
+namespace {
+
+// `digits` significant digits (general format), or fixed with `decimals` when >= 0.
+std::string number(double value, int digits, int decimals = -1) {
+  if (value != value) return "";
+  char text[48];
+  if (decimals >= 0) {
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  } else {
+    std::snprintf(text, sizeof(text), "%.*g", digits, value);
+  }
+  return text;
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+// Written to a temporary name and renamed, so a failed write leaves no half file.
+bool writeText(const std::string& path, const std::string& text, std::string& error) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream file(temporary, std::ios::binary);
+    file << text;
+    if (!file) {
+      error = "cannot write '" + temporary + "'";
+      std::remove(temporary.c_str());
+      return false;
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    error = "cannot rename '" + temporary + "' to '" + path + "'";
+    std::remove(temporary.c_str());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool writeCsv(const std::string& path, const std::vector<Row>& rows, std::string& error) {
+  std::ostringstream out;
+  out << "pass,method,setting,median_ms,floor_ms,floor_ratio,relative_rmse,affine_rmse,"
+         "correlation,note\n";
+  for (const Row& row : rows) {
+    out << csvField(row.pass) << ',' << csvField(row.method) << ',' << csvField(row.setting) << ','
+        << number(row.medianMs, 6) << ',' << number(row.floorMs, 6) << ','
+        << number(row.floorRatio(), 4) << ',' << number(row.relativeRmse, 5) << ','
+        << number(row.affineRmse, 5) << ',' << number(row.correlation, 5) << ','
+        << csvField(row.note) << '\n';
+  }
+  return writeText(path, out.str(), error);
+}
+
+bool writeMarkdown(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
+                   const std::string& plotFile, std::string& error) {
+  std::ostringstream out;
+  out << "# Error against run time\n\n"
+      << "Device: " << info.device << ". Passes timed at " << info.width << "x" << info.height
+      << " (GPU timer queries, median after warm-up; floor = a pass that reads the same inputs "
+         "and writes the same outputs with no math, measured in the same run)"
+      << (info.quick ? "; quick run" : "") << ".\n\n"
+      << info.referenceNote << "\n\n";
+  if (!plotFile.empty()) out << "![error against run time](" << plotFile << ")\n\n";
+  out << "| pass | method | setting | median ms | floor ratio | relative RMSE | RMSE after "
+         "affine fit | correlation | note |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---|\n";
+  for (const Row& row : rows) {
+    out << "| " << row.pass << " | " << row.method << " | " << row.setting << " | "
+        << number(row.medianMs, 0, 3) << " | " << number(row.floorRatio(), 0, 2) << " | "
+        << number(row.relativeRmse, 0, 4) << " | " << number(row.affineRmse, 0, 4) << " | "
+        << number(row.correlation, 0, 3) << " | " << row.note << " |\n";
+  }
+  return writeText(path, out.str(), error);
+}
+
+}  // namespace ocean::report

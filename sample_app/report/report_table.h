@@ -1,0 +1,41 @@
+#pragma once
+// One row per (pass, method, setting) of the error-against-run-time report, and the two text
+// forms it is written in: CSV for tools, a markdown table for the README.
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace ocean::report {
+
+inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
+
+struct Row {
+  std::string pass;     // plugin pass timed: "caustics", "god_rays", ...
+  std::string method;   // series in the plot, e.g. "god rays, half resolution"
+  std::string setting;  // what varies along the series, e.g. "16 samples"
+  double medianMs = 0.0;
+  double floorMs = 0.0;  // floor pass measured in the same run (same inputs and outputs)
+  // Error against the CPU reference over the compared pixels:
+  double relativeRmse = kNotApplicable;  // sqrt(sum (x - r)^2 / sum r^2), absolute scale
+  double affineRmse = kNotApplicable;    // the same after the best fit a x + b (methods whose
+                                         // output has no absolute scale, e.g. seed-002's omega)
+  double correlation = kNotApplicable;   // Pearson correlation with the reference
+  std::string note;
+
+  double floorRatio() const { return floorMs > 0.0 ? medianMs / floorMs : kNotApplicable; }
+  // The error the plot shows: absolute where the method has a scale, else after the fit.
+  double plottedError() const { return relativeRmse == relativeRmse ? relativeRmse : affineRmse; }
+};
+
+struct ReportInfo {
+  std::string device;
+  int width = 0, height = 0;  // of the timed passes
+  bool quick = false;
+  std::string referenceNote;  // how the references were computed and how converged they are
+};
+
+bool writeCsv(const std::string& path, const std::vector<Row>& rows, std::string& error);
+bool writeMarkdown(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
+                   const std::string& plotFile, std::string& error);
+
+}  // namespace ocean::report

@@ -1,0 +1,76 @@
+// ocean_sample report: error against run time of every method and quality setting on the
+// default scene. Each pass is timed by the plugin's GPU timers (median after warm-up, with its
+// floor) and compared with a CPU reference of the same frame; writes DIR/error_vs_time.csv, a
+// markdown table and a log-log plot (PNG through OpenImageIO). Progress on stderr.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <error_plot.h>
+#include <godray_rows.h>
+#include <pass_runner.h>
+#include <report_table.h>
+
+#include "commands.h"
+#include "headless_session.h"
+
+namespace ocean {
+namespace {
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "ocean_sample: %s\n", message.c_str());
+  return 1;
+}
+
+}  // namespace
+
+int runReport(const Options& given) {
+  Options options = given;
+  // Small enough for the CPU references to converge in minutes; --quick for a smoke run.
+  options.width = given.quick ? 192 : 480;
+  options.height = given.quick ? 108 : 270;
+  std::error_code fsError;
+  std::filesystem::create_directories(options.out, fsError);
+  if (fsError) return fail("cannot create '" + options.out + "': " + fsError.message());
+
+  std::string error;
+  HeadlessSession session;
+  if (!openHeadlessSession(options, /*debug=*/false, /*benchmarkFloor=*/false, session, error))
+    return fail(error);
+  std::fprintf(stderr, "report: rendering the %s preset at %dx%d\n", options.preset.c_str(),
+               options.width, options.height);
+  FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
+  if (!session.renderer->render(input, error)) return fail(error);
+  glFinish();
+
+  const postfx::CreateDesc& host = session.plugin->createDesc();
+  const postfx::FrameDesc& frame = session.plugin->lastFrame();
+  report::ReportTarget target(options.width, options.height);
+  std::vector<report::Row> rows;
+  report::ReportInfo info;
+  info.device = session.context->renderer();
+  info.width = options.width;
+  info.height = options.height;
+  info.quick = given.quick;
+
+  report::GodRayReportSettings godRays;
+  godRays.referenceSamples = given.quick ? 1024 : 2048;
+  godRays.timedFrames = given.quick ? 6 : 16;
+  std::string godRayNote;
+  if (!report::measureGodRays(host, frame, target, godRays, rows, godRayNote, error))
+    return fail(error);
+  info.referenceNote = godRayNote;
+
+  const std::string dir = options.out + "/";
+  if (!report::writeCsv(dir + "error_vs_time.csv", rows, error) ||
+      !report::writeErrorPlot(dir + "error_vs_time.png", "error against GPU time, " + info.device,
+                              rows, error) ||
+      !report::writeMarkdown(dir + "error_vs_time.md", info, rows, "error_vs_time.png", error))
+    return fail(error);
+  std::fprintf(stderr, "report: wrote %serror_vs_time.{csv,md,png} (%zu rows)\n", dir.c_str(),
+               rows.size());
+  return 0;
+}
+
+}  // namespace ocean
