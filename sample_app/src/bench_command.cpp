@@ -95,6 +95,22 @@ int runBench(const Options& options) {
           {stats.passes[i].name, stats.passes[i].medianMs, floorMs, stats.passes[i].skipped});
     }
   }
+  // Caustics sampling every cascade everywhere (no skipping): what the skipping saves.
+  if (options.caustics) {
+    const int variantFrames = std::max(1, std::min(options.frames, 20));
+    std::fprintf(stderr, "bench: caustics_all_cascades, %d frames\n", variantFrames);
+    auto variant = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
+    if (!variant) return fail(error);
+    variant->caustics().minCascadeContrast = 0.0f;
+    variant->godRays().enabled = false;
+    if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
+      return fail(error);
+    }
+    const postfx::FrameStats& stats = variant->stats();
+    rows.push_back({"caustics_all_cascades", passMs(stats, "caustics"), passMs(stats, "floor"),
+                    passMs(stats, "caustics") == 0.0});
+    session.plugin = std::move(variant);
+  }
   // God-ray variants: same scene and frames, one fresh context each (a context's timers keep a
   // median window, so reusing one would mix settings).
   if (options.godRays) {

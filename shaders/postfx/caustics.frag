@@ -12,17 +12,24 @@ const float kMinPlaneWeight = 0.02;
 
 // Tri-planar lookup: the plane facing up projects the receiver ALONG THE REFRACTED LIGHT onto
 // the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
-// Blended by the G-buffer normal.
+// Blended by the G-buffer normal. The projections with weight are listed first and looped
+// over (see cascadeRange for why a loop rather than branches): a seabed pixel pays for one.
 vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow) {
   vec3 w = pow(abs(n), vec3(u.eta.w));
   w /= max(w.x + w.y + w.z, 1e-20);
+  int planes[3] = int[3](1, 0, 2);
+  int count = 0;
+  if (w.y > kMinPlaneWeight) planes[count++] = 1;
+  if (w.x > kMinPlaneWeight) planes[count++] = 0;
+  if (w.z > kMinPlaneWeight) planes[count++] = 2;
+  ivec2 range = cascadeRange(depthBelow, logFootprint);
   vec2 slopes = vec2(0.0);
-  if (w.y > kMinPlaneWeight) {
-    vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
-    slopes += w.y * cascadeSlopes(along, 1, logFootprint, depthBelow);
+  for (int i = 0; i < count; ++i) {
+    int plane = planes[i];
+    vec2 coord = plane == 1 ? vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y)
+                            : (plane == 0 ? p.zy : p.xy);
+    slopes += w[plane] * cascadeSlopes(coord, plane, logFootprint, depthBelow, range);
   }
-  if (w.x > kMinPlaneWeight) slopes += w.x * cascadeSlopes(p.zy, 0, logFootprint, depthBelow);
-  if (w.z > kMinPlaneWeight) slopes += w.z * cascadeSlopes(p.xy, 2, logFootprint, depthBelow);
   return slopes;
 }
 

@@ -13,21 +13,33 @@ float cascadeWeight(int c, float depthBelow, float logFootprint) {
   return smoothstep(cut, 2.0 * cut, depthBelow * skip.x);
 }
 
-// Sum of the cascades' slopes for one projection, each cascade at its own mip level so that
-// small tiles blur away with distance and stop showing their repetition.
-vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint, float depthBelow) {
-  vec2 slopes = vec2(0.0);
+// First and last cascade with a weight here, as a loop range. A range rather than a skip inside
+// the loop because SIMD rasterisers (llvmpipe) run both sides of a branch for a group of pixels
+// but leave a loop as soon as every pixel of the group is done: only a shorter loop saves the
+// fetches there. On GPUs either form branches per warp.
+ivec2 cascadeRange(float depthBelow, float logFootprint) {
+  ivec2 range = ivec2(POSTFX_MAX_CASCADES, -1);
   int cascades = int(u.oblique.w);
   for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
     if (c >= cascades) break;
-    float weight = cascadeWeight(c, depthBelow, logFootprint);
-    if (!(weight > 0.0)) continue;
+    if (cascadeWeight(c, depthBelow, logFootprint) > 0.0) range = ivec2(min(range.x, c), c);
+  }
+  return range;
+}
+
+// Sum of the cascades' slopes in `range` for one projection, each cascade at its own mip level
+// so that small tiles blur away with distance and stop showing their repetition.
+vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint, float depthBelow,
+                   ivec2 range) {
+  vec2 slopes = vec2(0.0);
+  for (int c = range.x; c <= range.y; ++c) {
     vec4 axes = u.cascadeAxes[c];
     // The camera's share of the coordinate was reduced modulo the tile in double on the CPU.
     vec2 offset = plane == 1 ? u.cascadeOblique[c].xy : (plane == 0 ? axes.zy : axes.xy);
     vec2 uv = offset + coordMetres * axes.w;
     float lod = logFootprint + u.cascadeOblique[c].z;
-    slopes += weight * textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
+    slopes += cascadeWeight(c, depthBelow, logFootprint) *
+              textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
   }
   return slopes;
 }
