@@ -59,6 +59,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
 
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
+  const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
   const shared::CausticsBlock block = detail::buildCausticsBlock(
       context.desc, frame, textures.width, textures.height, textures.water);
@@ -66,6 +67,15 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   detail::GlStateGuard guard;
   DebugGroup group("postfx");
   context.timers.beginFrame();
+  if (context.irradiancePass >= 0) {
+    const double clamped = context.irradiance.pollClampCounts();
+    if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
+    if (!physical) {
+      context.timers.markSkipped(context.irradiancePass);
+      if (frame.caustics.model == CausticsModel::Seed002)
+        context.timers.setClampedFluxFraction(0.0);
+    }
+  }
   if (!caustics) {
     context.timers.markSkipped(Context::kCausticsPass);
     context.caustics.clearRaw(textures.width, textures.height);
@@ -93,7 +103,18 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
       return r;
     }
   }
-  context.caustics.bindState(frame, textures);
+  const GLuint irradiance = physical ? context.irradiance.texture() : 0;
+  context.caustics.bindState(frame, textures, irradiance);
+  if (physical) {
+    // Before the floor and the caustics: both sample its result. Draws into its own
+    // framebuffer, then the caustics pass's state is set again.
+    DebugGroup irradianceGroup("postfx.caustics_irradiance");
+    if (floor) glFinish();
+    context.timers.begin(context.irradiancePass);
+    context.irradiance.draw(frame, textures);
+    context.timers.end(context.irradiancePass);
+    context.caustics.bindState(frame, textures, context.irradiance.texture());
+  }
   // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass. Tile-based
   // and software rasterizers (llvmpipe) otherwise run both draws interleaved per tile and no
   // query pair can separate them. This is the one place the plugin waits, and normal frames
@@ -170,12 +191,18 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     if (r != Result::Ok) return r;
     const bool floor = hasFeature(desc.features, Feature::BenchmarkFloor);
     int passCount = floor ? 2 : 1;
-    const char* names[kMaxPasses] = {"caustics", "floor", "", ""};
+    const char* names[kMaxPasses] = {"caustics", "floor", "", "", ""};
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
       context->godRaysPass = passCount;
       names[passCount++] = "god_rays";
+    }
+    if (hasFeature(desc.features, Feature::PhysicalCaustics)) {
+      r = context->irradiance.init(detail::shaderDefines(desc), createError);
+      if (r != Result::Ok) return r;
+      context->irradiancePass = passCount;
+      names[passCount++] = "caustics_irradiance";
     }
     context->timers.init(passCount, names);
     out = context.release();
@@ -222,6 +249,20 @@ const FrameStats& stats(const Context& context) noexcept {
 
 GlName rawCausticTexture(const Context& context) noexcept {
   return context.caustics.rawTexture();
+}
+
+CausticIrradianceInfo causticIrradiance(const Context& context) noexcept {
+  CausticIrradianceInfo info;
+  const detail::IrradianceLayout& l = context.irradiance.layout();
+  info.texture = context.irradiance.texture();
+  if (info.texture == 0) return info;
+  info.resolution = l.resolution;
+  info.layers = l.layers;
+  info.windowOrigin = l.windowOrigin;
+  info.windowSize = l.windowSize;
+  for (int k = 0; k < l.layers && k < detail::kMaxIrradianceLayers; ++k)
+    info.layerDepth[k] = static_cast<float>(l.depth[k]);
+  return info;
 }
 
 }  // namespace postfx

@@ -16,6 +16,7 @@ std::string shaderDefines(const CreateDesc& desc) {
   d += std::string("#define POSTFX_DISPERSION ") + flag(Feature::Dispersion) + "\n";
   d += std::string("#define POSTFX_SHADOW_MASK ") + flag(Feature::ShadowMask) + "\n";
   d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(Feature::RawCausticOutput) + "\n";
+  d += std::string("#define POSTFX_PHYSICAL ") + flag(Feature::PhysicalCaustics) + "\n";
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
   return d;
@@ -101,6 +102,9 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
     shadowForwardSampler_ = makeShadowSampler(GL_LEQUAL, "postfx.sampler.shadow_forward");
     shadowReverseSampler_ = makeShadowSampler(GL_GEQUAL, "postfx.sampler.shadow_reverse_z");
   }
+  if (hasFeature(desc.features, Feature::PhysicalCaustics))
+    irradianceSampler_ =
+        makeSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "postfx.sampler.irradiance");
   return Result::Ok;
 }
 
@@ -119,6 +123,7 @@ void CausticsPass::release() {
   deleteSampler(waterLinearSampler_);
   deleteSampler(shadowForwardSampler_);
   deleteSampler(shadowReverseSampler_);
+  deleteSampler(irradianceSampler_);
 }
 
 void CausticsPass::ensureRaw(int width, int height) {
@@ -157,7 +162,8 @@ Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& te
   return Result::Ok;
 }
 
-void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& textures) {
+void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& textures,
+                             GLuint irradiance) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(textures.width),
                      static_cast<float>(textures.height));
@@ -190,6 +196,10 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
     glBindTextureUnit(kShadowUnit, frame.shadow.depth.texture);
     glBindSampler(kShadowUnit, frame.shadow.depthConvention == 0 ? shadowReverseSampler_
                                                                  : shadowForwardSampler_);
+  }
+  if (irradiance != 0) {
+    glBindTextureUnit(kIrradianceUnit, irradiance);
+    glBindSampler(kIrradianceUnit, irradianceSampler_);
   }
 }
 

@@ -22,7 +22,14 @@ std::string shaderDefines(const CreateDesc& desc);
 
 class CausticsPass {
  public:
-  enum Unit : GLuint { kDepthUnit = 0, kNormalUnit, kAlbedoUnit, kWaterUnit, kShadowUnit };
+  enum Unit : GLuint {
+    kDepthUnit = 0,
+    kNormalUnit,
+    kAlbedoUnit,
+    kWaterUnit,
+    kShadowUnit,
+    kIrradianceUnit
+  };
 
   CausticsPass() = default;
   CausticsPass(const CausticsPass&) = delete;
@@ -37,8 +44,9 @@ class CausticsPass {
   // message when the framebuffer is incomplete.
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                  const shared::CausticsBlock& block, std::string& error);
-  // Sets the pipeline state both passes use; call under a GlStateGuard.
-  void bindState(const FrameDesc& frame, const ValidatedTextures& textures);
+  // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
+  // WavefrontAreaRatio model's texture (0 when not in use).
+  void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance);
   void drawFloor();
   void drawCaustics();
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
@@ -57,7 +65,7 @@ class CausticsPass {
   // software rasterizer start a new scene, so its timer queries separate the two passes.
   GLuint framebuffer_ = 0, floorFramebuffer_ = 0, vertexArray_ = 0, uniformBuffer_ = 0;
   GLuint pointSampler_ = 0, waterMipSampler_ = 0, waterLinearSampler_ = 0;
-  GLuint shadowForwardSampler_ = 0, shadowReverseSampler_ = 0;
+  GLuint shadowForwardSampler_ = 0, shadowReverseSampler_ = 0, irradianceSampler_ = 0;
   GLuint rawTexture_ = 0;
   int rawWidth_ = 0, rawHeight_ = 0;
 };

@@ -6,6 +6,8 @@
 #include <gbuffer/codec.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "irradiance_layout.h"
+
 namespace postfx::detail {
 
 double tileFraction(double metres, double period) {
@@ -25,6 +27,11 @@ glm::dvec3 incidencePlaneNormal(const glm::dvec3& towardSun) {
 
 glm::dmat3 viewToWorldRotation(const glm::mat4& view) {
   return glm::transpose(glm::dmat3(glm::mat3(view)));
+}
+
+bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame) {
+  return hasFeature(create.features, Feature::PhysicalCaustics) &&
+         frame.caustics.model == CausticsModel::WavefrontAreaRatio && frame.sun.direction.y > 0.0;
 }
 
 shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDesc& frame,
@@ -94,6 +101,15 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   // Reverse-Z stores larger depths nearer the light, so "toward the light" is +bias there.
   const float bias = frame.shadow.depthConvention == 0 ? frame.shadow.bias : -frame.shadow.bias;
   b.shadowParams = glm::vec4(bias, frame.shadow.depthConvention == 2 ? 1.0f : 0.0f, 0.0f, 0.0f);
+  if (physicalCausticsActive(create, frame)) {
+    const IrradianceLayout l = irradianceLayout(frame);
+    b.irradianceWindow =
+        glm::vec4(static_cast<float>(l.windowOrigin.x - camera.position.x),
+                  static_cast<float>(l.windowOrigin.y - camera.position.z),
+                  static_cast<float>(1.0 / l.windowSize), static_cast<float>(l.layers));
+    for (int k = 0; k < l.layers; ++k)
+      b.irradianceDepths[k / 4][k % 4] = static_cast<float>(l.depth[k]);
+  }
   return b;
 }
 

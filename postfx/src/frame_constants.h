@@ -16,6 +16,9 @@ struct WaterTextureInfo {
   int height = 1;
 };
 
+// The frame uses the WavefrontAreaRatio model (and the context can: Feature::PhysicalCaustics).
+bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame);
+
 shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDesc& frame,
                                          int width, int height, const WaterTextureInfo& water);
 

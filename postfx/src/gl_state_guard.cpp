@@ -27,6 +27,7 @@ GlStateGuard::GlStateGuard() {
   }
   cullFace_ = glIsEnabled(GL_CULL_FACE);
   rasterizerDiscard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
+  programPointSize_ = glIsEnabled(GL_PROGRAM_POINT_SIZE);
   glGetIntegerv(GL_POLYGON_MODE, polygonMode_);
   GLint maxClip = 0;
   glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
@@ -41,6 +42,7 @@ GlStateGuard::GlStateGuard() {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &units_[unit].texture2d);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &units_[unit].texture2dArray);
+    glGetIntegerv(GL_TEXTURE_BINDING_BUFFER, &units_[unit].textureBuffer);
     glGetIntegerv(GL_SAMPLER_BINDING, &units_[unit].sampler);
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));
@@ -49,6 +51,8 @@ GlStateGuard::GlStateGuard() {
     uniformIndexed_[i] = glkit::IndexedBufferBinding::save(GL_UNIFORM_BUFFER, i);
   }
   glGetIntegerv(GL_QUERY_BUFFER_BINDING, &queryBuffer_);
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageBuffer_);
+  storageIndexed_ = glkit::IndexedBufferBinding::save(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
 namespace {
@@ -84,6 +88,7 @@ GlStateGuard::~GlStateGuard() {
   }
   setEnabled(GL_CULL_FACE, cullFace_);
   setEnabled(GL_RASTERIZER_DISCARD, rasterizerDiscard_);
+  setEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
   // Core profiles keep one mode for both faces.
   glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygonMode_[0]));
   for (int i = 0; i < clipDistanceCount_; ++i)
@@ -94,6 +99,7 @@ GlStateGuard::~GlStateGuard() {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(units_[unit].texture2d));
     glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(units_[unit].texture2dArray));
+    glBindTexture(GL_TEXTURE_BUFFER, static_cast<GLuint>(units_[unit].textureBuffer));
     glBindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(units_[unit].sampler));
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));
@@ -101,6 +107,8 @@ GlStateGuard::~GlStateGuard() {
   for (const glkit::IndexedBufferBinding& binding : uniformIndexed_) binding.restore();
   glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniformBuffer_));
   glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(queryBuffer_));
+  storageIndexed_.restore();
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBuffer_));
 }
 
 }  // namespace postfx::detail

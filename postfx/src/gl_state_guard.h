@@ -12,8 +12,9 @@ namespace postfx::detail {
 
 class GlStateGuard {
  public:
-  // Texture units whose 2D / 2D-array bindings and sampler the passes rebind: [0, unitCount).
-  static constexpr int kUnitCount = 6;
+  // Texture units whose 2D / 2D-array / buffer bindings and sampler the passes rebind:
+  // [0, unitCount).
+  static constexpr int kUnitCount = 7;
   // Draw buffers whose blend / colour-mask state the passes set: [0, kDrawBufferCount).
   static constexpr int kDrawBufferCount = 2;
   static constexpr int kMaxClipDistances = 8;
@@ -30,14 +31,14 @@ class GlStateGuard {
     GLboolean colorMask[4];
   };
   struct UnitState {
-    GLint texture2d, texture2dArray, sampler;
+    GLint texture2d, texture2dArray, textureBuffer, sampler;
   };
 
   GLint drawFramebuffer_ = 0, readFramebuffer_ = 0;
   GLfloat viewport_[4] = {};
   GLboolean scissor0_ = GL_FALSE;
   std::array<BlendState, kDrawBufferCount> blend_{};
-  GLboolean cullFace_ = GL_FALSE, rasterizerDiscard_ = GL_FALSE;
+  GLboolean cullFace_ = GL_FALSE, rasterizerDiscard_ = GL_FALSE, programPointSize_ = GL_FALSE;
   GLint polygonMode_[2] = {GL_FILL, GL_FILL};
   int clipDistanceCount_ = 0;
   std::array<GLboolean, kMaxClipDistances> clipDistance_{};
@@ -48,6 +49,9 @@ class GlStateGuard {
   GLint uniformBuffer_ = 0;
   std::array<glkit::IndexedBufferBinding, kUniformBindings> uniformIndexed_{};
   GLint queryBuffer_ = 0;
+  // The irradiance pass's clamp count (Feature::PhysicalCaustics): SSBO binding 0.
+  GLint storageBuffer_ = 0;
+  glkit::IndexedBufferBinding storageIndexed_{};
 };
 
 }  // namespace postfx::detail

@@ -35,6 +35,8 @@ class GpuTimers {
   void endFrame();
 
   const FrameStats& stats() const { return stats_; }
+  // Not a timing, but read back on the same never-stall terms: see FrameStats.
+  void setClampedFluxFraction(double fraction) { stats_.clampedFluxFraction = fraction; }
 
  private:
   enum class SlotState : std::uint8_t { Empty, IssuedTimestamps, IssuedElapsed, Skipped };

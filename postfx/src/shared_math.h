@@ -9,4 +9,5 @@ namespace postfx {
 #include "shared/postfx_caustics_block.h"
 #include "shared/postfx_godrays.h"
 #include "shared/postfx_godrays_block.h"
+#include "shared/postfx_irradiance.h"
 }  // namespace postfx

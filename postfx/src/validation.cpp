@@ -166,7 +166,7 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
     error = "CreateDesc.features: ObjectCaustics is reserved for a later version";
     return Result::NotImplemented;
   }
-  if (static_cast<std::uint32_t>(desc.features) >= (1u << 7)) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 8)) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }
@@ -257,6 +257,21 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
   if (!inRange(s.minCascadeContrast, 0.0, 1.0))
     return fail("caustics.minCascadeContrast must be in [0, 1]");
+  if (s.model != CausticsModel::Seed002 && s.model != CausticsModel::WavefrontAreaRatio)
+    return fail("caustics.model is not a CausticsModel");
+  if (s.model == CausticsModel::WavefrontAreaRatio &&
+      !hasFeature(create.features, Feature::PhysicalCaustics))
+    return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");
+  if (s.gridResolution < 64 || s.gridResolution > 1024)
+    return fail("caustics.gridResolution must be in [64, 1024], got " +
+                std::to_string(s.gridResolution));
+  if (!inRange(s.windowSize, 1.0, 1e4)) return fail("caustics.windowSize must be in [1, 1e4] m");
+  if (s.depthLayers < 1 || s.depthLayers > 8)
+    return fail("caustics.depthLayers must be in [1, 8], got " + std::to_string(s.depthLayers));
+  if (!inRange(s.maxReceiverDepth, 0.01, 1e4))
+    return fail("caustics.maxReceiverDepth must be in [0.01, 1e4] m");
+  if (!inRange(s.maxIrradiance, 1.0, 1e4))
+    return fail("caustics.maxIrradiance must be in [1, 1e4]");
   if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }

@@ -4,6 +4,9 @@
 // God rays: after the default run, one short run per sample count (4..64) at full and at half
 // resolution, each with a fresh plugin context (fresh timers) and its own floor measured in the
 // same run, reported as rows god_rays_<n> and god_rays_half_<n>.
+// Physical caustics (seed 004): one short run per grid resolution (64..1024), rows
+// caustics_irradiance_<n> (the extra pass) and caustics_physical_<n> (the full-screen caustics
+// pass sampling its result), with the clamp's bias on stderr.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -132,6 +135,31 @@ int runBench(const Options& options) {
                         passMs(stats, "god_rays") == 0.0});
         session.plugin = std::move(variant);  // the last created context is the renderer's pass
       }
+    }
+  }
+
+  if (options.caustics) {
+    const int variantFrames = std::max(1, std::min(options.frames, 20));
+    for (int grid : {64, 128, 256, 512, 1024}) {
+      std::fprintf(stderr, "bench: caustics_physical_%d, %d frames\n", grid, variantFrames);
+      Options physical = options;
+      physical.physicalCaustics = true;
+      physical.causticsGrid = grid;
+      auto variant = PluginSetup::create(renderer, physical, /*benchmarkFloor=*/true, error);
+      if (!variant) return fail(error);
+      if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
+        return fail(error);
+      }
+      const postfx::FrameStats& stats = variant->stats();
+      const std::string n = std::to_string(grid);
+      const double irradianceMs = passMs(stats, "caustics_irradiance");
+      rows.push_back(
+          {"caustics_irradiance_" + n, irradianceMs, passMs(stats, "floor"), irradianceMs == 0.0});
+      rows.push_back({"caustics_physical_" + n, passMs(stats, "caustics"), passMs(stats, "floor"),
+                      passMs(stats, "caustics") == 0.0});
+      std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
+                   100.0 * stats.clampedFluxFraction);
+      session.plugin = std::move(variant);
     }
   }
 

@@ -28,6 +28,7 @@ std::string usage() {
 usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
                       [--out FILE] [--no-caustics] [--no-god-rays] [--tau T] [--water-resolution N]
+                      [--caustics-model seed002|physical] [--caustics-grid N]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
       or .exr (linear radiance). Default output: ocean.png.
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
@@ -36,11 +37,16 @@ usage:
   ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE]
       Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a
       floor pass that reads the same inputs and writes the same outputs with no math.
+      Also times the physical caustics model at grid 64..1024 (rows caustics_physical_<n>).
   ocean_sample report [--out DIR] [--quick]
       Error against run time of every method and quality setting: each pass timed (median,
       with its floor) and compared with a CPU reference of the same frame. Writes
       DIR/error_vs_time.csv, .md and .png (default DIR: report). --quick: a smoke run.
+
   ocean_sample --help
+
+caustics models: seed002 (default; exp(-tau a^2), one lookup per pixel) or physical (true
+irradiance from the wavefront area ratio, seed 004; --caustics-grid 64..1024, default 256).
 
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
 the sun), above (above the water looking down), waterline (camera 3 cm above the water).
@@ -115,6 +121,19 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     } else if (flag == "--tau") {
       if (!parseDouble(value, options.tau) || !(options.tau >= 0.0 && options.tau <= 1e6)) {
         error = "--tau must be a number in [0, 1e6], got '" + std::string(value) + "'";
+        return false;
+      }
+    } else if (flag == "--caustics-model") {
+      if (value != "seed002" && value != "physical") {
+        error = "--caustics-model must be seed002 or physical, got '" + std::string(value) + "'";
+        return false;
+      }
+      options.physicalCaustics = value == "physical";
+    } else if (flag == "--caustics-grid") {
+      if (!parseInt(value, options.causticsGrid) || options.causticsGrid < 64 ||
+          options.causticsGrid > 1024) {
+        error =
+            "--caustics-grid must be an integer in [64, 1024], got '" + std::string(value) + "'";
         return false;
       }
     } else if (flag == "--model") {

@@ -20,6 +20,10 @@ struct Options {
   bool caustics = true;  // the plugin's seabed caustics
   bool godRays = true;   // the plugin's underwater god rays
   double tau = -1.0;     // caustics tightening; < 0 keeps the plugin's default
+  // Caustics model: false = seed 002 (the plugin's default), true = the wavefront area-ratio
+  // irradiance (seed 004, Feature::PhysicalCaustics), with this grid resolution.
+  bool physicalCaustics = false;
+  int causticsGrid = 256;
   int waterResolution = 256;
   bool quick = false;  // report: a smoke run in a few minutes
 };

@@ -11,6 +11,8 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   desc.features = postfx::Feature::Caustics | postfx::Feature::ShadowMask |
                   postfx::Feature::Dispersion | postfx::Feature::GodRays;
   if (benchmarkFloor) desc.features = desc.features | postfx::Feature::BenchmarkFloor;
+  // The physical model's GL resources exist only when it is asked for.
+  if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::PhysicalCaustics;
   desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
   desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
@@ -24,6 +26,10 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   // plugin's default keeps the shafts from washing out Snell's window.
   setup->godRays_.intensity = 0.7f;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
+  if (options.physicalCaustics) {
+    setup->caustics_.model = postfx::CausticsModel::WavefrontAreaRatio;
+    setup->caustics_.gridResolution = options.causticsGrid;
+  }
   PluginSetup* self = setup.get();
   renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
     return self->dispatch(frame, message);

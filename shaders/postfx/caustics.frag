@@ -1,11 +1,47 @@
 #version 450 core
 // Seabed caustics (seed 002, section 4) added into the host's HDR target. Compile-time
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
-// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D.
+// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL.
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
 #include "postfx/water_sampling.glsl"
+#if POSTFX_PHYSICAL
+#include "shared/postfx_irradiance.h"
+
+layout(binding = 5) uniform sampler2DArray causticIrradiance;
+
+// Width of the window's outer band over which the physical irradiance fades to seed 002
+// (irradiance_layout.h kIrradianceFadeBand).
+const float kIrradianceFadeBand = 0.125;
+
+// Layer k's irradiance at receiver p (camera-relative) `depthBelow` under the level, each
+// layer looked up where ITS ray through the same surface point lands: the pattern is moved
+// along the flat-water drift by the depth difference, so that the interpolation mixes the
+// same caustic features at two stages of focus rather than two unrelated patterns.
+float layerIrradiance(vec3 p, float depthBelow, float layer) {
+  float layerDepth = packedLayerDepth(u.irradianceDepths[0], u.irradianceDepths[1], int(layer));
+  vec2 xz = layerSamplePoint(p.xz, depthBelow, layerDepth, u.oblique.xy);
+  vec2 uv = (xz - u.irradianceWindow.xy) * u.irradianceWindow.z;
+  return textureLod(causticIrradiance, vec3(uv, layer), 0.0).r;
+}
+
+// Seed-004 irradiance at camera-relative p, depthBelow under the level, interpolated between
+// the depth layers around it; `weight` is how much of it to use (0 outside the window).
+float physicalIrradiance(vec3 p, float depthBelow, out float weight) {
+  weight = 0.0;
+  int layers = int(u.irradianceWindow.w);
+  if (layers <= 0) return 1.0;
+  vec2 uv = (p.xz - u.irradianceWindow.xy) * u.irradianceWindow.z;
+  float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y));
+  weight = smoothstep(0.0, kIrradianceFadeBand, edge);
+  if (!(weight > 0.0)) return 1.0;
+  vec3 blend = layerBlend(depthBelow, u.irradianceDepths[0], u.irradianceDepths[1], layers);
+  float lower = blend.x < 0.0 ? 1.0 : layerIrradiance(p, depthBelow, blend.x);
+  float upper = layerIrradiance(p, depthBelow, blend.y);
+  return mix(lower, upper, blend.z);
+}
+#endif
 
 // Tri-planar weights below this skip their projection's fetches entirely.
 const float kMinPlaneWeight = 0.02;
@@ -14,7 +50,7 @@ const float kMinPlaneWeight = 0.02;
 // the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
 // Blended by the G-buffer normal. The projections with weight are listed first and looped
 // over (see cascadeRange for why a loop rather than branches): a seabed pixel pays for one.
-vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow) {
+vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow, ivec2 range) {
   vec3 w = pow(abs(n), vec3(u.eta.w));
   w /= max(w.x + w.y + w.z, 1e-20);
   int planes[3] = int[3](1, 0, 2);
@@ -22,7 +58,6 @@ vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow) {
   if (w.y > kMinPlaneWeight) planes[count++] = 1;
   if (w.x > kMinPlaneWeight) planes[count++] = 0;
   if (w.z > kMinPlaneWeight) planes[count++] = 2;
-  ivec2 range = cascadeRange(depthBelow, logFootprint);
   vec2 slopes = vec2(0.0);
   for (int i = 0; i < count; ++i) {
     int plane = planes[i];
@@ -67,9 +102,17 @@ void main() {
   float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
   float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
 
-  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, depthBelow));
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;
+  float physicalWeight = 0.0;
+#if POSTFX_PHYSICAL
+  // One irradiance for all channels: the mesh is refracted with the mean IOR.
+  vec3 physical = vec3(physicalIrradiance(p, depthBelow, physicalWeight));
+#endif
+  // Inside the physical window the seed-002 lookups are not needed: an empty cascade range
+  // skips their fetches (a branch around them would not, on llvmpipe; see cascadeRange).
+  ivec2 range = physicalWeight < 1.0 ? cascadeRange(depthBelow, logFootprint) : ivec2(1, 0);
+  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, depthBelow, range));
 #if POSTFX_DISPERSION
   vec3 omega = vec3(
       causticFactor(u.towardSun.xyz, waterNormal, u.eta.r, u.reference.xyz, tau, reflectionWeight),
@@ -79,6 +122,9 @@ void main() {
 #else
   vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz, tau,
                                   reflectionWeight));
+#endif
+#if POSTFX_PHYSICAL
+  omega = mix(omega, physical, physicalWeight);
 #endif
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);

@@ -31,6 +31,8 @@ enum class Feature : std::uint32_t {
   ShadowMask = 1u << 4,        // mask caustics by the host's sun shadow map (FrameDesc::shadow)
   RawCausticOutput = 1u << 5,  // also write the raw caustic factor to rawCausticTexture()
   BenchmarkFloor = 1u << 6,    // also run and time the "floor" pass (benchmarks only: see below)
+  PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio (seed 004); its pass
+                               // is timed as "caustics_irradiance"
 };
 constexpr Feature operator|(Feature a, Feature b) {
   return static_cast<Feature>(static_cast<std::uint32_t>(a) | static_cast<std::uint32_t>(b));
@@ -83,9 +85,24 @@ const char* lastError(const Context* context) noexcept;
 const FrameStats& stats(const Context& context) noexcept;
 
 // With Feature::RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last
-// dispatched target holding the caustic factor (mean of R,G,B) in [0, 1] before albedo,
+// dispatched target holding the caustic factor (mean of R,G,B) before albedo,
 // irradiance, intensity and absorption; 0 where no caustics (sky, above water, back-facing,
-// shadowed, pass skipped). Returns 0 without the feature or before the first dispatch.
+// shadowed, pass skipped). The factor is in [0, 1] in the Seed002 model and in
+// [0, maxIrradiance] in the WavefrontAreaRatio model. Returns 0 without the feature or before
+// the first dispatch.
 GlName rawCausticTexture(const Context& context) noexcept;
+
+// The WavefrontAreaRatio model's irradiance of the most recent frame that computed it.
+struct CausticIrradianceInfo {
+  // Plugin-owned GL_TEXTURE_2D_ARRAY, GL_R32F, resolution^2 texels x layers: irradiance on a
+  // horizontal receiver relative to flat water (flat water gives 1), clamped, no absorption.
+  // 0 without Feature::PhysicalCaustics or before the first frame in that model.
+  GlName texture = 0;
+  int resolution = 0, layers = 0;
+  glm::dvec2 windowOrigin{0.0};  // world xz of the corner of texel (0, 0) (m)
+  double windowSize = 0.0;       // m; texel (i, j) covers origin + [i, i+1) * size / resolution
+  float layerDepth[8] = {};      // m below the water level, per layer
+};
+CausticIrradianceInfo causticIrradiance(const Context& context) noexcept;
 
 }  // namespace postfx

@@ -4,6 +4,20 @@
 
 namespace postfx {
 
+// What the caustics pass multiplies the sun light by.
+enum class CausticsModel {
+  // Seed 002: omega = exp(-tau a^2) from the refracted ray's alignment. One texture lookup per
+  // pixel, any receiver shape; a pattern without absolute scale (flat water gives 1, waves
+  // only darken).
+  Seed002,
+  // Seed 004: true caustic irradiance from the wavefront area ratio. Every frame a grid over
+  // the water surface is refracted onto a few receiver depths and its triangles are added up
+  // (folds sum) with brightness = beam area / refracted area. Needs Feature::PhysicalCaustics.
+  // Covers a camera-centred square window (windowSize); outside it, and across the window's
+  // outer eighth, it fades to Seed002.
+  WavefrontAreaRatio,
+};
+
 struct CausticsSettings {
   // Off: the pass is skipped (0 ms) and, with RawCausticOutput, the raw texture reads 0.
   bool enabled = true;
@@ -36,6 +50,30 @@ struct CausticsSettings {
   // Each cascade skipped saves one filtered water fetch per pixel (the pass's main cost); the
   // error it costs is in the report (ocean_sample report).
   float minCascadeContrast = 0.1f;
+
+  CausticsModel model = CausticsModel::Seed002;
+
+  // --- WavefrontAreaRatio only (validated always) ---
+  // Surface grid vertices per side and irradiance texels per side, [64, 1024]. Cost grows with
+  // its square; the water texture is read at the mip level of the grid spacing, so ripples
+  // finer than windowSize * 1.25 / gridResolution are smoothed away, not aliased. GPU memory:
+  // about gridResolution^2 * (4 bytes * depthLayers + 32 bytes) (4 layers: 3 MB at 256, 50 MB at
+  // 1024).
+  int gridResolution = 256;
+  // Side of the square receiver window around the camera (m), [1, 1e4]. Snapped to whole
+  // texels in world space so the pattern does not swim when the camera moves.
+  float windowSize = 32.0f;
+  // Receiver depths the irradiance is computed at, [1, 8]: layer k lies
+  // maxReceiverDepth * ((k + 1) / depthLayers)^2 below the level (denser near the surface,
+  // where the pattern changes fastest with depth). A pixel interpolates linearly in depth
+  // between the two layers around it (between 1 at the surface and layer 0 above it; the
+  // deepest layer below it).
+  int depthLayers = 4;
+  float maxReceiverDepth = 16.0f;  // m, [0.01, 1e4]
+  // Irradiance clamp relative to flat water, [1, 1e4]. Folds focus to infinite irradiance on
+  // a triangle of zero area; the clamp bounds that. The flux it removes is reported as
+  // FrameStats::clampedFluxFraction (a bias figure).
+  float maxIrradiance = 32.0f;
 };
 
 }  // namespace postfx

@@ -7,10 +7,11 @@ namespace postfx {
 
 inline constexpr int kTimerRingDepth = 4;      // frames of timestamp pairs in flight
 inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is taken over
-inline constexpr int kMaxPasses = 4;
+inline constexpr int kMaxPasses = 5;
 
 struct PassStats {
-  const char* name = "";      // "caustics", "floor" (BenchmarkFloor only), "god_rays"
+  const char* name = "";      // "caustics", "floor" (BenchmarkFloor only), "god_rays",
+                              // "caustics_irradiance" (PhysicalCaustics only)
   double lastMs = 0.0;        // GPU time of the most recent resolved frame; 0 when skipped
   double medianMs = 0.0;      // median over the last kTimerMedianWindow resolved frames
   bool skipped = false;       // the most recent resolved frame skipped this pass (nothing to do)
@@ -24,6 +25,11 @@ struct FrameStats {
   std::uint64_t framesResolved = 0;    // of those, frames whose timings have been read back
   std::uint64_t framesDropped = 0;     // frames whose queries were still pending when the ring
                                        // wrapped (read never, rather than stall)
+  // CausticsModel::WavefrontAreaRatio: the flux CausticsSettings::maxIrradiance removed in the
+  // most recent frame whose count has been read back (a few dispatches old, never stalled
+  // for), as a fraction of the window's flat-water flux summed over the depth layers. 0 in
+  // the Seed002 model; -1 until a first count is read.
+  double clampedFluxFraction = -1.0;
 };
 
 }  // namespace postfx

@@ -1,0 +1,37 @@
+#pragma once
+// Where the WavefrontAreaRatio model's grids and irradiance texture lie this frame, computed in
+// double from the FrameDesc: the receiver window (camera-centred, snapped to whole texels in
+// world space so the pattern does not swim), each depth layer's surface grid (snapped to whole
+// grid cells, moved toward the sun by the flat-water drift to that depth), and the depths.
+#include <glm/glm.hpp>
+
+#include <postfx/postfx.h>
+
+namespace postfx::detail {
+
+inline constexpr int kMaxIrradianceLayers = 8;
+// The surface grid spans the window plus this fraction of it on each side: the refracted rays
+// drift sideways with the slopes, and light entering outside the window's shadow on the
+// surface still lands inside. Drift beyond it shows as a dimmer rim, inside the fade band.
+inline constexpr double kGridMargin = 0.125;
+// The window's outer band (fraction of its side) where the physical model fades to seed 002.
+inline constexpr double kIrradianceFadeBand = 0.125;
+
+struct IrradianceLayout {
+  int resolution = 0;  // texels and grid cells' nominal count per side
+  int layers = 0;
+  double windowSize = 0.0, texel = 0.0;
+  glm::dvec2 windowOrigin{0.0};  // world xz of texel (0, 0)'s corner
+  double cell = 0.0;             // grid spacing (m)
+  int cells = 0;                 // grid cells per side (resolution + 1: snapping headroom)
+  double depth[kMaxIrradianceLayers] = {};
+  glm::dvec2 gridOrigin[kMaxIrradianceLayers] = {};  // world xz of grid vertex (0, 0)
+};
+
+// Depth of layer k of `layers` (m below the level).
+double irradianceLayerDepth(int k, int layers, double maxDepth);
+
+// Requires validated settings and a sun above the horizon.
+IrradianceLayout irradianceLayout(const FrameDesc& frame);
+
+}  // namespace postfx::detail

@@ -1,0 +1,198 @@
+#include "irradiance_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "frame_constants.h"
+#include "shader_library.h"
+#include "shared_math.h"
+
+namespace postfx::detail {
+
+IrradiancePass::~IrradiancePass() {
+  release();
+}
+
+Result IrradiancePass::init(const std::string& defines, std::string& error) {
+  release();
+  GLuint program = 0;
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_COMPUTE_SHADER, "postfx/irradiance_vertices.comp"}}, defines,
+                           "postfx.caustics_irradiance.grid", program, error))
+    return Result::ShaderCompileFailed;
+  vertices_ = glkit::Program(program);
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_VERTEX_SHADER, "postfx/irradiance.vert"},
+                            {GL_FRAGMENT_SHADER, "postfx/irradiance.frag"}},
+                           defines, "postfx.caustics_irradiance.triangles", program, error)) {
+    release();
+    return Result::ShaderCompileFailed;
+  }
+  triangles_ = glkit::Program(program);
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_VERTEX_SHADER, "postfx/irradiance_points.vert"},
+                            {GL_FRAGMENT_SHADER, "postfx/irradiance_points.frag"}},
+                           defines, "postfx.caustics_irradiance.points", program, error)) {
+    release();
+    return Result::ShaderCompileFailed;
+  }
+  points_ = glkit::Program(program);
+  glCreateFramebuffers(1, &framebuffer_);
+  glkit::label(GL_FRAMEBUFFER, framebuffer_, "postfx.caustics_irradiance.framebuffer");
+  glCreateVertexArrays(1, &vertexArray_);
+  glkit::label(GL_VERTEX_ARRAY, vertexArray_, "postfx.caustics_irradiance.vao");
+  for (ClampSlot& slot : clampSlots_) {
+    glCreateBuffers(1, &slot.buffer);
+    glNamedBufferStorage(slot.buffer, 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glkit::label(GL_BUFFER, slot.buffer, "postfx.caustics_irradiance.clamp_count");
+  }
+  return Result::Ok;
+}
+
+void IrradiancePass::release() {
+  vertices_ = glkit::Program();
+  triangles_ = glkit::Program();
+  points_ = glkit::Program();
+  if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
+  if (vertexArray_ != 0) glDeleteVertexArrays(1, &vertexArray_);
+  if (texture_ != 0) glDeleteTextures(1, &texture_);
+  if (gridPointView_ != 0) glDeleteTextures(1, &gridPointView_);
+  if (gridPoints_ != 0) glDeleteBuffers(1, &gridPoints_);
+  framebuffer_ = vertexArray_ = texture_ = gridPointView_ = gridPoints_ = 0;
+  textureResolution_ = textureLayers_ = gridPointsPerSide_ = 0;
+  for (ClampSlot& slot : clampSlots_) {
+    if (slot.fence != nullptr) glDeleteSync(slot.fence);
+    if (slot.buffer != 0) glDeleteBuffers(1, &slot.buffer);
+    slot = ClampSlot{};
+  }
+}
+
+void IrradiancePass::ensureGridPoints(int pointsPerSide) {
+  if (gridPoints_ != 0 && gridPointsPerSide_ == pointsPerSide) return;
+  if (gridPointView_ != 0) glDeleteTextures(1, &gridPointView_);
+  if (gridPoints_ != 0) glDeleteBuffers(1, &gridPoints_);
+  // Two vec4 per grid point (see irradiance_vertices.comp); reused by every layer in turn.
+  const GLsizeiptr bytes = GLsizeiptr(pointsPerSide) * pointsPerSide * 2 * 16;
+  glCreateBuffers(1, &gridPoints_);
+  glNamedBufferStorage(gridPoints_, bytes, nullptr, 0);
+  glkit::label(GL_BUFFER, gridPoints_, "postfx.caustics_irradiance.grid_points");
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &gridPointView_);
+  glTextureBuffer(gridPointView_, GL_RGBA32F, gridPoints_);
+  glkit::label(GL_TEXTURE, gridPointView_, "postfx.caustics_irradiance.grid_points_view");
+  gridPointsPerSide_ = pointsPerSide;
+}
+
+void IrradiancePass::ensureTexture(int resolution, int layers) {
+  if (texture_ != 0 && textureResolution_ == resolution && textureLayers_ == layers) return;
+  if (texture_ != 0) glDeleteTextures(1, &texture_);
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture_);
+  // R32F: additive sums of many triangles stay exact well past R16F's 11 bits.
+  glTextureStorage3D(texture_, 1, GL_R32F, resolution, resolution, layers);
+  glkit::label(GL_TEXTURE, texture_, "postfx.caustics_irradiance");
+  textureResolution_ = resolution;
+  textureLayers_ = layers;
+}
+
+double IrradiancePass::pollClampCounts() {
+  // Oldest first, so the value returned is the newest one completed.
+  double newest = -1.0;
+  for (;;) {
+    ClampSlot* oldest = nullptr;
+    for (ClampSlot& s : clampSlots_)
+      if (s.fence != nullptr && (oldest == nullptr || s.frame < oldest->frame)) oldest = &s;
+    if (oldest == nullptr) break;
+    ClampSlot& slot = *oldest;
+    const GLenum status = glClientWaitSync(slot.fence, 0, 0);  // timeout 0: a poll
+    if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) break;
+    GLuint words[2] = {0, 0};
+    glGetNamedBufferSubData(slot.buffer, 0, sizeof(words), words);
+    const double units = static_cast<double>(words[0]) + 4294967296.0 * words[1];
+    newest = units / 256.0 / slot.flatFlux;
+    glDeleteSync(slot.fence);
+    slot.fence = nullptr;
+  }
+  return newest;
+}
+
+void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  layout_ = irradianceLayout(frame);
+  const IrradianceLayout& l = layout_;
+  ensureTexture(l.resolution, l.layers);
+  const float zero = 0.0f;
+  glClearTexImage(texture_, 0, GL_RED, GL_FLOAT, &zero);
+
+  // A slot still pending after a whole ring of frames is dropped rather than waited for.
+  ClampSlot& slot = clampSlots_[frame_ % clampSlots_.size()];
+  if (slot.fence != nullptr) glDeleteSync(slot.fence);
+  slot.fence = nullptr;
+  slot.frame = frame_++;
+  slot.flatFlux = static_cast<double>(l.resolution) * l.resolution * l.layers;
+  const GLuint zeros[2] = {0, 0};
+  glNamedBufferSubData(slot.buffer, 0, sizeof(zeros), zeros);
+
+  const int pointsPerSide = l.cells + 1;
+  ensureGridPoints(pointsPerSide);
+  const WaterSurface& water = frame.water;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
+  const double texelsPerMetre = l.resolution / l.windowSize;
+  // Triangles whose refracted area is under a quarter texel go to the point draw: their area
+  // ratio exceeds (nominal beam area of a triangle, half a cell squared) / (1/4 texel).
+  const double cellTexels = l.cell * texelsPerMetre;
+  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.25);
+  const GLuint compute = vertices_.id();
+  glProgramUniform1i(compute, 4, water.cascadeCount);
+  glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),
+                     static_cast<float>(sun.z), water.ior);
+  glProgramUniform4f(compute, 7, static_cast<float>(flatT > 0.0 ? 1.0 / flatT : 0.0),
+                     static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
+  glProgramUniform1i(compute, 9, pointsPerSide);
+  for (GLuint program : {triangles_.id(), points_.id()}) {
+    glProgramUniform1f(program, 8, frame.caustics.maxIrradiance);
+    glProgramUniform1i(program, 9, pointsPerSide);
+    glProgramUniform2f(program, 10, static_cast<float>(l.resolution), pointRatio);
+  }
+
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(l.resolution),
+                     static_cast<float>(l.resolution));
+  glBindVertexArray(vertexArray_);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindTextureUnit(kGridPointUnit, gridPointView_);
+  const int texelsPerSide = std::max(textures.water.width, textures.water.height);
+  const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
+  for (int k = 0; k < l.layers; ++k) {
+    glm::vec4 cascades[kMaxCascades];
+    for (int c = 0; c < water.cascadeCount; ++c) {
+      const double tile = water.tileSize[c];
+      const glm::dvec2 fromOrigin = l.gridOrigin[k] - water.origin;
+      // Mip level whose texel matches the grid spacing: finer ripples cannot be carried by
+      // the grid and would alias into false caustics.
+      const double lod = std::max(0.0, std::log2(l.cell * texelsPerSide / tile));
+      cascades[c] = glm::vec4(tileFraction(fromOrigin.x, tile), tileFraction(fromOrigin.y, tile),
+                              l.cell / tile, lod);
+    }
+    glProgramUniform4fv(compute, 0, water.cascadeCount, &cascades[0].x);
+    const glm::dvec2 gridLocal = l.gridOrigin[k] - l.windowOrigin;
+    glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
+                       static_cast<float>(l.cell), static_cast<float>(l.depth[k]));
+    glUseProgram(compute);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStorageBinding, gridPoints_);
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStorageBinding, slot.buffer);
+    glNamedFramebufferTextureLayer(framebuffer_, GL_COLOR_ATTACHMENT0, texture_, 0, k);
+    glUseProgram(triangles_.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);
+    glUseProgram(points_.id());
+    glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
+  }
+  glNamedFramebufferTextureLayer(framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  // The fragment atomics must land before the buffer is read back. (The irradiance itself is a
+  // framebuffer write, ordered before later draws that sample it without a barrier.)
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,75 @@
+#pragma once
+// The WavefrontAreaRatio model's irradiance pass (seed 004). Per depth layer: a compute step
+// refracts every surface grid point onto the receiver (into a buffer); one instanced strip
+// draw rasterises the refracted triangles, blended additively into a layer of a plugin-owned
+// GL_R32F 2D array; a point draw deposits the flux of the triangles too small to rasterise
+// without noise (under a quarter texel). Only built with Feature::PhysicalCaustics.
+// Why a rasterised mesh rather than splatting photons: each triangle carries exactly the flux
+// of its piece of the beam, so the result is noise-free at any grid size and folds sum for free
+// in the blender. Why the area ratio in the fragment stage: it needs all three vertices, and
+// screen derivatives of an affine varying give the triangle's exact ratio without a geometry
+// shader (slow on many GPUs) or a buffer of per-triangle values.
+// The clamp count is read back through a ring of small buffers with fences, polled, never
+// waited on (like the timers).
+#include <epoxy/gl.h>
+
+#include <array>
+#include <string>
+
+#include <glkit/program.h>
+#include <postfx/postfx.h>
+
+#include "gpu_timers.h"
+#include "irradiance_layout.h"
+#include "validation.h"
+
+namespace postfx::detail {
+
+class IrradiancePass {
+ public:
+  // SSBO binding of the grid points (compute step), then of the clamp count (draws).
+  static constexpr GLuint kStorageBinding = 0;
+  static constexpr GLuint kGridPointUnit = 6;  // texture unit of the grid points' buffer view
+
+  IrradiancePass() = default;
+  IrradiancePass(const IrradiancePass&) = delete;
+  IrradiancePass& operator=(const IrradiancePass&) = delete;
+  ~IrradiancePass();
+
+  Result init(const std::string& defines, std::string& error);
+  void release();
+  bool ready() const { return triangles_.id() != 0; }
+
+  // Reads every clamp count that has completed, oldest first. Returns the newest fraction
+  // read, or a negative value when none completed.
+  double pollClampCounts();
+  // Records the pass: clears and fills every layer. Expects the caustics pass's fixed-function
+  // state (blend ONE, ONE on draw buffer 0, no cull/scissor) and the water texture bound on
+  // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO binding 0,
+  // texture unit kGridPointUnit, and enables GL_PROGRAM_POINT_SIZE.
+  void draw(const FrameDesc& frame, const ValidatedTextures& textures);
+
+  GLuint texture() const { return texture_; }
+  const IrradianceLayout& layout() const { return layout_; }
+
+ private:
+  void ensureTexture(int resolution, int layers);
+  void ensureGridPoints(int pointsPerSide);
+
+  glkit::Program vertices_, triangles_, points_;
+  GLuint framebuffer_ = 0, vertexArray_ = 0, texture_ = 0;
+  int textureResolution_ = 0, textureLayers_ = 0;
+  GLuint gridPoints_ = 0, gridPointView_ = 0;  // buffer and its RGBA32F buffer-texture view
+  int gridPointsPerSide_ = 0;
+  IrradianceLayout layout_{};
+  struct ClampSlot {
+    GLuint buffer = 0;
+    GLsync fence = nullptr;
+    double flatFlux = 1.0;  // texels x layers of the frame: the fraction's denominator
+    std::uint64_t frame = 0;
+  };
+  std::array<ClampSlot, kTimerRingDepth> clampSlots_{};
+  std::uint64_t frame_ = 0;
+};
+
+}  // namespace postfx::detail

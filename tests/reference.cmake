@@ -1,0 +1,13 @@
+# CPU references (sample_app/reference): their own correctness on cases with known answers.
+postfx_add_test(reference_unit_tests
+  SOURCES unit/reference_seabed_test.cpp
+  LIBS ocean_reference)
+
+# The WavefrontAreaRatio caustics model (seed 004): its own properties, and its error against
+# the seabed reference on the same read-back water texture.
+postfx_add_test(postfx_physical_tests GL
+  SOURCES gl/postfx_scene.cpp gl/postfx_physical_mode_test.cpp
+          gl/postfx_physical_reference_test.cpp
+  LIBS postfx ocean_reference water gbuffer glm::glm PkgConfig::EPOXY)
+target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
+  ${POSTFX_SHADER_ROOT})

@@ -1,0 +1,91 @@
+// Where the physical caustics model puts its window, grids and depth layers (irradiance_layout):
+// snapped in world space so the pattern does not swim, covering what it must, far from the
+// origin as near it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "frame_constants.h"
+#include "irradiance_layout.h"
+
+namespace {
+
+using postfx::detail::irradianceLayout;
+using postfx::detail::IrradianceLayout;
+
+postfx::FrameDesc physicalFrame(const glm::dvec3& camera) {
+  postfx::FrameDesc f;
+  f.camera.position = camera;
+  f.sun.direction = glm::normalize(glm::dvec3(0.3, 1.0, 0.2));
+  f.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
+  f.caustics.gridResolution = 256;
+  f.caustics.windowSize = 32.0f;
+  f.caustics.depthLayers = 4;
+  f.caustics.maxReceiverDepth = 16.0f;
+  return f;
+}
+
+bool isMultiple(double value, double step) {
+  const double k = value / step;
+  return std::abs(k - std::round(k)) < 1e-6;
+}
+
+TEST(IrradianceLayout, LayerDepthsAreQuadraticUpToTheMaximum) {
+  const IrradianceLayout l = irradianceLayout(physicalFrame(glm::dvec3(0.0)));
+  ASSERT_EQ(l.layers, 4);
+  const double expected[] = {1.0, 4.0, 9.0, 16.0};
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(l.depth[k], expected[k]);
+}
+
+TEST(IrradianceLayout, WindowAndGridsAreSnappedInWorldSpace) {
+  for (const glm::dvec3 camera :
+       {glm::dvec3(3.3, -2.0, 7.1), glm::dvec3(1e6 + 0.37, -5.0, -1e6 - 0.91)}) {
+    const IrradianceLayout a = irradianceLayout(physicalFrame(camera));
+    EXPECT_TRUE(isMultiple(a.windowOrigin.x, a.texel) && isMultiple(a.windowOrigin.y, a.texel));
+    // The camera stays inside the window's central texel.
+    EXPECT_LE(std::abs(a.windowOrigin.x + 0.5 * a.windowSize - camera.x), a.texel);
+    for (int k = 0; k < a.layers; ++k)
+      EXPECT_TRUE(isMultiple(a.gridOrigin[k].x, a.cell) && isMultiple(a.gridOrigin[k].y, a.cell));
+    // A move within the texel changes nothing; 10 whole texels move everything by exactly that.
+    const glm::dvec3 small = camera + glm::dvec3(0.3 * a.texel, 0.0, -0.2 * a.texel);
+    const glm::dvec3 whole = camera + glm::dvec3(10.0 * a.texel, 0.0, 0.0);
+    const IrradianceLayout b = irradianceLayout(physicalFrame(small));
+    const IrradianceLayout c = irradianceLayout(physicalFrame(whole));
+    const double sameInTexel = std::abs(b.windowOrigin.x - a.windowOrigin.x) +
+                               std::abs(b.windowOrigin.y - a.windowOrigin.y);
+    const double step = (c.windowOrigin.x - a.windowOrigin.x) / a.texel;
+    std::printf(
+        "camera (%.2f, %.2f): window corner moves %.3g m for a 0.3-texel step, %.6f "
+        "texels for a 10-texel step\n",
+        camera.x, camera.z, sameInTexel, step);
+    const bool insideOneTexel =
+        std::floor((camera.x - 16.0) / a.texel) == std::floor((small.x - 16.0) / a.texel) &&
+        std::floor((camera.z - 16.0) / a.texel) == std::floor((small.z - 16.0) / a.texel);
+    if (insideOneTexel) {
+      EXPECT_EQ(sameInTexel, 0.0);
+    }
+    EXPECT_NEAR(step, 10.0, 1e-6);
+  }
+}
+
+// Light reaching the window from a layer's depth entered the surface over the window moved
+// toward the sun by the flat-water drift; the grid must cover that with the margin around it.
+TEST(IrradianceLayout, GridsCoverTheWindowsSourceOnTheSurface) {
+  const postfx::FrameDesc f = physicalFrame(glm::dvec3(5.0, -3.0, 5.0));
+  const IrradianceLayout l = irradianceLayout(f);
+  const glm::dvec3 down = postfx::detail::refractedSunDown(f.sun.direction, f.water.ior);
+  const glm::dvec2 drift = glm::dvec2(down.x, down.z) / -down.y;
+  const double margin = postfx::detail::kGridMargin * l.windowSize;
+  for (int k = 0; k < l.layers; ++k) {
+    const glm::dvec2 sourceMin = l.windowOrigin - drift * l.depth[k] - margin;
+    const glm::dvec2 sourceMax = sourceMin + l.windowSize + 2.0 * margin;
+    const glm::dvec2 gridMax = l.gridOrigin[k] + l.cell * static_cast<double>(l.cells);
+    EXPECT_LE(l.gridOrigin[k].x, sourceMin.x + 1e-9);
+    EXPECT_LE(l.gridOrigin[k].y, sourceMin.y + 1e-9);
+    EXPECT_GE(gridMax.x, sourceMax.x - 1e-9);
+    EXPECT_GE(gridMax.y, sourceMax.y - 1e-9);
+  }
+}
+
+}  // namespace
