@@ -8,6 +8,7 @@
 #include "caustics_pass.h"
 #include "godrays_pass.h"
 #include "gpu_timers.h"
+#include "object_caustics_pass.h"
 
 namespace postfx {
 
@@ -18,6 +19,8 @@ struct Context {
   detail::CausticsPass caustics;
   detail::GodRaysPass godRays;
   int godRaysPass = -1;  // timer index of "god_rays" (after the floor when there is one); -1: off
+  detail::ObjectCausticsPass objectCaustics;
+  int objectCausticsPass = -1;  // timer index of "object_caustics"; -1: feature off
   detail::GpuTimers timers;
   std::string error;
 };

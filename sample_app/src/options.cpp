@@ -27,7 +27,8 @@ std::string usage() {
 
 usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
-                      [--out FILE] [--no-caustics] [--no-god-rays] [--tau T] [--water-resolution N]
+                      [--out FILE] [--no-caustics] [--no-god-rays] [--no-object-caustics]
+                      [--tau T] [--water-resolution N]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
       or .exr (linear radiance). Default output: ocean.png.
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
@@ -75,6 +76,10 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     }
     if (flag == "--no-god-rays") {
       options.godRays = false;
+      continue;
+    }
+    if (flag == "--no-object-caustics") {
+      options.objectCaustics = false;
       continue;
     }
     if (i + 1 >= argc) {

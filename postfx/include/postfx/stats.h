@@ -10,7 +10,8 @@ inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is 
 inline constexpr int kMaxPasses = 4;
 
 struct PassStats {
-  const char* name = "";      // "caustics", "floor" (BenchmarkFloor only), "god_rays"
+  const char* name = "";      // "caustics", "floor" (BenchmarkFloor only), "god_rays",
+                              // "object_caustics"
   double lastMs = 0.0;        // GPU time of the most recent resolved frame; 0 when skipped
   double medianMs = 0.0;      // median over the last kTimerMedianWindow resolved frames
   bool skipped = false;       // the most recent resolved frame skipped this pass (nothing to do)
