@@ -6,6 +6,7 @@ set(_postfx_private ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
 postfx_add_test(postfx_unit_tests
   SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp unit/postfx_godrays_math_test.cpp
           unit/postfx_no_context_test.cpp unit/postfx_irradiance_layout_test.cpp
+          unit/postfx_object_caustics_frame_test.cpp
   LIBS postfx gbuffer glm::glm PkgConfig::EPOXY)
 target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
 
@@ -17,3 +18,11 @@ postfx_add_test(postfx_gl_tests
   LIBS postfx gbuffer glm::glm PkgConfig::EPOXY
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
+
+postfx_add_test(postfx_object_caustics_tests
+  SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_fixtures.cpp
+          gl/postfx_object_caustics_reference.cpp gl/postfx_object_caustics_util.cpp
+          gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
+  LIBS postfx gbuffer glm::glm PkgConfig::EPOXY
+  GL)
+target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -11,6 +11,8 @@
 #include "frame_constants.h"
 #include "gl_state_guard.h"
 #include "godrays_constants.h"
+#include "object_caustics_frame.h"
+#include "object_caustics_validation.h"
 #include "validation.h"
 #include "visibility.h"
 
@@ -49,6 +51,30 @@ bool godRaysHaveWork(const Context& context, const FrameDesc& frame) {
          frame.godRays.intensity > 0.0f && underwaterLit(context, frame);
 }
 
+// Casters given, sun above the horizon and some caster inside the receiver map's view: else
+// nothing can land anywhere.
+bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
+  const ObjectCausticsFrame& o = frame.objectCaustics;
+  return context.objectCausticsPass >= 0 && o.settings.enabled && o.casterCount > 0 &&
+         o.settings.intensity > 0.0f && frame.sun.direction.y > 0.0 &&
+         detail::castersInReceiverView(o);
+}
+
+// The object caustics, timed as their own pass, after the seabed caustics and god rays.
+Result runObjectCaustics(Context& context, const FrameDesc& frame, int width, int height) {
+  const detail::ObjectLightFrame light = detail::fitObjectLightFrame(frame);
+  const shared::ObjectCausticsBlock block =
+      detail::buildObjectCausticsBlock(context.desc, frame, light, width, height);
+  const Result r = context.objectCaustics.prepare(frame, light, block, context.error);
+  if (r != Result::Ok) return r;
+  DebugGroup group("postfx.object_caustics");
+  if (hasFeature(context.desc.features, Feature::BenchmarkFloor)) glFinish();
+  context.timers.begin(context.objectCausticsPass);
+  context.objectCaustics.draw(frame, width, height);
+  context.timers.end(context.objectCausticsPass);
+  return Result::Ok;
+}
+
 Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   std::string& error = context.error;
   Result r = detail::validateFrameValues(context.desc, frame, error);
@@ -56,11 +82,16 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   detail::ValidatedTextures textures;
   r = detail::validateFrameTextures(context.desc, frame, textures, error);
   if (r != Result::Ok) return r;
+  if (context.objectCausticsPass >= 0) {
+    r = detail::validateObjectCaustics(frame, error);
+    if (r != Result::Ok) return r;
+  }
 
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
+  const bool objects = objectCausticsHaveWork(context, frame);
   const shared::CausticsBlock block = detail::buildCausticsBlock(
       context.desc, frame, textures.width, textures.height, textures.water);
 
@@ -81,10 +112,13 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     context.caustics.clearRaw(textures.width, textures.height);
   }
   if (!godRays && context.godRaysPass >= 0) context.timers.markSkipped(context.godRaysPass);
+  if (!objects && context.objectCausticsPass >= 0)
+    context.timers.markSkipped(context.objectCausticsPass);
   if (!caustics && !godRays) {
     if (floor) context.timers.markSkipped(Context::kFloorPass);
+    r = objects ? runObjectCaustics(context, frame, textures.width, textures.height) : Result::Ok;
     context.timers.endFrame();
-    return Result::Ok;
+    return r;
   }
   // The god rays draw under the caustics pass's state (its units, samplers and block).
   r = context.caustics.prepare(frame, textures, block, error);
@@ -142,8 +176,9 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     context.godRays.finish();
   }
   context.caustics.finish();
+  r = objects ? runObjectCaustics(context, frame, textures.width, textures.height) : Result::Ok;
   context.timers.endFrame();
-  return Result::Ok;
+  return r;
 }
 
 }  // namespace
@@ -204,6 +239,12 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
       context->irradiancePass = passCount;
       names[passCount++] = "caustics_irradiance";
     }
+    if (hasFeature(desc.features, Feature::ObjectCaustics)) {
+      r = context->objectCaustics.init(detail::shaderDefines(desc), createError);
+      if (r != Result::Ok) return r;
+      context->objectCausticsPass = passCount;
+      names[passCount++] = "object_caustics";
+    }
     context->timers.init(passCount, names);
     out = context.release();
     return Result::Ok;
@@ -245,6 +286,10 @@ const char* lastError(const Context* context) noexcept {
 
 const FrameStats& stats(const Context& context) noexcept {
   return context.timers.stats();
+}
+
+ObjectCausticMap objectCausticMap(const Context& context) noexcept {
+  return context.objectCaustics.map();
 }
 
 GlName rawCausticTexture(const Context& context) noexcept {

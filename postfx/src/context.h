@@ -9,6 +9,7 @@
 #include "godrays_pass.h"
 #include "gpu_timers.h"
 #include "irradiance_pass.h"
+#include "object_caustics_pass.h"
 
 namespace postfx {
 
@@ -21,6 +22,8 @@ struct Context {
   int godRaysPass = -1;  // timer index of "god_rays" (after the floor when there is one); -1: off
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
   int irradiancePass = -1;  // timer index of "caustics_irradiance"; -1: no PhysicalCaustics
+  detail::ObjectCausticsPass objectCaustics;
+  int objectCausticsPass = -1;  // timer index of "object_caustics"; -1: feature off
   detail::GpuTimers timers;
   std::string error;
 };

@@ -141,6 +141,12 @@ bool isMipComplete(GLuint texture, int width, int height) {
 
 }  // namespace
 
+Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& error) {
+  TextureFacts facts;
+  const Result r = checkTexture(field, ref, {GL_TEXTURE_2D}, kDepthFormats, facts, error);
+  return r != Result::Ok ? r : checkDepthMode(field, ref.texture, error);
+}
+
 Result validateGodRays(const GodRaySettings& g, std::string& error) {
   auto fail = [&error](std::string message) {
     error = std::move(message);
@@ -162,10 +168,6 @@ Result validateGodRays(const GodRaySettings& g, std::string& error) {
 }
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (hasFeature(desc.features, Feature::ObjectCaustics)) {
-    error = "CreateDesc.features: ObjectCaustics is reserved for a later version";
-    return Result::NotImplemented;
-  }
   if (static_cast<std::uint32_t>(desc.features) >= (1u << 8)) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;

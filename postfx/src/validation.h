@@ -28,6 +28,10 @@ struct ValidatedTextures {
 
 // GL-query checks of every texture: a texture name, the right target and format, sizes that
 // match. Runs after validateFrameValues.
+// A host depth texture (GL_TEXTURE_2D, depth format, depth mode): the checks every depth input
+// gets, for the object caustics' receiver map.
+Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& error);
+
 Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
                              ValidatedTextures& out, std::string& error);
 

@@ -7,6 +7,8 @@
 // Physical caustics (seed 004): one short run per grid resolution (64..1024), rows
 // caustics_irradiance_<n> (the extra pass) and caustics_physical_<n> (the full-screen caustics
 // pass sampling its result), with the clamp's bias on stderr.
+// Object caustics: likewise one short run per caustic-map size, ray-grid size and hit-iteration
+// count, reported as rows object_caustics_<map>_<grid>_<iterations>.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -163,6 +165,31 @@ int runBench(const Options& options) {
     }
   }
 
+  if (options.objectCaustics) {
+    const int variantFrames = std::max(1, std::min(options.frames, 20));
+    struct Variant {
+      int map, grid, iterations;
+    };
+    for (const Variant& v : {Variant{256, 128, 1}, Variant{512, 256, 1}, Variant{512, 256, 3},
+                             Variant{1024, 512, 3}}) {
+      const std::string name = "object_caustics_" + std::to_string(v.map) + "_" +
+                               std::to_string(v.grid) + "_" + std::to_string(v.iterations);
+      std::fprintf(stderr, "bench: %s, %d frames\n", name.c_str(), variantFrames);
+      auto variant = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
+      if (!variant) return fail(error);
+      variant->objectCaustics().mapSize = v.map;
+      variant->objectCaustics().gridSize = v.grid;
+      variant->objectCaustics().iterations = v.iterations;
+      if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
+        return fail(error);
+      }
+      const postfx::FrameStats& stats = variant->stats();
+      rows.push_back({name, passMs(stats, "object_caustics"), passMs(stats, "floor"),
+                      passMs(stats, "object_caustics") == 0.0});
+      session.plugin = std::move(variant);
+    }
+  }
+
   std::ostringstream json;
   json << "{\"device\": \"" << jsonEscape(context->renderer()) << "\", \"width\": " << options.width
        << ", \"height\": " << options.height << ", \"preset\": \"" << options.preset
@@ -170,11 +197,11 @@ int runBench(const Options& options) {
   std::printf("device: %s\n%dx%d, preset %s, %d frames (median after %d warm-up)\n\n",
               context->renderer().c_str(), options.width, options.height, options.preset.c_str(),
               options.frames, kWarmupFrames);
-  std::printf("%-20s %12s %12s\n", "pass", "median ms", "floor ratio");
+  std::printf("%-28s %12s %12s\n", "pass", "median ms", "floor ratio");
   for (size_t i = 0; i < rows.size(); ++i) {
     const Row& row = rows[i];
     const double ratio = row.floorMs > 0.0 ? row.medianMs / row.floorMs : 0.0;
-    std::printf("%-20s %12.3f %12.2f%s\n", row.name.c_str(), row.medianMs, ratio,
+    std::printf("%-28s %12.3f %12.2f%s\n", row.name.c_str(), row.medianMs, ratio,
                 row.skipped ? "  (skipped)" : "");
     json << (i ? ", " : "") << "{\"name\": \"" << row.name << "\", \"median_ms\": " << row.medianMs
          << ", \"floor_ratio\": " << ratio << "}";

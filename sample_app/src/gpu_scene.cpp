@@ -6,6 +6,10 @@
 
 namespace ocean {
 
+bool isCausticCaster(const ocean_scene::Material& material) {
+  return material.isRefractive() || material.metallic >= 0.5f;
+}
+
 GpuScene::~GpuScene() {
   for (GpuMesh& mesh : meshes_) {
     glDeleteVertexArrays(1, &mesh.vao);
@@ -40,22 +44,38 @@ void GpuScene::upload(const ocean_scene::Model& model) {
     }
     glkit::label(GL_VERTEX_ARRAY, gpu.vao, "scene." + mesh.name);
     gpu.indexCount = GLsizei(mesh.indices.size());
+    gpu.vertexCount = GLsizei(mesh.positions.size());
+    gpu.boundsMin = glm::vec3(0.0f);
+    gpu.boundsMax = glm::vec3(0.0f);
+    if (!mesh.positions.empty()) gpu.boundsMin = gpu.boundsMax = mesh.positions[0];
+    for (const glm::vec3& p : mesh.positions) {
+      gpu.boundsMin = glm::min(gpu.boundsMin, p);
+      gpu.boundsMax = glm::max(gpu.boundsMax, p);
+    }
     meshes_.push_back(gpu);
   }
   for (const ocean_scene::Instance& instance : model.instances) {
     const ocean_scene::Mesh& mesh = model.meshes[instance.mesh];
-    const glm::vec3 albedo = mesh.material < model.materials.size()
-                                 ? model.materials[mesh.material].baseColor
-                                 : glm::vec3(0.5f);
-    instances_.push_back({instance.mesh, glm::dmat4(instance.transform), albedo});
+    const bool known = mesh.material < model.materials.size();
+    const glm::vec3 albedo = known ? model.materials[mesh.material].baseColor : glm::vec3(0.5f);
+    const bool caster = known && isCausticCaster(model.materials[mesh.material]) &&
+                        meshes_[instance.mesh].indexCount >= 3;
+    instances_.push_back({instance.mesh, glm::dmat4(instance.transform), albedo, caster});
+    if (caster) {
+      const GpuMesh& gpu = meshes_[instance.mesh];
+      casters_.push_back({gpu.vertices, gpu.indices, gpu.vertexCount, gpu.indexCount, gpu.boundsMin,
+                          gpu.boundsMax, glm::dmat4(instance.transform),
+                          model.materials[mesh.material]});
+    }
   }
 }
 
-void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition) const {
+void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet set) const {
   const GLint modelLocation = glGetUniformLocation(program, "modelRelative");
   const GLint normalLocation = glGetUniformLocation(program, "normalMatrix");
   const GLint albedoLocation = glGetUniformLocation(program, "albedo");
   for (const GpuInstance& instance : instances_) {
+    if (set == DrawSet::NonCasters && instance.caster) continue;
     glm::dmat4 relative = instance.transform;
     relative[3] -= glm::dvec4(cameraPosition, 0.0);  // in double: far worlds stay precise
     const glm::mat4 model(relative);

@@ -10,8 +10,24 @@
 
 namespace ocean {
 
+// Glass and metal instances: what the plugin's object caustics draw from the sun (glTF
+// transmission > 0, or metallic >= 0.5).
+bool isCausticCaster(const ocean_scene::Material& material);
+
+// One caster as the plugin needs it: the host's own buffers (position + normal, 24-byte
+// stride, uint32 indices), its model bounds, world transform and material.
+struct CasterInstance {
+  GLuint vertices = 0, indices = 0;
+  GLsizei vertexCount = 0, indexCount = 0;
+  glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
+  glm::dmat4 transform{1.0};
+  ocean_scene::Material material;
+};
+
 class GpuScene {
  public:
+  enum class DrawSet { All, NonCasters };
+
   GpuScene() = default;
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;
@@ -20,20 +36,25 @@ class GpuScene {
   void upload(const ocean_scene::Model& model);
   // Draws every instance with `program` bound; sets its modelRelative, normalMatrix and albedo
   // uniforms (those it has).
-  void draw(GLuint program, const glm::dvec3& cameraPosition) const;
+  // NonCasters leaves out the caustic casters (the receiver map the plugin intersects with).
+  void draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet set = DrawSet::All) const;
+  const std::vector<CasterInstance>& casters() const { return casters_; }
 
  private:
   struct GpuMesh {
     GLuint vao = 0, vertices = 0, indices = 0;
-    GLsizei indexCount = 0;
+    GLsizei indexCount = 0, vertexCount = 0;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
   };
   struct GpuInstance {
     size_t mesh;
     glm::dmat4 transform;
     glm::vec3 albedo;
+    bool caster;
   };
   std::vector<GpuMesh> meshes_;
   std::vector<GpuInstance> instances_;
+  std::vector<CasterInstance> casters_;
 };
 
 }  // namespace ocean

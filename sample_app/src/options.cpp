@@ -27,8 +27,9 @@ std::string usage() {
 
 usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
-                      [--out FILE] [--no-caustics] [--no-god-rays] [--tau T] [--water-resolution N]
-                      [--caustics-model seed002|physical] [--caustics-grid N]
+                      [--out FILE] [--no-caustics] [--no-god-rays] [--no-object-caustics]
+                      [--tau T] [--water-resolution N] [--caustics-model seed002|physical]
+                      [--caustics-grid N]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
       or .exr (linear radiance). Default output: ocean.png.
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
@@ -92,6 +93,10 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     }
     if (flag == "--quick") {
       options.quick = true;
+      continue;
+    }
+    if (flag == "--no-object-caustics") {
+      options.objectCaustics = false;
       continue;
     }
     if (i + 1 >= argc) {

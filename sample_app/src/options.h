@@ -15,11 +15,12 @@ struct Options {
   double timeSeconds = 0.0;
   std::vector<std::string> models;  // extra .glb files placed in the scene
   std::string out = "ocean.png";
-  int frames = 60;       // bench: measured frames after warm-up
-  std::string json;      // bench: JSON output path
-  bool caustics = true;  // the plugin's seabed caustics
-  bool godRays = true;   // the plugin's underwater god rays
-  double tau = -1.0;     // caustics tightening; < 0 keeps the plugin's default
+  int frames = 60;             // bench: measured frames after warm-up
+  std::string json;            // bench: JSON output path
+  bool caustics = true;        // the plugin's seabed caustics
+  bool godRays = true;         // the plugin's underwater god rays
+  bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
+  double tau = -1.0;           // caustics tightening; < 0 keeps the plugin's default
   // Caustics model: false = seed 002 (the plugin's default), true = the wavefront area-ratio
   // irradiance (seed 004, Feature::PhysicalCaustics), with this grid resolution.
   bool physicalCaustics = false;

@@ -1,5 +1,7 @@
 #include "plugin_setup.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace ocean {
@@ -13,6 +15,10 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   if (benchmarkFloor) desc.features = desc.features | postfx::Feature::BenchmarkFloor;
   // The physical model's GL resources exist only when it is asked for.
   if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::PhysicalCaustics;
+  if (options.objectCaustics) {
+    desc.features = desc.features | postfx::Feature::ObjectCaustics;
+    renderer.enableReceiverMap();
+  }
   desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
   desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
@@ -40,6 +46,29 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
 PluginSetup::~PluginSetup() {
   postfx::destroy(context_);
 }
+
+namespace {
+
+// glTF material -> the plugin's: transmission means glass (KHR_materials_ior, and
+// KHR_materials_volume's attenuation as Beer-Lambert absorption), otherwise metal whose base
+// colour is its reflectance at normal incidence (glTF metallic-roughness).
+postfx::CasterMaterial casterMaterial(const ocean_scene::Material& m) {
+  postfx::CasterMaterial out;
+  if (!m.isRefractive()) {
+    out.type = postfx::CasterMaterialType::Reflective;
+    out.reflectance = glm::clamp(m.baseColor, glm::vec3(0.0f), glm::vec3(1.0f));
+    return out;
+  }
+  out.type = postfx::CasterMaterialType::Refractive;
+  out.ior = std::clamp(m.ior, 1.0f, 3.0f);
+  if (std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f) {
+    const glm::vec3 colour = glm::clamp(m.attenuationColor, glm::vec3(1e-4f), glm::vec3(1.0f));
+    out.absorption = -glm::log(colour) / m.attenuationDistance;
+  }
+  return out;
+}
+
+}  // namespace
 
 bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   const gbuffer::Targets& targets = frame.targets;
@@ -76,6 +105,35 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.shadow.depthConvention = static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
   desc.caustics = caustics_;
   desc.godRays = godRays_;
+  // Object caustics: the host's own buffers, and the shadow map drawn without the casters as
+  // the receivers. The casters stay in the host's shadow map, which removes the light they
+  // block; the plugin adds back what passes through or reflects off them.
+  casters_.clear();
+  for (const CasterInstance& c : frame.casters) {
+    if (int(casters_.size()) == postfx::kMaxCasters) break;
+    postfx::CasterMesh mesh;
+    mesh.vertexBuffer = c.vertices;
+    mesh.indexBuffer = c.indices;
+    mesh.indexType = GL_UNSIGNED_INT;
+    mesh.vertexCount = c.vertexCount;
+    mesh.indexCount = c.indexCount;
+    mesh.positionOffset = 0;
+    mesh.normalOffset = 12;
+    mesh.stride = 24;
+    mesh.boundsMin = c.boundsMin;
+    mesh.boundsMax = c.boundsMax;
+    mesh.modelToWorld = c.transform;
+    mesh.material = casterMaterial(c.material);
+    casters_.push_back(mesh);
+  }
+  desc.objectCaustics.casters = casters_.data();
+  desc.objectCaustics.casterCount = frame.receiverMap != 0 ? int(casters_.size()) : 0;
+  desc.objectCaustics.receivers.depth = {frame.receiverMap, GL_DEPTH_COMPONENT32F};
+  desc.objectCaustics.receivers.worldToLightClip = frame.shadowWorldToClip;
+  desc.objectCaustics.receivers.depthConvention =
+      static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
+  desc.objectCaustics.receivers.bias = 0.0005f;  // 20 cm over the map's 400 m depth range
+  desc.objectCaustics.settings = objectCaustics_;
   lastFrame_ = desc;
   if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(context_);

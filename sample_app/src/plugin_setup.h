@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "options.h"
 #include "renderer.h"
@@ -24,6 +25,7 @@ class PluginSetup {
 
   postfx::CausticsSettings& caustics() { return caustics_; }
   postfx::GodRaySettings& godRays() { return godRays_; }
+  postfx::ObjectCausticsSettings& objectCaustics() { return objectCaustics_; }
   const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
   std::string timingSummary() const;  // "caustics 0.41 ms (median)" ...
   // What the last dispatch was given, for tools that re-dispatch the same frame with other
@@ -40,6 +42,8 @@ class PluginSetup {
   postfx::FrameDesc lastFrame_;
   postfx::CausticsSettings caustics_;
   postfx::GodRaySettings godRays_;
+  postfx::ObjectCausticsSettings objectCaustics_;
+  std::vector<postfx::CasterMesh> casters_;  // rebuilt each frame, kept for its capacity
 };
 
 }  // namespace ocean

@@ -103,6 +103,10 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   return true;
 }
 
+void Renderer::enableReceiverMap() {
+  if (receiverMap_.texture() == 0) receiverMap_.create(settings_.shadowMapSize);
+}
+
 glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
   const Camera& camera = input.camera;
   const double aspect = double(settings_.width) / settings_.height;
@@ -175,6 +179,11 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glPolygonOffset(1.5f, 2.0f);
   glUseProgram(shadow_.id());
   scene_.draw(shadow_.id(), eye);
+  if (receiverMap_.texture() != 0) {
+    glBindFramebuffer(GL_FRAMEBUFFER, receiverMap_.framebuffer());
+    glClear(GL_DEPTH_BUFFER_BIT);
+    scene_.draw(shadow_.id(), eye, GpuScene::DrawSet::NonCasters);
+  }
   glDisable(GL_POLYGON_OFFSET_FILL);
   glPopDebugGroup();
 
@@ -202,8 +211,15 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glPopDebugGroup();
 
   if (plugin_) {
-    const HostFrame frame{targets_,           input,     *ocean_, optics_, shadowMap_.texture(),
-                          shadowWorldToClip_, projection};
+    const HostFrame frame{targets_,
+                          input,
+                          *ocean_,
+                          optics_,
+                          shadowMap_.texture(),
+                          shadowWorldToClip_,
+                          projection,
+                          receiverMap_.texture(),
+                          scene_.casters()};
     if (!plugin_(frame, error)) return false;
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
   }

@@ -45,6 +45,10 @@ struct HostFrame {
   GLuint shadowMap;              // D32F, forward [0,1], compare mode on
   glm::dmat4 shadowWorldToClip;  // world -> shadow clip, double, translation included
   glm::dmat4 projection;         // reverse-Z infinite
+  // With enableReceiverMap(): the shadow map again without the caustic casters (same matrix),
+  // the receivers of the plugin's object caustics; 0 otherwise.
+  GLuint receiverMap;
+  const std::vector<CasterInstance>& casters;
 };
 // Called between lighting and fog; returns false with a message to fail the frame.
 using PluginPass = std::function<bool(const HostFrame&, std::string& error)>;
@@ -58,6 +62,8 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   void setPluginPass(PluginPass pass) { plugin_ = std::move(pass); }
+  // Also render the receiver map each frame (for the plugin's object caustics).
+  void enableReceiverMap();
   bool render(const FrameInput& input, std::string& error);
 
   // Blits the tone-mapped image into a host framebuffer (the window's is 0).
@@ -81,6 +87,7 @@ class Renderer {
   std::unique_ptr<water::Ocean> ocean_;
   GpuScene scene_;
   ShadowMap shadowMap_;
+  ShadowMap receiverMap_;  // created by enableReceiverMap()
   WaterGrid waterGrid_;
   glkit::Program geometry_, shadow_, lighting_, composite_, water_, tonemap_;
   GLuint frameUniforms_ = 0, emptyVao_ = 0;

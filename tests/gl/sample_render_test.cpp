@@ -2,6 +2,10 @@
 // HDR radiance, and the same arguments give the same image bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
 #include <gl_fixture.h>
 #include <image_stats.h>
 
@@ -30,7 +34,7 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     std::vector<float> radiance;
   };
 
-  Frame render(const char* presetName, double time) {
+  Frame render(const char* presetName, double time, bool objectCaustics = true) {
     ocean::Preset preset;
     std::string known, error;
     EXPECT_TRUE(ocean::findPreset(presetName, preset, known));
@@ -43,6 +47,7 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
     ocean::Options options;
+    options.objectCaustics = objectCaustics;
     auto plugin = ocean::PluginSetup::create(*renderer, options, false, error);
     EXPECT_TRUE(plugin) << error;
     EXPECT_TRUE(renderer->render({preset.camera, preset.sun, time}, error)) << error;
@@ -61,6 +66,30 @@ TEST_P(SampleRender, RendersFiniteNonBlankDeterministicImage) {
   const Frame second = render(GetParam(), 12.5);
   EXPECT_TRUE(first.color == second.color) << "same arguments, different image";
   EXPECT_TRUE(first.radiance == second.radiance);
+}
+
+// The object caustics (glass sphere, bottle, brass ring in the scene) only ever add light:
+// every radiance value with them is >= without, and where their focus is in view, some is more.
+TEST_P(SampleRender, ObjectCausticsOnlyAddLight) {
+  const Frame on = render(GetParam(), 12.5, true);
+  const Frame off = render(GetParam(), 12.5, false);
+  ASSERT_EQ(on.radiance.size(), off.radiance.size());
+  double added = 0.0, lowest = 0.0;
+  size_t brighter = 0;
+  for (size_t i = 0; i < on.radiance.size(); ++i) {
+    const double d = double(on.radiance[i]) - double(off.radiance[i]);
+    lowest = std::min(lowest, d);
+    added += std::max(d, 0.0);
+    brighter += d > 1e-4 ? 1 : 0;
+  }
+  std::printf(
+      "%s: object caustics add %.4f (sum of radiance), %zu values brighter, lowest "
+      "difference %.3g\n",
+      GetParam(), added, brighter, lowest);
+  EXPECT_GE(lowest, -1e-5);
+  if (std::string(GetParam()) == "seabed") {
+    EXPECT_GT(brighter, 0u);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, SampleRender,

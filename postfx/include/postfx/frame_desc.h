@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <postfx/casters.h>
 #include <postfx/settings.h>
 
 namespace postfx {
@@ -100,6 +101,19 @@ struct SunShadowMap {
   float bias = 0.0005f;
 };
 
+// Feature::ObjectCaustics inputs (see postfx/casters.h for what the host does around the pass).
+struct ObjectCausticsFrame {
+  const CasterMesh* casters = nullptr;  // casterCount entries, read during dispatch() only
+  int casterCount = 0;                  // [0, kMaxCasters]; 0 = pass skipped (0 ms)
+  // Receiver depth from the sun WITHOUT the casters (any depth format, GL_TEXTURE_2D, any
+  // orthographic or perspective projection that sees where the light lands): the refracted rays
+  // are intersected with it in image space and the composite adds light only where a pixel lies
+  // on it (|depth difference| <= bias, window units). Cleared texels (far plane) are "no
+  // receiver". Required while casterCount > 0.
+  SunShadowMap receivers;
+  ObjectCausticsSettings settings;
+};
+
 struct FrameDesc {
   // Host G-buffer, GL_TEXTURE_2D, all the same size (the size of `target`).
   TextureRef depth;   // GL_DEPTH_COMPONENT16/24/32/32F or DEPTH24_STENCIL8/DEPTH32F_STENCIL8
@@ -114,7 +128,8 @@ struct FrameDesc {
   WaterSurface water;
   SunShadowMap shadow;
   CausticsSettings caustics;
-  GodRaySettings godRays;  // read only with Feature::GodRays
+  GodRaySettings godRays;              // read only with Feature::GodRays
+  ObjectCausticsFrame objectCaustics;  // read only with Feature::ObjectCaustics
 };
 
 }  // namespace postfx

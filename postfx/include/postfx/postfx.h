@@ -26,7 +26,7 @@ enum class Feature : std::uint32_t {
   None = 0,
   Caustics = 1u << 0,          // seabed caustics (seed 002, section 4)
   GodRays = 1u << 1,           // underwater light shafts (seed 002, section 4, eq. 2)
-  ObjectCaustics = 1u << 2,    // reserved: create() returns NotImplemented
+  ObjectCaustics = 1u << 2,    // light-map caustics of glass/metal casters (seeds 000, 003)
   Dispersion = 1u << 3,        // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
   ShadowMask = 1u << 4,        // mask caustics by the host's sun shadow map (FrameDesc::shadow)
   RawCausticOutput = 1u << 5,  // also write the raw caustic factor to rawCausticTexture()
@@ -67,7 +67,10 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // nothing to do (caustics disabled, sun at/below the horizon, no part of the view frustum below
 // the water level) is skipped and reports 0 ms. With Feature::GodRays the god-ray pass (timed as
 // "god_rays"; at half resolution the march and the upsample together) runs after the caustics,
-// skipped on the same conditions with godRays.enabled.
+// skipped on the same conditions with godRays.enabled. With Feature::ObjectCaustics the object
+// caustics (postfx/casters.h; timed as "object_caustics") run last, skipped (0 ms) with no
+// caster, objectCaustics.settings.enabled off, the sun at/below the horizon, or no caster inside
+// the receiver map's view.
 // With Feature::BenchmarkFloor, a "floor" pass runs first whenever caustics or god rays run: it
 // reads the same inputs and writes the same outputs with no math (adds exactly 0), so that
 // caustics.medianMs / floor.medianMs measures the shader's cost independently of the machine.
@@ -104,5 +107,20 @@ struct CausticIrradianceInfo {
   float layerDepth[8] = {};      // m below the water level, per layer
 };
 CausticIrradianceInfo causticIrradiance(const Context& context) noexcept;
+
+// With Feature::ObjectCaustics: the caustic map of the last dispatch that ran the pass, for
+// hosts that composite it themselves (forward passes, water volumes) and for tests. A
+// plugin-owned GL_RGBA32F GL_TEXTURE_2D; rgb = caustic irradiance over the sun's (1 = the sun's
+// unobstructed irradiance on a surface facing it), before albedo and N.L. A world point p maps to
+// texel coordinates ((p - origin) . axisU / |axisU|^2, (p - origin) . axisV / |axisV|^2) * size,
+// projected along `direction`. texture is 0 before the first such dispatch.
+struct ObjectCausticMap {
+  GlName texture = 0;
+  int size = 0;
+  glm::dvec3 origin{0.0};                // world position of the map's (0, 0) corner
+  glm::dvec3 axisU{0.0}, axisV{0.0};     // world vectors spanning the map along u and v
+  glm::dvec3 direction{0.0, -1.0, 0.0};  // unit direction the light travels (refracted under water)
+};
+ObjectCausticMap objectCausticMap(const Context& context) noexcept;
 
 }  // namespace postfx

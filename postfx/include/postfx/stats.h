@@ -12,6 +12,7 @@ inline constexpr int kMaxPasses = 5;
 struct PassStats {
   const char* name = "";      // "caustics", "floor" (BenchmarkFloor only), "god_rays",
                               // "caustics_irradiance" (PhysicalCaustics only)
+                              // "object_caustics"
   double lastMs = 0.0;        // GPU time of the most recent resolved frame; 0 when skipped
   double medianMs = 0.0;      // median over the last kTimerMedianWindow resolved frames
   bool skipped = false;       // the most recent resolved frame skipped this pass (nothing to do)

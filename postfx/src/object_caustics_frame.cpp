@@ -1,0 +1,171 @@
+#include "object_caustics_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <gbuffer/codec.h>
+
+#include "frame_constants.h"
+
+namespace postfx::detail {
+namespace {
+
+// Light-space axes that depend on the direction only (not on the casters), so that a caster
+// moving does not rotate the map under it.
+void lightAxes(const glm::dvec3& d, glm::dvec3& right, glm::dvec3& up) {
+  const glm::dvec3 reference =
+      std::abs(d.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
+  right = glm::normalize(glm::cross(reference, d));
+  up = glm::cross(d, right);
+}
+
+glm::dvec3 corner(const glm::vec3& lo, const glm::vec3& hi, int i) {
+  return glm::dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+}
+
+bool underwaterCasters(const FrameDesc& frame) {
+  glm::dvec3 lo, hi;
+  casterWorldBounds(frame.objectCaustics, lo, hi);
+  return 0.5 * (lo.y + hi.y) < frame.water.level;
+}
+
+}  // namespace
+
+void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::dvec3& hi) {
+  lo = glm::dvec3(std::numeric_limits<double>::max());
+  hi = -lo;
+  for (int c = 0; c < objects.casterCount; ++c) {
+    const CasterMesh& mesh = objects.casters[c];
+    for (int i = 0; i < 8; ++i) {
+      const glm::dvec3 p = glm::dvec3(mesh.modelToWorld *
+                                      glm::dvec4(corner(mesh.boundsMin, mesh.boundsMax, i), 1.0));
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+}
+
+bool castersInReceiverView(const ObjectCausticsFrame& objects) {
+  glm::dvec3 lo, hi;
+  casterWorldBounds(objects, lo, hi);
+  // Bounds that overflow under their transform cannot be fitted: nothing sensible to draw.
+  const glm::dvec3 extent = hi - lo;
+  if (!(std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z)))
+    return false;
+  glm::dvec2 ndcLo(std::numeric_limits<double>::max()), ndcHi(-ndcLo);
+  bool any = false;
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    const glm::dvec4 clip = objects.receivers.worldToLightClip * glm::dvec4(p, 1.0);
+    if (!(clip.w > 0.0)) continue;
+    const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+    ndcLo = glm::min(ndcLo, ndc);
+    ndcHi = glm::max(ndcHi, ndc);
+    any = true;
+  }
+  return any && ndcHi.x >= -1.0 && ndcLo.x <= 1.0 && ndcHi.y >= -1.0 && ndcLo.y <= 1.0;
+}
+
+ObjectLightFrame fitObjectLightFrame(const FrameDesc& frame) {
+  ObjectLightFrame f;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  f.underwater = underwaterCasters(frame);
+  f.outerIor = f.underwater ? double(frame.water.ior) : 1.0;
+  f.direction = f.underwater ? glm::normalize(refractedSunDown(sun, frame.water.ior)) : -sun;
+  lightAxes(f.direction, f.right, f.up);
+
+  glm::dvec3 lo, hi;
+  casterWorldBounds(frame.objectCaustics, lo, hi);
+  glm::dvec3 llo(std::numeric_limits<double>::max()), lhi(-llo);
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    const glm::dvec3 l(glm::dot(p, f.right), glm::dot(p, f.up), glm::dot(p, f.direction));
+    llo = glm::min(llo, l);
+    lhi = glm::max(lhi, l);
+  }
+  const ObjectCausticsSettings& s = frame.objectCaustics.settings;
+  // 2% room so that silhouettes are not cut by the map's edge.
+  const double side = std::max({lhi.x - llo.x, lhi.y - llo.y, 1e-6}) * 1.02;
+  const double quantised = std::exp2(std::ceil(std::log2(side) * 8.0) / 8.0);
+  f.halfGrid = 0.5 * quantised;
+  f.halfMap = f.halfGrid * double(s.footprintScale);
+  const double cell = quantised / double(s.gridSize);
+  const double cu = std::round(0.5 * (llo.x + lhi.x) / cell) * cell;
+  const double cv = std::round(0.5 * (llo.y + lhi.y) / cell) * cell;
+  const double cz = 0.5 * (llo.z + lhi.z);
+  f.anchor = cu * f.right + cv * f.up + cz * f.direction;
+  const double depthRoom = 0.01 * (lhi.z - llo.z) + 1e-4;
+  f.zNear = llo.z - cz - depthRoom;
+  f.zFar = lhi.z - cz + depthRoom;
+  return f;
+}
+
+shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
+                                                     const FrameDesc& frame,
+                                                     const ObjectLightFrame& f, int width,
+                                                     int height) {
+  shared::ObjectCausticsBlock b{};
+  const ObjectCausticsFrame& objects = frame.objectCaustics;
+  const ObjectCausticsSettings& s = objects.settings;
+  // Anchor-relative world -> orthographic caster-map clip, z in [0, 1] (clip control set by
+  // the pass).
+  glm::dmat4 clip(0.0);
+  for (int i = 0; i < 3; ++i) {
+    clip[i][0] = f.right[i] / f.halfGrid;
+    clip[i][1] = f.up[i] / f.halfGrid;
+    clip[i][2] = f.direction[i] / (f.zFar - f.zNear);
+  }
+  clip[3][2] = -f.zNear / (f.zFar - f.zNear);
+  clip[3][3] = 1.0;
+  b.casterClip = glm::mat4(clip);
+  glm::dmat4 toAnchor(1.0);
+  toAnchor[3] = glm::dvec4(f.anchor, 1.0);
+  const glm::dmat4 receiverClip = objects.receivers.worldToLightClip * toAnchor;
+  b.receiverClip = glm::mat4(receiverClip);
+  b.receiverClipInverse = glm::mat4(glm::inverse(receiverClip));
+  b.viewToWorld = glm::mat4(glm::mat3(viewToWorldRotation(frame.camera.view)));
+
+  b.lightDir = glm::vec4(glm::vec3(f.direction), float(s.iterations));
+  b.lightRight = glm::vec4(glm::vec3(f.right), float(f.halfGrid));
+  b.lightUp = glm::vec4(glm::vec3(f.up), float(f.halfMap));
+  // Each ray carries the sun's flux through one grid cell; the map stores flux per texel area
+  // (both perpendicular to the light): irradiance relative to the sun's.
+  const double cell = 2.0 * f.halfGrid / s.gridSize, texel = 2.0 * f.halfMap / s.mapSize;
+  b.grid = glm::vec4(float(s.gridSize), float(s.mapSize), s.splatRadius,
+                     float((cell * cell) / (texel * texel)));
+  const int conv = objects.receivers.depthConvention;
+  b.receiver =
+      glm::vec4(conv == 2 ? 1.0f : 0.0f, conv == 0 ? 0.0f : 1.0f, objects.receivers.bias, 0.0f);
+  const glm::dvec3 cameraOffset = frame.camera.position - f.anchor;
+  b.cameraOffset = glm::vec4(glm::vec3(cameraOffset), float(frame.water.level - f.anchor.y));
+  b.viewport = glm::vec4(1.0f / float(width), 1.0f / float(height), float(width), float(height));
+  const gbuffer::ProjectionParams params = gbuffer::projectionParams(
+      frame.camera.projection, static_cast<gbuffer::DepthConvention>(create.depthConvention));
+  b.projection = params.xy;
+  b.depthParams = glm::vec4(params.z, f.underwater ? 1.0f : 0.0f, float(s.exitIterations));
+  b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
+  // Same water-column model as the seabed caustics: Beer-Lambert along the refracted sun.
+  const double cosT = std::max(-f.direction.y, 1e-3);
+  b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
+  for (int c = 0; c < objects.casterCount && c < POSTFX_MAX_CASTERS; ++c) {
+    const CasterMaterial& m = objects.casters[c].material;
+    const bool reflective = m.type == CasterMaterialType::Reflective;
+    b.materials[2 * c] =
+        glm::vec4(reflective ? 1.0f : 0.0f, float(double(m.ior) / f.outerIor), 0.0f, 0.0f);
+    b.materials[2 * c + 1] = glm::vec4(reflective ? m.reflectance : m.absorption, 0.0f);
+  }
+  return b;
+}
+
+ObjectCausticMap describeObjectCausticMap(const ObjectLightFrame& f, int mapSize) {
+  ObjectCausticMap map;
+  map.size = mapSize;
+  map.axisU = f.right * (2.0 * f.halfMap);
+  map.axisV = f.up * (2.0 * f.halfMap);
+  map.origin = f.anchor - f.right * f.halfMap - f.up * f.halfMap;
+  map.direction = f.direction;
+  return map;
+}
+
+}  // namespace postfx::detail

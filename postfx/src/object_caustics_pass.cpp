@@ -1,0 +1,353 @@
+#include "object_caustics_pass.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "host_target.h"
+#include "object_caustics_state.h"
+#include "shader_library.h"
+
+namespace postfx::detail {
+namespace {
+
+enum Unit : GLuint { kUnit0 = 0, kUnit1, kUnit2, kUnit3, kUnit4 };
+// Uniform locations of object_caustics_caster.* and object_caustics_temporal.frag.
+enum CasterUniform : GLint {
+  kModelToAnchor = 0,
+  kNormalToWorld = 1,
+  kCasterIndex = 2,
+  kBackFaces = 3,
+  kFlatNormals = 4
+};
+constexpr GLint kHistoryWeight = 0;
+
+bool build(const std::string& defines, const char* vertex, const char* fragment, const char* label,
+           glkit::Program& out, std::string& error) {
+  GLuint program = 0;
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines,
+                           label, program, error))
+    return false;
+  out = glkit::Program(program);
+  return true;
+}
+
+GLuint makeSampler(GLenum filter, const char* name) {
+  GLuint sampler = 0;
+  glCreateSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  // Host depth textures may carry GL_COMPARE_REF_TO_TEXTURE: ours reads depth values.
+  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glkit::label(GL_SAMPLER, sampler, name);
+  return sampler;
+}
+
+GLuint makeTexture(GLenum format, int size, const char* name) {
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, format, size, size);
+  glkit::label(GL_TEXTURE, texture, name);
+  return texture;
+}
+
+void deleteTexture(GLuint& texture) {
+  if (texture != 0) glDeleteTextures(1, &texture);
+  texture = 0;
+}
+void deleteFramebuffer(GLuint& fbo) {
+  if (fbo != 0) glDeleteFramebuffers(1, &fbo);
+  fbo = 0;
+}
+
+GLuint makeFramebuffer(const char* name) {
+  GLuint fbo = 0;
+  glCreateFramebuffers(1, &fbo);
+  glkit::label(GL_FRAMEBUFFER, fbo, name);
+  return fbo;
+}
+
+}  // namespace
+
+ObjectCausticsPass::~ObjectCausticsPass() {
+  release();
+}
+
+Result ObjectCausticsPass::init(const std::string& defines, std::string& error) {
+  release();
+  if (!build(defines, "postfx/object_caustics_caster.vert", "postfx/object_caustics_caster.frag",
+             "postfx.object_caustics.caster", caster_, error) ||
+      !build(defines, "postfx/object_caustics_splat.vert", "postfx/object_caustics_splat.frag",
+             "postfx.object_caustics.splat", splat_, error) ||
+      !build(defines, "postfx/fullscreen.vert", "postfx/object_caustics_temporal.frag",
+             "postfx.object_caustics.temporal", temporal_, error) ||
+      !build(defines, "postfx/fullscreen.vert", "postfx/object_caustics_composite.frag",
+             "postfx.object_caustics.composite", composite_, error)) {
+    release();
+    return Result::ShaderCompileFailed;
+  }
+  glCreateVertexArrays(1, &meshVao_);
+  glkit::label(GL_VERTEX_ARRAY, meshVao_, "postfx.object_caustics.mesh_vao");
+  glEnableVertexArrayAttrib(meshVao_, 0);
+  glVertexArrayAttribBinding(meshVao_, 0, 0);
+  glVertexArrayAttribBinding(meshVao_, 1, 0);
+  glCreateVertexArrays(1, &emptyVao_);
+  glkit::label(GL_VERTEX_ARRAY, emptyVao_, "postfx.object_caustics.empty_vao");
+  glCreateBuffers(1, &uniformBuffer_);
+  glNamedBufferStorage(uniformBuffer_, sizeof(shared::ObjectCausticsBlock), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
+  glkit::label(GL_BUFFER, uniformBuffer_, "postfx.object_caustics.block");
+  frontFbo_ = makeFramebuffer("postfx.object_caustics.front");
+  backFbo_ = makeFramebuffer("postfx.object_caustics.back");
+  splatFbo_ = makeFramebuffer("postfx.object_caustics.splat");
+  temporalFbo_ = makeFramebuffer("postfx.object_caustics.temporal");
+  compositeFbo_ = makeFramebuffer("postfx.object_caustics.composite");
+  const GLenum two[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(frontFbo_, 2, two);
+  glNamedFramebufferDrawBuffers(backFbo_, 2, two);
+  pointSampler_ = makeSampler(GL_NEAREST, "postfx.object_caustics.sampler.point");
+  linearSampler_ = makeSampler(GL_LINEAR, "postfx.object_caustics.sampler.linear");
+  return Result::Ok;
+}
+
+void ObjectCausticsPass::release() {
+  caster_ = glkit::Program();
+  splat_ = glkit::Program();
+  temporal_ = glkit::Program();
+  composite_ = glkit::Program();
+  if (meshVao_ != 0) glDeleteVertexArrays(1, &meshVao_);
+  if (emptyVao_ != 0) glDeleteVertexArrays(1, &emptyVao_);
+  if (uniformBuffer_ != 0) glDeleteBuffers(1, &uniformBuffer_);
+  meshVao_ = emptyVao_ = uniformBuffer_ = 0;
+  for (GLuint* fbo : {&frontFbo_, &backFbo_, &splatFbo_, &temporalFbo_, &compositeFbo_})
+    deleteFramebuffer(*fbo);
+  for (GLuint* t : {&frontPosition_, &frontNormal_, &backPosition_, &backNormal_, &casterDepth_,
+                    &splatMap_, &history_[0], &history_[1]})
+    deleteTexture(*t);
+  if (pointSampler_ != 0) glDeleteSamplers(1, &pointSampler_);
+  if (linearSampler_ != 0) glDeleteSamplers(1, &linearSampler_);
+  pointSampler_ = linearSampler_ = 0;
+  gridSize_ = mapSize_ = 0;
+  historyValid_ = false;
+  map_ = ObjectCausticMap{};
+}
+
+void ObjectCausticsPass::ensureGrid(int size) {
+  if (size == gridSize_) return;
+  for (GLuint* t : {&frontPosition_, &frontNormal_, &backPosition_, &backNormal_, &casterDepth_})
+    deleteTexture(*t);
+  // Positions in float: the hit search differences them over the caster's size.
+  frontPosition_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.front_position");
+  frontNormal_ = makeTexture(GL_RGBA16F, size, "postfx.object_caustics.front_normal");
+  backPosition_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.back_position");
+  backNormal_ = makeTexture(GL_RGBA16F, size, "postfx.object_caustics.back_normal");
+  casterDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "postfx.object_caustics.depth");
+  glNamedFramebufferTexture(frontFbo_, GL_COLOR_ATTACHMENT0, frontPosition_, 0);
+  glNamedFramebufferTexture(frontFbo_, GL_COLOR_ATTACHMENT1, frontNormal_, 0);
+  glNamedFramebufferTexture(frontFbo_, GL_DEPTH_ATTACHMENT, casterDepth_, 0);
+  glNamedFramebufferTexture(backFbo_, GL_COLOR_ATTACHMENT0, backPosition_, 0);
+  glNamedFramebufferTexture(backFbo_, GL_COLOR_ATTACHMENT1, backNormal_, 0);
+  glNamedFramebufferTexture(backFbo_, GL_DEPTH_ATTACHMENT, casterDepth_, 0);
+  gridSize_ = size;
+}
+
+void ObjectCausticsPass::ensureMap(int size) {
+  if (size == mapSize_) return;
+  for (GLuint* t : {&splatMap_, &history_[0], &history_[1]}) deleteTexture(*t);
+  // RGBA32F: a focus texel sums thousands of splats; half floats would round them away.
+  splatMap_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.splats");
+  history_[0] = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.filtered_a");
+  history_[1] = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.filtered_b");
+  glNamedFramebufferTexture(splatFbo_, GL_COLOR_ATTACHMENT0, splatMap_, 0);
+  mapSize_ = size;
+  historyValid_ = false;
+}
+
+Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFrame& light,
+                                   const shared::ObjectCausticsBlock& block, std::string& error) {
+  const ObjectCausticsSettings& s = frame.objectCaustics.settings;
+  ensureGrid(s.gridSize);
+  ensureMap(s.mapSize);
+  for (GLuint fbo : {frontFbo_, backFbo_, splatFbo_}) {
+    if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      error = "objectCaustics: an internal framebuffer is incomplete";
+      return Result::GlError;
+    }
+  }
+  if (!attachHostTarget(compositeFbo_, frame.target.texture, "object caustics", error)) {
+    glNamedFramebufferTexture(compositeFbo_, GL_COLOR_ATTACHMENT0, 0, 0);
+    return Result::GlError;
+  }
+  glNamedBufferSubData(uniformBuffer_, 0, sizeof(block), &block);
+  const ObjectCausticMap placement = describeObjectCausticMap(light, s.mapSize);
+  // The history is only meaningful in the same texel grid.
+  if (!(placement.origin == placement_.origin && placement.axisU == placement_.axisU &&
+        placement.axisV == placement_.axisV && placement.size == placement_.size))
+    historyValid_ = false;
+  placement_ = placement;
+  glm::dmat4 toAnchor(1.0);
+  toAnchor[3] = glm::dvec4(-light.anchor, 1.0);
+  anchorFromWorld_ = toAnchor;
+  return Result::Ok;
+}
+
+void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
+  const ObjectCausticsFrame& objects = frame.objectCaustics;
+  const float size = static_cast<float>(gridSize_);
+  glViewportIndexedf(0, 0.0f, 0.0f, size, size);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glUseProgram(caster_.id());
+  glBindVertexArray(meshVao_);
+  const GLuint program = caster_.id();
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  for (int side = 0; side < 2; ++side) {
+    const bool back = side == 1;
+    const GLuint fbo = back ? backFbo_ : frontFbo_;
+    const float clearDepth = back ? 0.0f : 1.0f;
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clearDepth);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+    glDepthFunc(back ? GL_GREATER : GL_LESS);
+    glProgramUniform1i(program, kBackFaces, back ? 1 : 0);
+    for (int c = 0; c < objects.casterCount; ++c) {
+      const CasterMesh& m = objects.casters[c];
+      const glm::mat4 modelToAnchor(anchorFromWorld_ * m.modelToWorld);
+      const glm::mat4 normalToWorld(
+          glm::mat3(glm::transpose(glm::inverse(glm::dmat3(m.modelToWorld)))));
+      glProgramUniformMatrix4fv(program, kModelToAnchor, 1, GL_FALSE,
+                                glm::value_ptr(modelToAnchor));
+      glProgramUniformMatrix4fv(program, kNormalToWorld, 1, GL_FALSE,
+                                glm::value_ptr(normalToWorld));
+      glProgramUniform1i(program, kCasterIndex, c);
+      const bool normals = m.normalOffset >= 0;
+      glProgramUniform1i(program, kFlatNormals, normals ? 0 : 1);
+      glVertexArrayVertexBuffer(meshVao_, 0, m.vertexBuffer, static_cast<GLintptr>(m.baseOffset),
+                                m.stride);
+      glVertexArrayAttribFormat(meshVao_, 0, 3, GL_FLOAT, GL_FALSE,
+                                static_cast<GLuint>(m.positionOffset));
+      if (normals) {
+        glEnableVertexArrayAttrib(meshVao_, 1);
+        glVertexArrayAttribFormat(meshVao_, 1, 3, GL_FLOAT, GL_FALSE,
+                                  static_cast<GLuint>(m.normalOffset));
+      } else {
+        glDisableVertexArrayAttrib(meshVao_, 1);
+      }
+      if (m.indexBuffer != 0) {
+        glVertexArrayElementBuffer(meshVao_, m.indexBuffer);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.indexCount),
+                       static_cast<GLenum>(m.indexType),
+                       reinterpret_cast<const void*>(static_cast<std::intptr_t>(m.indexOffset)));
+      } else {
+        glVertexArrayElementBuffer(meshVao_, 0);
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m.vertexCount));
+      }
+    }
+  }
+  // Our VAO must not keep the host's buffers alive after the call.
+  glVertexArrayVertexBuffer(meshVao_, 0, 0, 0, 16);
+  glVertexArrayElementBuffer(meshVao_, 0);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+}
+
+void ObjectCausticsPass::drawSplats(const FrameDesc& frame) {
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(splatFbo_, GL_COLOR, 0, zero);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, splatFbo_);
+  const float size = static_cast<float>(mapSize_);
+  glViewportIndexedf(0, 0.0f, 0.0f, size, size);
+  glEnablei(GL_BLEND, 0);
+  glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  const GLuint textures[] = {frontPosition_, frontNormal_, backPosition_, backNormal_,
+                             frame.objectCaustics.receivers.depth.texture};
+  glBindTextures(kUnit0, 5, textures);
+  const GLuint samplers[] = {pointSampler_, pointSampler_, pointSampler_, pointSampler_,
+                             linearSampler_};
+  glBindSamplers(kUnit0, 5, samplers);
+  glBindVertexArray(emptyVao_);
+  glUseProgram(splat_.id());
+  glDrawArrays(GL_POINTS, 0, gridSize_ * gridSize_);
+  glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+void ObjectCausticsPass::filterTemporally(const FrameDesc& frame) {
+  const ObjectCausticsSettings& s = frame.objectCaustics.settings;
+  if (!s.temporalFilter) {
+    historyValid_ = false;
+    map_ = placement_;
+    map_.texture = splatMap_;
+    return;
+  }
+  const int out = historyIndex_ ^ 1;
+  glNamedFramebufferTexture(temporalFbo_, GL_COLOR_ATTACHMENT0, history_[out], 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, temporalFbo_);
+  glDisablei(GL_BLEND, 0);
+  const GLuint textures[] = {splatMap_, history_[historyIndex_]};
+  glBindTextures(kUnit0, 2, textures);
+  const GLuint samplers[] = {pointSampler_, pointSampler_};
+  glBindSamplers(kUnit0, 2, samplers);
+  glProgramUniform1f(temporal_.id(), kHistoryWeight, historyValid_ ? s.temporalWeight : 0.0f);
+  glUseProgram(temporal_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  historyIndex_ = out;
+  historyValid_ = true;
+  map_ = placement_;
+  map_.texture = history_[out];
+}
+
+void ObjectCausticsPass::composite(const FrameDesc& frame, int width, int height) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_);
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
+  glEnablei(GL_BLEND, 0);
+  glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
+  const GLuint textures[] = {frame.depth.texture, frame.normal.texture, frame.albedo.texture,
+                             map_.texture, frame.objectCaustics.receivers.depth.texture};
+  glBindTextures(kUnit0, 5, textures);
+  const GLuint samplers[] = {pointSampler_, pointSampler_, pointSampler_, linearSampler_,
+                             pointSampler_};
+  glBindSamplers(kUnit0, 5, samplers);
+  glUseProgram(composite_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glNamedFramebufferTexture(compositeFbo_, GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
+void ObjectCausticsPass::draw(const FrameDesc& frame, int width, int height) {
+  ObjectCausticsStateGuard guard;
+  // Our own conventions for the maps: lower-left origin, depth in [0, 1], nothing clamped,
+  // culled, offset or restarted (the host's winding and index streams are not ours to know).
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glDepthRangeIndexed(0, 0.0, 1.0);
+  glDisable(GL_DEPTH_CLAMP);
+  glDisable(GL_PRIMITIVE_RESTART);
+  glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisablei(GL_SCISSOR_TEST, 0);
+  glDisablei(GL_BLEND, 0);
+  glDisablei(GL_BLEND, 1);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  GLint maxClip = 0;
+  glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
+  for (GLint i = 0; i < maxClip && i < 8; ++i)
+    glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
+  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING, uniformBuffer_);
+
+  drawCasterMaps(frame);
+  drawSplats(frame);
+  glBindVertexArray(emptyVao_);
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(mapSize_), static_cast<float>(mapSize_));
+  filterTemporally(frame);
+  composite(frame, width, height);
+}
+
+}  // namespace postfx::detail

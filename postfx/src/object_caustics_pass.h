@@ -1,0 +1,68 @@
+#pragma once
+// Light-map caustics of refractive and reflective casters (seed 000, section III; seed 003's
+// temporal filter), in four steps inside one timed pass:
+//   1. caster maps: the casters drawn from the sun (orthographic, fitted), nearest surface and
+//      farthest surface, positions + normals (seed 000 step 2);
+//   2. splats: one point per grid cell, refracted/reflected, hit found in image space against
+//      the host's receiver depth map, Gaussian-splatted additively into the caustic map;
+//   3. (optional) temporal filter of the caustic map;
+//   4. composite: each host pixel on a receiver reads the map and adds its light.
+// Flux per ray: a regular grid in the sun's projection gives every ray the same perpendicular
+// area, so each carries E * cellArea (times Fresnel and Beer-Lambert). This is seed 000's eq. 6
+// normalisation by the visible projected area V, with V counted by the grid itself (no query,
+// no stall); its extra N.L factor is dropped because the grid already samples the projected
+// area (keeping it would lose a third of a sphere's light).
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <glkit/program.h>
+#include <postfx/postfx.h>
+
+#include "object_caustics_frame.h"
+
+namespace postfx::detail {
+
+class ObjectCausticsPass {
+ public:
+  ObjectCausticsPass() = default;
+  ObjectCausticsPass(const ObjectCausticsPass&) = delete;
+  ObjectCausticsPass& operator=(const ObjectCausticsPass&) = delete;
+  ~ObjectCausticsPass();
+
+  Result init(const std::string& defines, std::string& error);
+  void release();
+
+  // Sizes the maps, attaches the host target, uploads the block. GlError with a message when a
+  // framebuffer is incomplete. Call under a GlStateGuard.
+  Result prepare(const FrameDesc& frame, const ObjectLightFrame& light,
+                 const shared::ObjectCausticsBlock& block, std::string& error);
+  // Steps 1-4; call under a GlStateGuard (it adds its own guard for depth/point state).
+  void draw(const FrameDesc& frame, int width, int height);
+
+  const ObjectCausticMap& map() const { return map_; }
+
+ private:
+  void ensureGrid(int size);
+  void ensureMap(int size);
+  void drawCasterMaps(const FrameDesc& frame);
+  void drawSplats(const FrameDesc& frame);
+  void filterTemporally(const FrameDesc& frame);
+  void composite(const FrameDesc& frame, int width, int height);
+
+  glkit::Program caster_, splat_, temporal_, composite_;
+  GLuint meshVao_ = 0, emptyVao_ = 0, uniformBuffer_ = 0;
+  GLuint frontFbo_ = 0, backFbo_ = 0, splatFbo_ = 0, temporalFbo_ = 0, compositeFbo_ = 0;
+  GLuint frontPosition_ = 0, frontNormal_ = 0, backPosition_ = 0, backNormal_ = 0;
+  GLuint casterDepth_ = 0;
+  GLuint splatMap_ = 0, history_[2] = {0, 0};
+  GLuint pointSampler_ = 0, linearSampler_ = 0;
+  int gridSize_ = 0, mapSize_ = 0;
+  int historyIndex_ = 0;
+  bool historyValid_ = false;
+  ObjectCausticMap map_;        // what the last frame published
+  ObjectCausticMap placement_;  // this frame's placement (texture filled by draw)
+  glm::dmat4 anchorFromWorld_{1.0};
+};
+
+}  // namespace postfx::detail

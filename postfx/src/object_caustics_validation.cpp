@@ -1,0 +1,157 @@
+#include "object_caustics_validation.h"
+
+#include <epoxy/gl.h>
+
+#include <cmath>
+
+#include "validation.h"
+
+namespace postfx::detail {
+namespace {
+
+bool inRange(double value, double lo, double hi) {
+  return value >= lo && value <= hi;  // NaN fails both
+}
+bool inRange(const glm::vec3& v, double lo, double hi) {
+  return inRange(v.x, lo, hi) && inRange(v.y, lo, hi) && inRange(v.z, lo, hi);
+}
+bool finite(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+GLint64 bufferSize(GLuint buffer) {
+  if (buffer == 0 || glIsBuffer(buffer) != GL_TRUE) return -1;
+  GLint64 size = 0;
+  glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &size);
+  return size;
+}
+
+int indexBytes(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_INT:
+      return 4;
+    case GL_UNSIGNED_SHORT:
+      return 2;
+    case GL_UNSIGNED_BYTE:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
+Result checkCaster(int index, const CasterMesh& m, std::string& error) {
+  const std::string field = "objectCaustics.casters[" + std::to_string(index) + "]";
+  auto fail = [&](const std::string& message, Result r = Result::InvalidArgument) {
+    error = field + message;
+    return r;
+  };
+  const bool indexed = m.indexBuffer != 0;
+  const std::int64_t drawn = indexed ? m.indexCount : m.vertexCount;
+  if (drawn < 3)
+    return fail(
+        indexed ? ".indexCount must be >= 3 (no triangles), got " + std::to_string(m.indexCount)
+                : ".vertexCount must be >= 3 (no triangles), got " + std::to_string(m.vertexCount));
+  if (m.vertexCount < 1) return fail(".vertexCount must be >= 1");
+  if (m.stride < 12 || m.stride > 2048)
+    return fail(".stride must be in [12, 2048] bytes, got " + std::to_string(m.stride));
+  if (m.positionOffset < 0 || m.positionOffset + 12 > m.stride)
+    return fail(".positionOffset must leave 12 bytes inside the stride");
+  if (m.normalOffset >= 0 && m.normalOffset + 12 > m.stride)
+    return fail(".normalOffset must leave 12 bytes inside the stride (or be < 0: none)");
+  if (m.baseOffset < 0 || m.indexOffset < 0) return fail(": byte offsets must be >= 0");
+  const GLint64 vertexBytes = bufferSize(m.vertexBuffer);
+  if (vertexBytes < 0)
+    return fail(".vertexBuffer " + std::to_string(m.vertexBuffer) + " is not a buffer name",
+                Result::MissingTexture);
+  if (m.baseOffset + (m.vertexCount - 1) * std::int64_t(m.stride) + m.positionOffset + 12 >
+      vertexBytes)
+    return fail(".vertexBuffer holds " + std::to_string(vertexBytes) + " bytes, too few for " +
+                    std::to_string(m.vertexCount) + " vertices",
+                Result::SizeMismatch);
+  if (indexed) {
+    const int bytes = indexBytes(m.indexType);
+    if (bytes == 0)
+      return fail(".indexType must be GL_UNSIGNED_INT, GL_UNSIGNED_SHORT or GL_UNSIGNED_BYTE");
+    const GLint64 indexBufferBytes = bufferSize(m.indexBuffer);
+    if (indexBufferBytes < 0)
+      return fail(".indexBuffer " + std::to_string(m.indexBuffer) + " is not a buffer name",
+                  Result::MissingTexture);
+    if (m.indexOffset % bytes != 0) return fail(".indexOffset must be aligned to the index size");
+    if (m.indexOffset + m.indexCount * bytes > indexBufferBytes)
+      return fail(".indexBuffer holds " + std::to_string(indexBufferBytes) +
+                      " bytes, too few for " + std::to_string(m.indexCount) + " indices",
+                  Result::SizeMismatch);
+  }
+  if (!finite(m.modelToWorld)) return fail(".modelToWorld is not finite (NaN or Inf)");
+  const double det = glm::determinant(glm::dmat3(m.modelToWorld));
+  if (!(std::abs(det) > 1e-30)) return fail(".modelToWorld is not invertible");
+  if (!inRange(m.boundsMin, -1e30, 1e30) || !inRange(m.boundsMax, -1e30, 1e30) ||
+      !(m.boundsMin.x <= m.boundsMax.x && m.boundsMin.y <= m.boundsMax.y &&
+        m.boundsMin.z <= m.boundsMax.z))
+    return fail(": boundsMin/boundsMax must be finite with min <= max");
+  const CasterMaterial& mat = m.material;
+  if (mat.type != CasterMaterialType::Refractive && mat.type != CasterMaterialType::Reflective)
+    return fail(".material.type is not a CasterMaterialType");
+  if (!inRange(mat.ior, 1.0, 3.0))
+    return fail(".material.ior must be in [1, 3], got " + std::to_string(mat.ior));
+  if (!inRange(mat.absorption, 0.0, 1e4))
+    return fail(".material.absorption must be in [0, 1e4] per metre");
+  if (!inRange(mat.reflectance, 0.0, 1.0)) return fail(".material.reflectance must be in [0, 1]");
+  return Result::Ok;
+}
+
+}  // namespace
+
+Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
+  const ObjectCausticsFrame& o = frame.objectCaustics;
+  auto fail = [&error](std::string message) {
+    error = std::move(message);
+    return Result::InvalidArgument;
+  };
+  const ObjectCausticsSettings& s = o.settings;
+  GLint maxTexture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+  if (s.mapSize < 16 || s.mapSize > maxTexture)
+    return fail("objectCaustics.settings.mapSize must be in [16, GL_MAX_TEXTURE_SIZE = " +
+                std::to_string(maxTexture) + "], got " + std::to_string(s.mapSize));
+  if (s.gridSize < 16 || s.gridSize > 2048 || s.gridSize > maxTexture)
+    return fail("objectCaustics.settings.gridSize must be in [16, 2048], got " +
+                std::to_string(s.gridSize));
+  if (s.iterations < 1 || s.iterations > 8)
+    return fail("objectCaustics.settings.iterations must be in [1, 8], got " +
+                std::to_string(s.iterations));
+  if (s.exitIterations < 1 || s.exitIterations > 8)
+    return fail("objectCaustics.settings.exitIterations must be in [1, 8], got " +
+                std::to_string(s.exitIterations));
+  if (!inRange(s.splatRadius, 0.5, 8.0))
+    return fail("objectCaustics.settings.splatRadius must be in [0.5, 8] texels");
+  if (!inRange(s.footprintScale, 1.0, 8.0))
+    return fail("objectCaustics.settings.footprintScale must be in [1, 8]");
+  if (!inRange(s.intensity, 0.0, 1e4))
+    return fail("objectCaustics.settings.intensity must be in [0, 1e4]");
+  if (!inRange(s.temporalWeight, 0.0, 0.95))
+    return fail("objectCaustics.settings.temporalWeight must be in [0, 0.95]");
+  if (o.casterCount < 0 || o.casterCount > kMaxCasters)
+    return fail("objectCaustics.casterCount must be in [0, " + std::to_string(kMaxCasters) +
+                "], got " + std::to_string(o.casterCount));
+  if (o.casterCount == 0) return Result::Ok;  // nothing else is read
+  if (o.casters == nullptr) return fail("objectCaustics.casters is null but casterCount > 0");
+  for (int i = 0; i < o.casterCount; ++i) {
+    const Result r = checkCaster(i, o.casters[i], error);
+    if (r != Result::Ok) return r;
+  }
+  const SunShadowMap& rec = o.receivers;
+  if (!finite(rec.worldToLightClip))
+    return fail("objectCaustics.receivers.worldToLightClip is not finite");
+  if (!(std::abs(glm::determinant(rec.worldToLightClip)) > 1e-300))
+    return fail("objectCaustics.receivers.worldToLightClip is not invertible");
+  if (rec.depthConvention < 0 || rec.depthConvention > 2)
+    return fail("objectCaustics.receivers.depthConvention must be 0, 1 or 2");
+  if (!inRange(rec.bias, 0.0, 1.0)) return fail("objectCaustics.receivers.bias must be in [0, 1]");
+  return checkDepthTexture("objectCaustics.receivers.depth", rec.depth, error);
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,49 @@
+#version 450 core
+// Adds the caustic map's light to every host pixel lying on a receiver (seed 000, III.B last
+// step): the pixel is projected along the light into the map; pixels not on the receiver depth
+// map's surface (the casters themselves, anything between them and the sun, anything in a
+// receiver's shadow) get nothing.
+#include "shared/common.h"
+#include "shared/gbuffer_codec.h"
+#include "shared/postfx_caustics.h"
+#include "shared/postfx_object_caustics_block.h"
+
+layout(binding = 0) uniform sampler2D gbufferDepth;
+layout(binding = 1) uniform sampler2D gbufferNormal;
+layout(binding = 2) uniform sampler2D gbufferAlbedo;
+layout(binding = 3) uniform sampler2D causticMap;
+layout(binding = 4) uniform sampler2D receiverDepth;
+
+layout(location = 0) out vec4 outLight;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(gbufferDepth, pixel, 0).r;
+  if (isSkyDepth(depth, POSTFX_DEPTH_CONVENTION)) discard;
+  vec3 viewPos = viewPositionFromDepth(gl_FragCoord.xy * u.viewport.xy, depth, u.projection,
+                                       u.depthParams.xy, POSTFX_DEPTH_CONVENTION);
+  vec3 p = mat3(u.viewToWorld) * viewPos + u.cameraOffset.xyz;  // anchor-relative
+  vec3 n = decodeNormal(texelFetch(gbufferNormal, pixel, 0), POSTFX_NORMAL_ENCODING);
+  float nDotL = -dot(n, u.lightDir.xyz);
+  if (!(nDotL > 0.0)) discard;
+  vec2 uv = vec2(dot(p, u.lightRight.xyz), dot(p, u.lightUp.xyz)) / (2.0 * u.lightUp.w) + 0.5;
+  if (!(all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))))) discard;
+
+  vec4 clip = u.receiverClip * vec4(p, 1.0);
+  if (!(clip.w > 0.0)) discard;
+  vec3 ndc = clip.xyz / clip.w;
+  vec2 ruv = ndc.xy * 0.5 + 0.5;
+  if (!(all(greaterThanEqual(ruv, vec2(0.0))) && all(lessThanEqual(ruv, vec2(1.0))))) discard;
+  float pixelDepth = u.receiver.x > 0.5 ? ndc.z * 0.5 + 0.5 : ndc.z;
+  float onReceiver = textureLod(receiverDepth, ruv, 0.0).r;
+  if (!(abs(pixelDepth - onReceiver) <= u.receiver.z)) discard;
+
+  vec3 caustic = max(textureLod(causticMap, uv, 0.0).rgb, vec3(0.0));
+  vec3 light = caustic * nDotL * u.lightScale.rgb;
+  if (u.depthParams.z > 0.5) {  // under water: the water column between surface and receiver
+    float depthBelow = max(u.cameraOffset.w - p.y, 0.0);
+    light *= exp(-u.waterAbsorption.rgb * depthBelow);
+  }
+  vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
+  outLight = vec4(albedo * light, 0.0);
+}

@@ -1,0 +1,203 @@
+#version 450 core
+// One light ray per grid cell (seed 000, section III.C): refract at the front surface, find
+// the back surface in image space and refract out (Wyman's double refraction), or reflect for
+// metal; find the receiver in image space (eq. 1-4, with a bisection fallback when the
+// iteration oscillates) and splat the ray's flux there as a Gaussian point.
+#include "shared/common.h"
+#include "shared/gbuffer_codec.h"
+#include "shared/postfx_object_caustics.h"
+#include "shared/postfx_object_caustics_block.h"
+
+layout(binding = 0) uniform sampler2D frontPosition;
+layout(binding = 1) uniform sampler2D frontNormal;
+layout(binding = 2) uniform sampler2D backPosition;
+layout(binding = 3) uniform sampler2D backNormal;
+layout(binding = 4) uniform sampler2D receiverDepth;
+
+flat out vec2 splatCentre;  // map texels
+flat out vec3 splatFlux;
+
+const float kNoBracket = 1e30;
+
+void dropRay() {
+  gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: culled
+  gl_PointSize = 1.0;
+  splatCentre = vec2(0.0);
+  splatFlux = vec3(0.0);
+}
+
+// Light-space (u, v) of p, in [0, 1] over the grid region.
+vec2 gridUv(vec3 p) {
+  return vec2(dot(p, u.lightRight.xyz), dot(p, u.lightUp.xyz)) / (2.0 * u.lightRight.w) + 0.5;
+}
+
+// The back surface where the sun ray through p leaves the casters: bilinear over the covered
+// texels only (a silhouette texel must not pull positions towards 0).
+bool backSurface(vec3 p, out vec3 position, out vec3 normal) {
+  int size = int(u.grid.x);
+  vec2 t = gridUv(p) * u.grid.x - 0.5;
+  ivec2 base = ivec2(floor(t));
+  vec2 f = t - floor(t);
+  vec4 sumPosition = vec4(0.0);
+  vec3 sumNormal = vec3(0.0);
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      ivec2 texel = base + ivec2(i, j);
+      if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(size)))) continue;
+      vec4 q = texelFetch(backPosition, texel, 0);
+      if (!(q.w > 0.5)) continue;
+      float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+      sumPosition += vec4(q.xyz, 1.0) * w;
+      sumNormal += texelFetch(backNormal, texel, 0).xyz * w;
+    }
+  }
+  if (!(sumPosition.w > 1e-4)) return false;
+  position = sumPosition.xyz / sumPosition.w;
+  normal = safeNormalize(sumNormal);
+  return dot(normal, normal) > 0.5;
+}
+
+// The receiver point on the sun ray through p, read from the host's receiver depth map.
+bool receiverSurface(vec3 p, out vec3 position) {
+  vec4 clip = u.receiverClip * vec4(p, 1.0);
+  if (!(clip.w > 0.0)) return false;
+  vec3 ndc = clip.xyz / clip.w;
+  vec2 uv = ndc.xy * 0.5 + 0.5;
+  if (!(all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))))) return false;
+  float depth = textureLod(receiverDepth, uv, 0.0).r;
+  if (!(abs(depth - u.receiver.y) > 1e-6)) return false;  // cleared: no receiver there
+  float ndcZ = u.receiver.x > 0.5 ? depth * 2.0 - 1.0 : depth;
+  vec4 q = u.receiverClipInverse * vec4(ndc.xy, ndcZ, 1.0);
+  if (!(abs(q.w) > 1e-20)) return false;
+  position = q.xyz / q.w;
+  return true;
+}
+
+// The image-space root search of seed 000 (eq. 1-4) along origin + d * ray against a surface
+// seen from the light (the back faces, or the receivers). g(d) = (probe - S(probe)) . L is the
+// probe's signed distance behind the surface along the light (< 0: not there yet). The seed's
+// step d <- |S(probe) - origin| is taken while it stays inside the bracket [lo, hi] that the signs
+// of g give and keeps contracting; when it leaves the bracket or stops contracting (the
+// oscillation seed 000 III.D describes), a bracketed step replaces it: false position, or
+// bisection when that degenerates.
+float nextDistance(float d, float g, float seedNext, inout vec4 bracket, inout float lastStep) {
+  // bracket = (lo, g(lo), hi, g(hi)); hi = kNoBracket while no probe has passed the surface.
+  if (g < 0.0) {
+    if (d >= bracket.x) bracket.xy = vec2(d, g);
+  } else if (d <= bracket.z) {
+    bracket.zw = vec2(d, g);
+  }
+  float step = abs(seedNext - d);
+  // A converged estimate sits on the bracket's end: only a real step may trigger the fallback.
+  float tolerance = 1e-5 * (d + 1.0);
+  bool outside = seedNext < bracket.x - tolerance || seedNext > bracket.z + tolerance;
+  float next = seedNext;
+  if (bracket.z < kNoBracket && step > tolerance && (outside || step >= lastStep)) {
+    float span = bracket.w - bracket.y;  // > 0: g(lo) < 0 <= g(hi)
+    float falsePosition = bracket.x - bracket.y * (bracket.z - bracket.x) / max(span, 1e-30);
+    bool inside = falsePosition > bracket.x && falsePosition < bracket.z;
+    next = inside ? falsePosition : 0.5 * (bracket.x + bracket.z);
+  }
+  lastStep = abs(next - d);
+  return next;
+}
+
+// Where the ray leaves the casters through the back surface. False: no back surface under the
+// ray (a single-sided sheet): the caller exits at the entry point.
+bool hitBack(vec3 origin, vec3 ray, int iterations, out vec3 exitPoint, out vec3 exitNormal) {
+  vec3 surface, normal;
+  if (!backSurface(origin, surface, normal)) return false;
+  float d = length(surface - origin), lastStep = kNoBracket;
+  vec4 bracket = vec4(0.0, dot(origin - surface, u.lightDir.xyz), kNoBracket, kNoBracket);
+  for (int k = 0; k < iterations; ++k) {
+    vec3 probe = origin + d * ray;
+    vec3 s, n;
+    if (!backSurface(probe, s, n)) break;  // left the footprint: keep the estimate
+    d = nextDistance(d, dot(probe - s, u.lightDir.xyz), length(s - origin), bracket, lastStep);
+  }
+  if (backSurface(origin + d * ray, surface, normal)) {
+    exitPoint = surface;
+    exitNormal = normal;
+  } else {
+    exitPoint = origin + d * ray;
+    exitNormal = u.lightDir.xyz;
+  }
+  return true;
+}
+
+bool hitReceiver(vec3 origin, vec3 ray, int iterations, out vec3 hit) {
+  vec3 surface;
+  if (!receiverSurface(origin, surface)) return false;
+  float gOrigin = dot(origin - surface, u.lightDir.xyz);
+  float d = length(surface - origin), lastStep = kNoBracket;
+  vec4 bracket = vec4(0.0, gOrigin, kNoBracket, kNoBracket);
+  for (int k = 0; k < iterations; ++k) {
+    vec3 probe = origin + d * ray;
+    if (!receiverSurface(probe, surface)) return false;  // left the receivers
+    d = nextDistance(d, dot(probe - surface, u.lightDir.xyz), length(surface - origin), bracket,
+                     lastStep);
+  }
+  vec3 probe = origin + d * ray;
+  if (!receiverSurface(probe, hit)) return false;
+  // A ray that never meets the receivers (sent up and away) still gets an estimate, but its
+  // probe ends farther in front of them than the ray's origin was: it moved away.
+  return dot(probe - hit, u.lightDir.xyz) >= gOrigin;
+}
+
+void main() {
+  int size = int(u.grid.x);
+  ivec2 cell = ivec2(gl_VertexID % size, gl_VertexID / size);
+  vec4 front = texelFetch(frontPosition, cell, 0);
+  if (!(front.w > 0.5)) {
+    dropRay();
+    return;
+  }
+  int caster = clamp(int(front.w + 0.5) - 1, 0, POSTFX_MAX_CASTERS - 1);
+  vec4 material = u.materials[2 * caster];
+  vec3 tint = u.materials[2 * caster + 1].rgb;
+  vec3 l = u.lightDir.xyz;
+  vec3 n0 = texelFetch(frontNormal, cell, 0).xyz;  // faces the light
+  float cosI = clamp(-dot(l, n0), 0.0, 1.0);
+  int iterations = int(u.lightDir.w);
+
+  vec3 origin, ray, flux;
+  if (material.x > 0.5) {  // reflective
+    // Even a ray sent back towards the sun can land on a receiver the sun sees (in front of a
+    // mirror); one that never does is caught by hitReceiver.
+    ray = reflect(l, n0);
+    origin = front.xyz;
+    flux = fresnelSchlick(cosI, tint);
+  } else {
+    float eta = material.y;  // object over outer medium
+    vec3 inside = refract(l, n0, 1.0 / eta);
+    float transmitted = 1.0 - fresnelDielectric(cosI, eta);
+    vec3 exitPoint = front.xyz, exitNormal = -n0;
+    hitBack(front.xyz, inside, int(u.depthParams.w), exitPoint, exitNormal);
+    // exitNormal faces away from the light: the outward normal on the exit side.
+    float cosExit = abs(dot(inside, exitNormal));
+    ray = refract(inside, -exitNormal * sign(dot(inside, exitNormal) + 1e-20), eta);
+    if (!(dot(ray, ray) > 0.5)) {  // total internal reflection: this ray's light stays inside
+      dropRay();
+      return;
+    }
+    transmitted *= 1.0 - fresnelDielectric(cosExit, 1.0 / eta);
+    float path = length(exitPoint - front.xyz);
+    flux = transmitted * exp(-tint * path);
+    origin = exitPoint;
+  }
+  vec3 hit;
+  if (!hitReceiver(origin, ray, iterations, hit)) {
+    dropRay();
+    return;
+  }
+  vec2 uv = vec2(dot(hit, u.lightRight.xyz), dot(hit, u.lightUp.xyz)) / (2.0 * u.lightUp.w) + 0.5;
+  splatFlux = flux * u.grid.w;
+  splatCentre = uv * u.grid.y;
+  // NaN fails every comparison, Inf fails the bound: neither reaches the map.
+  if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))))) {
+    dropRay();
+    return;
+  }
+  gl_PointSize = splatSpriteSize(u.grid.z);
+  gl_Position = vec4(uv * 2.0 - 1.0, 0.5, 1.0);
+}

@@ -1,0 +1,52 @@
+// Uniform block of the object-caustics passes (caster maps, splats, composite), one layout for
+// C++ (filled in double on the CPU, then cast) and GLSL (std140). Only vec4/mat4 members, so
+// std140 adds no padding and the C++ struct matches byte for byte (static_assert below).
+// Positions are relative to the anchor: the snapped centre of the casters' sun footprint.
+#ifndef POSTFX_SHARED_OBJECT_CAUSTICS_BLOCK_H
+#define POSTFX_SHARED_OBJECT_CAUSTICS_BLOCK_H
+#include "shared/common.h"
+
+// Binding 0 is the seabed caustics block's: the passes never run together, and the state guard
+// already saves and restores binding 0.
+#define POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING 0
+#define POSTFX_MAX_CASTERS 64
+
+SHARED_BEGIN
+
+#ifdef __cplusplus
+struct ObjectCausticsBlock {
+#else
+layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCausticsBlock {
+#endif
+  mat4 casterClip;           // anchor-relative world -> caster-map clip (orthographic, z in [0,1])
+  mat4 receiverClip;         // anchor-relative world -> the host's receiver-map clip
+  mat4 receiverClipInverse;  // receiver-map clip -> anchor-relative world
+  mat4 viewToWorld;          // camera view -> world rotation (composite)
+  vec4 lightDir;             // xyz: unit direction the light travels; w: hit iterations
+  vec4 lightRight;           // xyz: map u axis (unit); w: half side of the grid region (m)
+  vec4 lightUp;              // xyz: map v axis (unit); w: half side of the map region (m)
+  vec4 grid;             // x: grid size, y: map size, z: splat sigma (map texels), w: flux per ray
+  vec4 receiver;         // x: 1 = [-1,1] depth convention, y: window depth of "no receiver" (far),
+                         // z: receiver depth tolerance (window units), w: unused
+  vec4 cameraOffset;     // xyz: camera - anchor (m); w: water level - anchor y (m)
+  vec4 viewport;         // 1/width, 1/height, width, height
+  vec4 projection;       // P[0][0], P[1][1], P[2][0], P[2][1]
+  vec4 depthParams;      // xy: P[2][2], P[3][2]; z: 1 when the casters are under water;
+                         // w: back-surface (exit) iterations
+  vec4 lightScale;       // rgb: sun irradiance * intensity; w: unused
+  vec4 waterAbsorption;  // rgb: water absorption / cos(theta_t) per metre of depth; w: unused
+  // Per caster i: [2i] x: 0 refractive / 1 reflective, y: IOR relative to the outer medium;
+  // [2i+1] rgb: absorption per metre (refractive) or F0 (reflective).
+  vec4 materials[2 * POSTFX_MAX_CASTERS];
+#ifdef __cplusplus
+};
+static_assert(sizeof(ObjectCausticsBlock) == 4 * 64 + 11 * 16 + 2 * POSTFX_MAX_CASTERS * 16,
+              "ObjectCausticsBlock must match its std140 layout");
+#else
+}
+u;
+#endif
+
+SHARED_END
+
+#endif

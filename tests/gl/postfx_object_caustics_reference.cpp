@@ -1,0 +1,208 @@
+#include "postfx_object_caustics_reference.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <thread>
+
+namespace postfxtest {
+namespace {
+
+struct Landing {
+  glm::dvec3 point;
+  glm::dvec3 flux;  // fraction of the ray's flux that arrives
+};
+
+// Returns nothing when the ray misses the caster; a landing with zero flux when it hits but its
+// light never reaches the plane.
+using TraceFn =
+    std::function<std::optional<Landing>(const glm::dvec3& origin, const glm::dvec3& dir)>;
+
+double fresnel(double cosI, double eta) {
+  cosI = std::clamp(cosI, 0.0, 1.0);
+  const double sinT2 = (1.0 - cosI * cosI) / (eta * eta);
+  if (sinT2 >= 1.0) return 1.0;
+  const double cosT = std::sqrt(1.0 - sinT2);
+  const double rs = (cosI - eta * cosT) / (cosI + eta * cosT);
+  const double rp = (eta * cosI - cosT) / (eta * cosI + cosT);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+std::optional<glm::dvec3> refractRay(const glm::dvec3& i, const glm::dvec3& n, double eta) {
+  const double c = -glm::dot(n, i);
+  const double k = 1.0 - eta * eta * (1.0 - c * c);
+  if (k < 0.0) return std::nullopt;
+  return eta * i + (eta * c - std::sqrt(k)) * n;
+}
+
+std::optional<glm::dvec3> landOnPlane(const glm::dvec3& p, const glm::dvec3& d, double planeY) {
+  if (!(d.y < -1e-12)) return std::nullopt;
+  const double t = (planeY - p.y) / d.y;
+  if (t < 0.0) return std::nullopt;
+  return p + d * t;
+}
+
+CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfSide,
+                       const glm::dvec3& towardSun, const postfx::ObjectCausticMap& map, int n,
+                       const char* name) {
+  const glm::dvec3 d = -glm::normalize(towardSun);
+  const glm::dvec3 ref = std::abs(d.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 right = glm::normalize(glm::cross(ref, d)), up = glm::cross(d, right);
+  const double cell = 2.0 * halfSide / n;
+  const glm::dvec3 start = centre - d * (10.0 * halfSide + 10.0);
+  const int size = map.size;
+  const double u2 = glm::dot(map.axisU, map.axisU), v2 = glm::dot(map.axisV, map.axisV);
+  const double texelArea = std::sqrt(u2 * v2) / (double(size) * size);
+  CausticReference out;
+  out.size = size;
+  out.irradiance.assign(static_cast<size_t>(size) * size, glm::dvec3(0.0));
+  std::mutex merge;
+  const int threads = 2;
+  auto work = [&](int t) {
+    CausticReference local;
+    local.irradiance.assign(static_cast<size_t>(size) * size, glm::dvec3(0.0));
+    for (int j = t; j < n; j += threads) {
+      if (t == 0 && (j % (n / 4 + 1)) == 0)
+        std::fprintf(stderr, "[reference %s] %d%%\n", name, 100 * j / n);
+      std::mt19937_64 rng(0x5eedULL + static_cast<unsigned long long>(j));
+      std::uniform_real_distribution<double> jitter(0.0, 1.0);
+      for (int i = 0; i < n; ++i) {
+        const double a = -halfSide + (i + jitter(rng)) * cell;
+        const double b = -halfSide + (j + jitter(rng)) * cell;
+        const std::optional<Landing> l = fn(start + right * a + up * b, d);
+        if (!l) continue;
+        local.interceptedArea += cell * cell;
+        const glm::dvec3 flux = l->flux * (cell * cell);
+        if (flux == glm::dvec3(0.0)) continue;
+        const glm::dvec3 rel = l->point - map.origin;
+        const double tu = glm::dot(rel, map.axisU) / u2 * size;
+        const double tv = glm::dot(rel, map.axisV) / v2 * size;
+        if (tu >= 0.0 && tv >= 0.0 && tu < size && tv < size) {
+          local.irradiance[static_cast<size_t>(tv) * size + static_cast<size_t>(tu)] +=
+              flux / texelArea;
+          local.fluxInMap += flux;
+        } else {
+          local.fluxOutside += flux;
+        }
+      }
+    }
+    std::lock_guard<std::mutex> lock(merge);
+    for (size_t k = 0; k < out.irradiance.size(); ++k) out.irradiance[k] += local.irradiance[k];
+    out.fluxInMap += local.fluxInMap;
+    out.fluxOutside += local.fluxOutside;
+    out.interceptedArea += local.interceptedArea;
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work, t);
+  for (std::thread& th : pool) th.join();
+  std::fprintf(stderr, "[reference %s] 100%%\n", name);
+  return out;
+}
+
+}  // namespace
+
+CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& towardSun,
+                                      double planeY, const postfx::ObjectCausticMap& map,
+                                      int raysPerSide) {
+  const TraceFn fn = [&s, planeY](const glm::dvec3& o,
+                                  const glm::dvec3& d) -> std::optional<Landing> {
+    const glm::dvec3 oc = o - s.centre;
+    const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
+    const double disc = b * b - c;
+    if (disc <= 0.0) return std::nullopt;
+    const glm::dvec3 p1 = o + d * (-b - std::sqrt(disc));
+    const glm::dvec3 n1 = (p1 - s.centre) / s.radius;
+    Landing none{p1, glm::dvec3(0.0)};
+    const double t1 = 1.0 - fresnel(-glm::dot(d, n1), s.ior);
+    const std::optional<glm::dvec3> in = refractRay(d, n1, 1.0 / s.ior);
+    if (!in) return none;
+    const double chord = -2.0 * glm::dot(p1 - s.centre, *in);
+    const glm::dvec3 p2 = p1 + *in * chord;
+    const glm::dvec3 n2 = (p2 - s.centre) / s.radius;
+    const std::optional<glm::dvec3> outRay = refractRay(*in, -n2, s.ior);
+    if (!outRay) return none;  // total internal reflection (never for a sphere)
+    const double t2 = 1.0 - fresnel(glm::dot(*in, n2), 1.0 / s.ior);
+    const std::optional<glm::dvec3> hit = landOnPlane(p2, glm::normalize(*outRay), planeY);
+    if (!hit) return none;
+    return Landing{*hit, t1 * t2 * glm::exp(-s.absorption * chord)};
+  };
+  return trace(fn, s.centre, s.radius * 1.01, towardSun, map, raysPerSide, "sphere");
+}
+
+CausticReference traceRingReference(const RingCaster& r, const glm::dvec3& towardSun, double planeY,
+                                    const postfx::ObjectCausticMap& map, int raysPerSide) {
+  const TraceFn fn = [&r, planeY](const glm::dvec3& o,
+                                  const glm::dvec3& d) -> std::optional<Landing> {
+    const double top = r.base.y + r.height, bottom = r.base.y;
+    auto radial = [&r](const glm::dvec3& p) { return glm::dvec2(p.x - r.base.x, p.z - r.base.z); };
+    // Roots of |radial(o + t d)| = radius.
+    auto cylinder = [&](double radius, double& t0, double& t1) {
+      const glm::dvec2 q = radial(o), e(d.x, d.z);
+      const double a = glm::dot(e, e), b = glm::dot(q, e), c = glm::dot(q, q) - radius * radius;
+      const double disc = b * b - a * c;
+      if (a < 1e-18 || disc <= 0.0) return false;
+      t0 = (-b - std::sqrt(disc)) / a;
+      t1 = (-b + std::sqrt(disc)) / a;
+      return true;
+    };
+    const double tTop = (top - o.y) / d.y;
+    const double rTop = glm::length(radial(o + d * tTop));
+    glm::dvec3 p, n;
+    if (rTop <= r.inner) {  // through the opening: the far inner wall, or the floor inside
+      double t0, t1;
+      if (!cylinder(r.inner, t0, t1)) return std::nullopt;
+      p = o + d * t1;
+      if (p.y < bottom) return std::nullopt;
+      const glm::dvec2 q = radial(p) / r.inner;
+      n = glm::dvec3(-q.x, 0.0, -q.y);
+    } else if (rTop <= r.outer) {  // top annulus
+      p = o + d * tTop;
+      n = glm::dvec3(0.0, 1.0, 0.0);
+    } else {  // beside the top: the outer wall, if the ray meets it below the top
+      double t0, t1;
+      if (!cylinder(r.outer, t0, t1) || t0 < tTop) return std::nullopt;
+      p = o + d * t0;
+      if (p.y < bottom) return std::nullopt;
+      const glm::dvec2 q = radial(p) / r.outer;
+      n = glm::dvec3(q.x, 0.0, q.y);
+    }
+    const double cosI = -glm::dot(d, n);
+    const glm::dvec3 reflected = d + 2.0 * cosI * n;
+    const double m = 1.0 - std::clamp(cosI, 0.0, 1.0);
+    const glm::dvec3 f = r.f0 + (glm::dvec3(1.0) - r.f0) * (m * m * m * m * m);
+    const std::optional<glm::dvec3> hit = landOnPlane(p, reflected, planeY);
+    if (!hit) return Landing{p, glm::dvec3(0.0)};
+    return Landing{*hit, f};
+  };
+  const glm::dvec3 centre = r.base + glm::dvec3(0.0, 0.5 * r.height, 0.0);
+  return trace(fn, centre, std::hypot(r.outer, 0.5 * r.height) * 1.01, towardSun, map, raysPerSide,
+               "ring");
+}
+
+std::vector<glm::dvec3> gaussianBlur(const std::vector<glm::dvec3>& map, int size, double sigma) {
+  const int radius = static_cast<int>(std::ceil(3.0 * sigma));
+  std::vector<double> kernel(2 * radius + 1);
+  double sum = 0.0;
+  for (int k = -radius; k <= radius; ++k)
+    sum += kernel[k + radius] = std::exp(-k * k / (2 * sigma * sigma));
+  for (double& k : kernel) k /= sum;
+  std::vector<glm::dvec3> tmp(map.size(), glm::dvec3(0.0)), out(map.size(), glm::dvec3(0.0));
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      for (int k = -radius; k <= radius; ++k) {
+        const int xx = x + k;
+        if (xx >= 0 && xx < size) tmp[y * size + x] += map[y * size + xx] * kernel[k + radius];
+      }
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      for (int k = -radius; k <= radius; ++k) {
+        const int yy = y + k;
+        if (yy >= 0 && yy < size) out[y * size + x] += tmp[yy * size + x] * kernel[k + radius];
+      }
+  return out;
+}
+
+}  // namespace postfxtest

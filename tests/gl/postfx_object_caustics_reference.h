@@ -1,0 +1,48 @@
+#pragma once
+// Exact CPU ray tracing (double precision) of the object caustics the plugin approximates: a
+// glass sphere (refraction in and out, exact unpolarised Fresnel at both surfaces, Beer-Lambert
+// inside) and a reflective ring (one specular bounce, Schlick F0), over the plane y = planeY,
+// binned into the plugin's caustic-map texel grid. Deterministic: stratified rays with a fixed
+// seed, rows split over 2 threads.
+#include <glm/glm.hpp>
+#include <vector>
+
+#include <postfx/postfx.h>
+
+namespace postfxtest {
+
+struct SphereCaster {
+  glm::dvec3 centre{0.0};
+  double radius = 1.0;
+  double ior = 1.5;  // relative to the outer medium
+  glm::dvec3 absorption{0.0};
+};
+
+struct RingCaster {
+  glm::dvec3 base{0.0};  // centre of the ring's bottom
+  double inner = 1.0, outer = 1.05, height = 0.5;
+  glm::dvec3 f0{1.0};  // Schlick reflectance at normal incidence
+};
+
+struct CausticReference {
+  int size = 0;
+  std::vector<glm::dvec3> irradiance;  // per map texel, relative to the sun's (as the GPU map)
+  glm::dvec3 fluxInMap{0.0};           // landed inside the map (sun irradiance 1, m^2)
+  glm::dvec3 fluxOutside{0.0};         // landed on the plane outside the map
+  double interceptedArea = 0.0;        // sun-perpendicular area of rays that hit the caster
+};
+
+// `map`: the plugin's map placement (from postfx::objectCausticMap); raysPerSide^2 rays over a
+// sun-perpendicular square of half side `halfSide` around the caster.
+CausticReference traceSphereReference(const SphereCaster& sphere, const glm::dvec3& towardSun,
+                                      double planeY, const postfx::ObjectCausticMap& map,
+                                      int raysPerSide);
+CausticReference traceRingReference(const RingCaster& ring, const glm::dvec3& towardSun,
+                                    double planeY, const postfx::ObjectCausticMap& map,
+                                    int raysPerSide);
+
+// Separable Gaussian blur (sigma in texels) of a size x size map, for comparing the reference
+// with the GPU's splatted map at the same resolution.
+std::vector<glm::dvec3> gaussianBlur(const std::vector<glm::dvec3>& map, int size, double sigma);
+
+}  // namespace postfxtest
