@@ -102,8 +102,8 @@ bool writeErrorPlot(const std::string& path, const std::string& title, const std
   algo::render_box(image, kLeft, kTop, kLeft + plotW, kTop + plotH, black);
   text(kLeft + plotW / 2, kHeight - 18, "GPU time per frame (ms, median)", 16,
        algo::TextAlignX::Center, algo::TextAlignY::Center);
-  text(12, kTop - 20, "relative RMSE vs reference", 16, algo::TextAlignX::Left,
-       algo::TextAlignY::Center);
+  text(12, kTop - 20, "relative RMSE vs reference (seed 002: after the best affine fit)", 16,
+       algo::TextAlignX::Left, algo::TextAlignY::Center);
   text(kWidth / 2, 22, title, 18, algo::TextAlignX::Center, algo::TextAlignY::Center);
 
   for (size_t s = 0; s < order.size(); ++s) {
@@ -118,10 +118,13 @@ bool writeErrorPlot(const std::string& path, const std::string& title, const std
                           true);
       }
       algo::render_box(image, x - 3, y - 3, x + 3, y + 3, {colour, 3}, true);
-      // The setting's first word ("16" of "16 samples") beside its point.
+      // The setting's first number ("16" of "16 samples", "800" of "tau 800") by its point.
       const std::string& setting = points[i].setting;
-      text(x + 6, y - 6, setting.substr(0, setting.find(' ')), 11, algo::TextAlignX::Left,
-           algo::TextAlignY::Bottom);
+      const size_t start = setting.find_first_of("0123456789");
+      if (start != std::string::npos) {
+        text(x + 6, y - 6, setting.substr(start, setting.find(' ', start) - start), 11,
+             algo::TextAlignX::Left, algo::TextAlignY::Bottom);
+      }
     }
     const int ly = kTop + 12 + int(s) * 24;
     algo::render_box(image, kLeft + plotW + 20, ly - 5, kLeft + plotW + 32, ly + 5, {colour, 3},

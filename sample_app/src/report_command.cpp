@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <caustic_rows.h>
 #include <error_plot.h>
 #include <godray_rows.h>
 #include <pass_runner.h>
@@ -28,8 +29,8 @@ int fail(const std::string& message) {
 int runReport(const Options& given) {
   Options options = given;
   // Small enough for the CPU references to converge in minutes; --quick for a smoke run.
-  options.width = given.quick ? 192 : 480;
-  options.height = given.quick ? 108 : 270;
+  options.width = given.quick ? 160 : 320;
+  options.height = given.quick ? 90 : 180;
   std::error_code fsError;
   std::filesystem::create_directories(options.out, fsError);
   if (fsError) return fail("cannot create '" + options.out + "': " + fsError.message());
@@ -60,7 +61,16 @@ int runReport(const Options& given) {
   std::string godRayNote;
   if (!report::measureGodRays(host, frame, target, godRays, rows, godRayNote, error))
     return fail(error);
-  info.referenceNote = godRayNote;
+  report::CausticReportSettings caustics;
+  caustics.width = given.quick ? 160 : 320;
+  caustics.height = given.quick ? 88 : 176;
+  caustics.binPixels = given.quick ? 4 : 8;
+  caustics.referenceError = given.quick ? 0.02 : 0.01;
+  caustics.timedFrames = godRays.timedFrames;
+  if (given.quick) caustics.physicalGrids = {64, 128, 256};
+  std::string causticNote;
+  if (!report::measureCaustics(frame, caustics, rows, causticNote, error)) return fail(error);
+  info.referenceNote = causticNote + "\n\n" + godRayNote;
 
   const std::string dir = options.out + "/";
   if (!report::writeCsv(dir + "error_vs_time.csv", rows, error) ||
