@@ -65,7 +65,7 @@ int runReport(const Options& given) {
   caustics.width = given.quick ? 160 : 320;
   caustics.height = given.quick ? 88 : 176;
   caustics.binPixels = given.quick ? 4 : 8;
-  caustics.referenceError = given.quick ? 0.02 : 0.01;
+  caustics.referenceError = given.quick ? 0.03 : 0.02;
   caustics.timedFrames = godRays.timedFrames;
   if (given.quick) caustics.physicalGrids = {64, 128, 256};
   std::string causticNote;
