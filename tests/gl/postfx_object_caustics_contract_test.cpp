@@ -21,19 +21,6 @@ namespace {
 using namespace postfxtest;
 using postfx::Result;
 
-constexpr double kPi = 3.14159265358979323846;
-
-glm::dvec3 sunAt(double zenithDegrees, double azimuthDegrees) {
-  const double z = zenithDegrees * kPi / 180.0, a = azimuthDegrees * kPi / 180.0;
-  return {std::sin(z) * std::cos(a), std::cos(z), std::sin(z) * std::sin(a)};
-}
-
-glm::dmat4 translation(const glm::dvec3& t) {
-  glm::dmat4 m(1.0);
-  m[3] = glm::dvec4(t, 1.0);
-  return m;
-}
-
 void expectSameState(const GlSnapshot& before, const GlSnapshot& after, const std::string& when) {
   for (const auto& [name, value] : before) {
     auto it = after.find(name);

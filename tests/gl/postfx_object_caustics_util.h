@@ -1,5 +1,7 @@
 #pragma once
 // Shared set-up and measurements of the object-caustics GL tests.
+#include <cmath>
+
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -12,6 +14,21 @@
 #include "postfx_test_util.h"
 
 namespace postfxtest {
+
+// Unit vector toward a sun at the given zenith and azimuth angles (degrees; azimuth from +x
+// toward +z).
+inline constexpr double kPi = 3.14159265358979323846;
+
+inline glm::dvec3 sunAt(double zenithDegrees, double azimuthDegrees) {
+  const double z = zenithDegrees * kPi / 180.0, a = azimuthDegrees * kPi / 180.0;
+  return {std::sin(z) * std::cos(a), std::cos(z), std::sin(z) * std::sin(a)};
+}
+
+inline glm::dmat4 translation(const glm::dvec3& t) {
+  glm::dmat4 m(1.0);
+  m[3] = glm::dvec4(t, 1.0);
+  return m;
+}
 
 // A host frame: a small G-buffer looking at the receiver plane y = 0 (with the sphere `caster`
 // in it when given), water far below (the casters are in air), the sun and receiver map given.
