@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <map>
 
+#include <atomic_file.h>
+
 namespace ocean::report {
 namespace {
 
@@ -132,18 +134,14 @@ bool writeErrorPlot(const std::string& path, const std::string& title, const std
     text(kLeft + plotW + 40, ly, order[s], 14, algo::TextAlignX::Left, algo::TextAlignY::Center);
   }
 
-  const std::string temporary = path + ".partial.png";
-  if (!image.write(temporary, OIIO::TypeDesc::UINT8)) {
-    error = "cannot write '" + temporary + "': " + image.geterror();
-    std::remove(temporary.c_str());
-    return false;
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    error = "cannot rename '" + temporary + "' to '" + path + "'";
-    std::remove(temporary.c_str());
-    return false;
-  }
-  return true;
+  return writeThroughTemporary(
+      path,
+      [&](const std::string& temporary, std::string& why) {
+        if (image.write(temporary, OIIO::TypeDesc::UINT8)) return true;
+        why = "cannot write '" + path + "': " + image.geterror();
+        return false;
+      },
+      error);
 }
 
 }  // namespace ocean::report

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <atomic_file.h>
+
 namespace ocean::report {
 namespace {
 
@@ -26,24 +28,17 @@ std::string csvField(const std::string& text) {
   return quoted + "\"";
 }
 
-// Written to a temporary name and renamed, so a failed write leaves no half file.
 bool writeText(const std::string& path, const std::string& text, std::string& error) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary);
-    file << text;
-    if (!file) {
-      error = "cannot write '" + temporary + "'";
-      std::remove(temporary.c_str());
-      return false;
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    error = "cannot rename '" + temporary + "' to '" + path + "'";
-    std::remove(temporary.c_str());
-    return false;
-  }
-  return true;
+  return writeThroughTemporary(
+      path,
+      [&](const std::string& temporary, std::string& why) {
+        std::ofstream file(temporary, std::ios::binary);
+        file << text;
+        file.close();
+        if (!file) why = "cannot write '" + path + "'";
+        return bool(file);
+      },
+      error);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "atomic_file.h"
+
 #include <unistd.h>
 #include <filesystem>
 #include <system_error>
@@ -18,42 +20,28 @@ std::string extensionOf(const std::string& path) {
 template <typename T>
 bool writeFlipped(const std::string& path, int width, int height, const T* pixels,
                   OIIO::TypeDesc type, std::string& error) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  // Appending (rather than chaining operator+) also sidesteps a GCC 12 -Wrestrict false positive.
-  std::string temporaryName = ".";
-  temporaryName += target.filename().string();
-  temporaryName += ".partial";
-  temporaryName += target.extension().string();
-  const fs::path temporary = target.parent_path() / temporaryName;
   auto output = OIIO::ImageOutput::create(path);
   if (!output) {
     error = "cannot write '" + path + "': " + OIIO::geterror();
     return false;
   }
-  OIIO::ImageSpec spec(width, height, 4, type);
-  if (!output->open(temporary.string(), spec)) {
-    error = "cannot write '" + path + "': " + output->geterror();
-    return false;
-  }
-  // GL rows are bottom-up; images are top-down: start at the last row, negative stride.
-  const auto rowBytes = OIIO::stride_t(sizeof(T) * 4 * width);
-  const T* lastRow = pixels + size_t(height - 1) * 4 * width;
-  const bool written = output->write_image(type, lastRow, OIIO::AutoStride, -rowBytes);
-  const bool closed = output->close();
-  std::error_code code;
-  if (!written || !closed) {
-    error = "cannot write '" + path + "': " + output->geterror();
-    fs::remove(temporary, code);
-    return false;
-  }
-  fs::rename(temporary, target, code);
-  if (code) {
-    error = "cannot write '" + path + "': " + code.message();
-    fs::remove(temporary, code);
-    return false;
-  }
-  return true;
+  return writeThroughTemporary(
+      path,
+      [&](const std::string& temporary, std::string& why) {
+        OIIO::ImageSpec spec(width, height, 4, type);
+        if (!output->open(temporary, spec)) {
+          why = "cannot write '" + path + "': " + output->geterror();
+          return false;
+        }
+        // GL rows are bottom-up; images are top-down: start at the last row, negative stride.
+        const auto rowBytes = OIIO::stride_t(sizeof(T) * 4 * width);
+        const T* lastRow = pixels + size_t(height - 1) * 4 * width;
+        const bool written = output->write_image(type, lastRow, OIIO::AutoStride, -rowBytes);
+        const bool closed = output->close();
+        if (!written || !closed) why = "cannot write '" + path + "': " + output->geterror();
+        return written && closed;
+      },
+      error);
 }
 
 }  // namespace
