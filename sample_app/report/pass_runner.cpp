@@ -1,15 +1,11 @@
 #include "pass_runner.h"
 
+#include <plugin_setup.h>
+
 namespace ocean::report {
 namespace {
 
 constexpr int kWarmupFrames = 4;
-
-double medianOf(const postfx::FrameStats& stats, const char* name) {
-  for (int i = 0; i < stats.passCount; ++i)
-    if (std::string(stats.passes[i].name) == name) return stats.passes[i].medianMs;
-  return 0.0;
-}
 
 }  // namespace
 
@@ -41,8 +37,8 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* pas
     glFinish();
   }
   if (ok) {
-    out.medianMs = medianOf(postfx::stats(*context), passName);
-    out.floorMs = medianOf(postfx::stats(*context), "floor");
+    out.medianMs = passMedianMs(postfx::stats(*context), passName);
+    out.floorMs = passMedianMs(postfx::stats(*context), "floor");
     glClearTexImage(target.texture(), 0, GL_RGBA, GL_FLOAT, zero);
     ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
   }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,13 +61,6 @@ bool renderFrames(Renderer& renderer, FrameInput input, double startSeconds, int
   return true;
 }
 
-double passMs(const postfx::FrameStats& stats, const std::string& name) {
-  for (int i = 0; i < stats.passCount; ++i) {
-    if (name == stats.passes[i].name) return stats.passes[i].medianMs;
-  }
-  return 0.0;
-}
-
 struct Row {
   std::string name;
   double medianMs, floorMs;
@@ -94,79 +88,71 @@ int runBench(const Options& options) {
   std::vector<Row> rows;
   {
     const postfx::FrameStats& stats = session.plugin->stats();
-    const double floorMs = passMs(stats, "floor");
+    const double floorMs = passMedianMs(stats, "floor");
     for (int i = 0; i < stats.passCount; ++i) {
       rows.push_back(
           {stats.passes[i].name, stats.passes[i].medianMs, floorMs, stats.passes[i].skipped});
     }
   }
+  // Variants: same scene and frames, one fresh context each (a context's timers keep a median
+  // window, so reusing one would mix settings); the newest becomes the renderer's pass.
+  const int variantFrames = std::max(1, std::min(options.frames, 20));
+  auto runVariant =
+      [&](const std::string& label, const Options& variantOptions,
+          const std::function<void(PluginSetup&)>& configure) -> const postfx::FrameStats* {
+    std::fprintf(stderr, "bench: %s, %d frames\n", label.c_str(), variantFrames);
+    auto variant = PluginSetup::create(renderer, variantOptions, /*benchmarkFloor=*/true, error);
+    if (!variant) return nullptr;
+    configure(*variant);
+    session.plugin = std::move(variant);
+    if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) return nullptr;
+    return &session.plugin->stats();
+  };
+  auto addRow = [&](const std::string& name, const postfx::FrameStats& stats, const char* pass) {
+    const double ms = passMedianMs(stats, pass);
+    rows.push_back({name, ms, passMedianMs(stats, "floor"), ms == 0.0});
+  };
+
   // Caustics sampling every cascade everywhere (no skipping): what the skipping saves.
   if (options.caustics) {
-    const int variantFrames = std::max(1, std::min(options.frames, 20));
-    std::fprintf(stderr, "bench: caustics_all_cascades, %d frames\n", variantFrames);
-    auto variant = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
-    if (!variant) return fail(error);
-    variant->caustics().minCascadeContrast = 0.0f;
-    variant->godRays().enabled = false;
-    if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
-      return fail(error);
-    }
-    const postfx::FrameStats& stats = variant->stats();
-    rows.push_back({"caustics_all_cascades", passMs(stats, "caustics"), passMs(stats, "floor"),
-                    passMs(stats, "caustics") == 0.0});
-    session.plugin = std::move(variant);
+    const postfx::FrameStats* stats =
+        runVariant("caustics_all_cascades", options, [](PluginSetup& variant) {
+          variant.caustics().minCascadeContrast = 0.0f;
+          variant.godRays().enabled = false;
+        });
+    if (!stats) return fail(error);
+    addRow("caustics_all_cascades", *stats, "caustics");
   }
-  // God-ray variants: same scene and frames, one fresh context each (a context's timers keep a
-  // median window, so reusing one would mix settings).
   if (options.godRays) {
-    const int variantFrames = std::max(1, std::min(options.frames, 20));
     for (bool half : {false, true}) {
       for (int samples : {4, 8, 16, 32, 64}) {
         const std::string name =
             std::string(half ? "god_rays_half_" : "god_rays_") + std::to_string(samples);
-        std::fprintf(stderr, "bench: %s, %d frames\n", name.c_str(), variantFrames);
-        auto variant = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
-        if (!variant) return fail(error);
-        variant->godRays().sampleCount = samples;
-        variant->godRays().halfResolution = half;
-        if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
-          return fail(error);
-        }
-        const postfx::FrameStats& stats = variant->stats();
-        rows.push_back({name, passMs(stats, "god_rays"), passMs(stats, "floor"),
-                        passMs(stats, "god_rays") == 0.0});
-        session.plugin = std::move(variant);  // the last created context is the renderer's pass
+        const postfx::FrameStats* stats = runVariant(name, options, [&](PluginSetup& variant) {
+          variant.godRays().sampleCount = samples;
+          variant.godRays().halfResolution = half;
+        });
+        if (!stats) return fail(error);
+        addRow(name, *stats, "god_rays");
       }
     }
   }
-
   if (options.caustics) {
-    const int variantFrames = std::max(1, std::min(options.frames, 20));
     for (int grid : {64, 128, 256, 512, 1024}) {
-      std::fprintf(stderr, "bench: caustics_physical_%d, %d frames\n", grid, variantFrames);
+      const std::string n = std::to_string(grid);
       Options physical = options;
       physical.physicalCaustics = true;
       physical.causticsGrid = grid;
-      auto variant = PluginSetup::create(renderer, physical, /*benchmarkFloor=*/true, error);
-      if (!variant) return fail(error);
-      if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
-        return fail(error);
-      }
-      const postfx::FrameStats& stats = variant->stats();
-      const std::string n = std::to_string(grid);
-      const double irradianceMs = passMs(stats, "caustics_irradiance");
-      rows.push_back(
-          {"caustics_irradiance_" + n, irradianceMs, passMs(stats, "floor"), irradianceMs == 0.0});
-      rows.push_back({"caustics_physical_" + n, passMs(stats, "caustics"), passMs(stats, "floor"),
-                      passMs(stats, "caustics") == 0.0});
+      const postfx::FrameStats* stats =
+          runVariant("caustics_physical_" + n, physical, [](PluginSetup&) {});
+      if (!stats) return fail(error);
+      addRow("caustics_irradiance_" + n, *stats, "caustics_irradiance");
+      addRow("caustics_physical_" + n, *stats, "caustics");
       std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
-                   100.0 * stats.clampedFluxFraction);
-      session.plugin = std::move(variant);
+                   100.0 * stats->clampedFluxFraction);
     }
   }
-
   if (options.objectCaustics) {
-    const int variantFrames = std::max(1, std::min(options.frames, 20));
     struct Variant {
       int map, grid, iterations;
     };
@@ -174,19 +160,13 @@ int runBench(const Options& options) {
                              Variant{1024, 512, 3}}) {
       const std::string name = "object_caustics_" + std::to_string(v.map) + "_" +
                                std::to_string(v.grid) + "_" + std::to_string(v.iterations);
-      std::fprintf(stderr, "bench: %s, %d frames\n", name.c_str(), variantFrames);
-      auto variant = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
-      if (!variant) return fail(error);
-      variant->objectCaustics().mapSize = v.map;
-      variant->objectCaustics().gridSize = v.grid;
-      variant->objectCaustics().iterations = v.iterations;
-      if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) {
-        return fail(error);
-      }
-      const postfx::FrameStats& stats = variant->stats();
-      rows.push_back({name, passMs(stats, "object_caustics"), passMs(stats, "floor"),
-                      passMs(stats, "object_caustics") == 0.0});
-      session.plugin = std::move(variant);
+      const postfx::FrameStats* stats = runVariant(name, options, [&](PluginSetup& variant) {
+        variant.objectCaustics().mapSize = v.map;
+        variant.objectCaustics().gridSize = v.grid;
+        variant.objectCaustics().iterations = v.iterations;
+      });
+      if (!stats) return fail(error);
+      addRow(name, *stats, "object_caustics");
     }
   }
 

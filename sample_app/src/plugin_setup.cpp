@@ -6,6 +6,13 @@
 
 namespace ocean {
 
+double passMedianMs(const postfx::FrameStats& stats, const std::string& name) {
+  for (int i = 0; i < stats.passCount; ++i) {
+    if (name == stats.passes[i].name) return stats.passes[i].medianMs;
+  }
+  return 0.0;
+}
+
 std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Options& options,
                                                  bool benchmarkFloor, std::string& error) {
   std::unique_ptr<PluginSetup> setup(new PluginSetup());
