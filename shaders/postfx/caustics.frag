@@ -49,8 +49,8 @@ const float kMinPlaneWeight = 0.02;
 // Tri-planar lookup: the plane facing up projects the receiver ALONG THE REFRACTED LIGHT onto
 // the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
 // Blended by the G-buffer normal. The projections with weight are listed first and looped
-// over (see cascadeRange for why a loop rather than branches): a seabed pixel pays for one.
-vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow, ivec2 range) {
+// over (see selectCascades for why a loop rather than branches): a seabed pixel pays for one.
+vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, CascadeSelection cascades) {
   vec3 w = pow(abs(n), vec3(u.eta.w));
   w /= max(w.x + w.y + w.z, 1e-20);
   int planes[3] = int[3](1, 0, 2);
@@ -63,7 +63,7 @@ vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, float depthBelow, ivec2 ran
     int plane = planes[i];
     vec2 coord = plane == 1 ? vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y)
                             : (plane == 0 ? p.zy : p.xy);
-    slopes += w[plane] * cascadeSlopes(coord, plane, logFootprint, depthBelow, range);
+    slopes += w[plane] * cascadeSlopes(coord, plane, logFootprint, cascades);
   }
   return slopes;
 }
@@ -110,9 +110,10 @@ void main() {
   vec3 physical = vec3(physicalIrradiance(p, depthBelow, physicalWeight));
 #endif
   // Inside the physical window the seed-002 lookups are not needed: an empty cascade range
-  // skips their fetches (a branch around them would not, on llvmpipe; see cascadeRange).
-  ivec2 range = physicalWeight < 1.0 ? cascadeRange(depthBelow, logFootprint) : ivec2(1, 0);
-  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, depthBelow, range));
+  // skips their fetches (a branch around them would not, on llvmpipe; see selectCascades).
+  CascadeSelection cascades =
+      physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
+  vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
 #if POSTFX_DISPERSION
   vec3 omega = vec3(
       causticFactor(u.towardSun.xyz, waterNormal, u.eta.r, u.reference.xyz, tau, reflectionWeight),

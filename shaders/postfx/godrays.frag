@@ -39,8 +39,8 @@ vec3 sunSource(vec3 p, float t) {
   // caustics pass's upward projection). No tri-planar: the medium has no normal.
   vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
   float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
-  vec3 waterNormal = waterNormalFromSlopes(cascadeSlopes(along, 1, logFootprint, depthBelow,
-                                                           cascadeRange(depthBelow, logFootprint)));
+  CascadeSelection cascades = selectCascades(depthBelow, logFootprint);
+  vec3 waterNormal = waterNormalFromSlopes(cascadeSlopes(along, 1, logFootprint, cascades));
   float omega = causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz,
                               u.towardSun.w, u.reference.w);
   return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);

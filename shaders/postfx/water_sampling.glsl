@@ -13,33 +13,42 @@ float cascadeWeight(int c, float depthBelow, float logFootprint) {
   return smoothstep(cut, 2.0 * cut, depthBelow * skip.x);
 }
 
-// First and last cascade with a weight here, as a loop range. A range rather than a skip inside
-// the loop because SIMD rasterisers (llvmpipe) run both sides of a branch for a group of pixels
-// but leave a loop as soon as every pixel of the group is done: only a shorter loop saves the
-// fetches there. On GPUs either form branches per warp.
-ivec2 cascadeRange(float depthBelow, float logFootprint) {
-  ivec2 range = ivec2(POSTFX_MAX_CASCADES, -1);
+// The cascades worth sampling at one point: each one's weight, computed once for every
+// projection, and the first and last with a weight as a loop range. A range rather than a skip
+// inside the loop because SIMD rasterisers (llvmpipe) run both sides of a branch for a group of
+// pixels but leave a loop as soon as every pixel of the group is done: only a shorter loop saves
+// the fetches there. On GPUs either form branches per warp.
+struct CascadeSelection {
+  ivec2 range;  // first, last; empty (first > last) when none has a weight
+  vec4 weight;  // per cascade
+};
+
+CascadeSelection selectCascades(float depthBelow, float logFootprint) {
+  CascadeSelection selection = CascadeSelection(ivec2(POSTFX_MAX_CASCADES, -1), vec4(0.0));
   int cascades = int(u.oblique.w);
   for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
     if (c >= cascades) break;
-    if (cascadeWeight(c, depthBelow, logFootprint) > 0.0) range = ivec2(min(range.x, c), c);
+    float weight = cascadeWeight(c, depthBelow, logFootprint);
+    selection.weight[c] = weight;
+    if (weight > 0.0) selection.range = ivec2(min(selection.range.x, c), c);
   }
-  return range;
+  return selection;
 }
 
-// Sum of the cascades' slopes in `range` for one projection, each cascade at its own mip level
+// No cascade: nothing is fetched.
+const CascadeSelection kNoCascades = CascadeSelection(ivec2(1, 0), vec4(0.0));
+
+// Sum of the selected cascades' slopes for one projection, each cascade at its own mip level
 // so that small tiles blur away with distance and stop showing their repetition.
-vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint, float depthBelow,
-                   ivec2 range) {
+vec2 cascadeSlopes(vec2 coordMetres, int plane, float logFootprint, CascadeSelection selection) {
   vec2 slopes = vec2(0.0);
-  for (int c = range.x; c <= range.y; ++c) {
+  for (int c = selection.range.x; c <= selection.range.y; ++c) {
     vec4 axes = u.cascadeAxes[c];
     // The camera's share of the coordinate was reduced modulo the tile in double on the CPU.
     vec2 offset = plane == 1 ? u.cascadeOblique[c].xy : (plane == 0 ? axes.zy : axes.xy);
     vec2 uv = offset + coordMetres * axes.w;
     float lod = logFootprint + u.cascadeOblique[c].z;
-    slopes += cascadeWeight(c, depthBelow, logFootprint) *
-              textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
+    slopes += selection.weight[c] * textureLod(waterSurface, WATER_COORD(uv, c), lod).rg;
   }
   return slopes;
 }
