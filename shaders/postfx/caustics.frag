@@ -115,11 +115,8 @@ void main() {
       physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
 #if POSTFX_DISPERSION
-  vec3 omega = vec3(
-      causticFactor(u.towardSun.xyz, waterNormal, u.eta.r, u.reference.xyz, tau, reflectionWeight),
-      causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz, tau, reflectionWeight),
-      causticFactor(u.towardSun.xyz, waterNormal, u.eta.b, u.reference.xyz, tau,
-                    reflectionWeight));
+  vec3 omega = causticFactorRgb(u.towardSun.xyz, waterNormal, u.eta.rgb, u.reference.xyz, tau,
+                                reflectionWeight);
 #else
   vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz, tau,
                                   reflectionWeight));

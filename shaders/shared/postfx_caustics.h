@@ -24,9 +24,24 @@ SHARED_FN vec3 waterNormalFromSlopes(vec2 slopes) {
 
 // Eq. (1): omega = exp(-tau * a^2), a the cosine between a ray and the reference vector that is
 // perpendicular to the unperturbed ray (a = 0 where the surface is flat, so flat water gives 1).
+SHARED_FN float causticOmegaOfCosine(float a, float tau) {
+  float c = clamp(a, -1.0f, 1.0f);
+  return exp(-tau * (c * c));
+}
+
 SHARED_FN float causticOmega(vec3 ray, vec3 reference, float tau) {
-  float a = clamp(dot(ray, reference), -1.0f, 1.0f);
-  return exp(-tau * (a * a));
+  return causticOmegaOfCosine(dot(ray, reference), tau);
+}
+
+// The cosines a of eq. (1) need no refracted or reflected vector, only the three dot products
+// they are made of. With I the incident sun, N the water normal, r the reference, c = N.I and
+// k = 1 - eta^2 (1 - c^2), GLSL's refract() is eta I - (eta c + sqrt(k)) N (0 when k < 0) and
+// reflect() is I - 2 c N, so
+//   r.refract = eta (I.r) - (eta c + sqrt(k)) (N.r),   r.reflect = I.r - 2 c (N.r).
+// The same model to rounding, at a fraction of the arithmetic (it runs per god-ray sample).
+SHARED_FN float refractedCosine(float eta, float c, float incidentDotRef, float normalDotRef) {
+  float k = 1.0f - eta * eta * (1.0f - c * c);
+  return k < 0.0f ? 0.0f : eta * incidentDotRef - (eta * c + sqrt(k)) * normalDotRef;
 }
 
 // The seed's caustic factor for one wavelength: the sun ray refracted (eta = 1 / IOR) and
@@ -35,11 +50,26 @@ SHARED_FN float causticOmega(vec3 ray, vec3 reference, float tau) {
 SHARED_FN float causticFactor(vec3 towardSun, vec3 waterNormal, float eta, vec3 reference,
                               float tau, float reflectionWeight) {
   vec3 incident = -towardSun;
-  vec3 refracted = refract(incident, waterNormal, eta);
-  vec3 reflected = reflect(incident, waterNormal);
-  float omegaT = causticOmega(refracted, reference, tau);
-  float omegaR = causticOmega(reflected, reference, tau);
+  float c = dot(waterNormal, incident);
+  float incidentDotRef = dot(incident, reference), normalDotRef = dot(waterNormal, reference);
+  float omegaT = causticOmegaOfCosine(refractedCosine(eta, c, incidentDotRef, normalDotRef), tau);
+  float omegaR = causticOmegaOfCosine(incidentDotRef - 2.0f * c * normalDotRef, tau);
   return mix(omegaT, omegaR, reflectionWeight);
+}
+
+// causticFactor for three wavelengths (per-channel eta, dispersion): the reflected ray is the
+// same for all of them, so its omega is computed once.
+SHARED_FN vec3 causticFactorRgb(vec3 towardSun, vec3 waterNormal, vec3 eta, vec3 reference,
+                                float tau, float reflectionWeight) {
+  vec3 incident = -towardSun;
+  float c = dot(waterNormal, incident);
+  float incidentDotRef = dot(incident, reference), normalDotRef = dot(waterNormal, reference);
+  vec3 omegaT =
+      vec3(causticOmegaOfCosine(refractedCosine(eta.x, c, incidentDotRef, normalDotRef), tau),
+           causticOmegaOfCosine(refractedCosine(eta.y, c, incidentDotRef, normalDotRef), tau),
+           causticOmegaOfCosine(refractedCosine(eta.z, c, incidentDotRef, normalDotRef), tau));
+  float omegaR = causticOmegaOfCosine(incidentDotRef - 2.0f * c * normalDotRef, tau);
+  return mix(omegaT, vec3(omegaR), reflectionWeight);
 }
 
 // Beer-Lambert transmittance along the refracted sun path to a receiver `depthBelow` metres
