@@ -127,9 +127,10 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     return r;
   }
   if (godRays) {
-    const shared::GodRaysBlock godBlock =
-        detail::buildGodRaysBlock(frame, detail::GodRaysPass::halfSize(textures.width),
-                                  detail::GodRaysPass::halfSize(textures.height));
+    const GodRayResolution resolution = frame.godRays.resolution;
+    const shared::GodRaysBlock godBlock = detail::buildGodRaysBlock(
+        frame, detail::GodRaysPass::reducedSize(textures.width, resolution),
+        detail::GodRaysPass::reducedSize(textures.height, resolution));
     r = context.godRays.prepare(frame, textures.width, textures.height, godBlock, error);
     if (r != Result::Ok) {
       context.caustics.finish();

@@ -23,7 +23,8 @@ double godRayGridPhase(double value, double spacing) {
   return phase >= spacing || phase < 0.0 ? 0.0 : phase;  // rounding can land on the bound
 }
 
-shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int halfWidth, int halfHeight) {
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth,
+                                       int reducedHeight) {
   shared::GodRaysBlock b{};
   const GodRaySettings& s = frame.godRays;
   const WaterSurface& water = frame.water;
@@ -46,9 +47,11 @@ shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int halfWidth, in
   b.sunPath = glm::vec4(glm::vec3(extinction / std::max(grid.y.y, 1e-3)), 0.0f);
   b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
   b.scattering = glm::vec4(water.scattering, 0.0f);
-  b.halfViewport =
-      glm::vec4(1.0f / static_cast<float>(halfWidth), 1.0f / static_cast<float>(halfHeight),
-                static_cast<float>(halfWidth), static_cast<float>(halfHeight));
+  b.reducedViewport =
+      glm::vec4(1.0f / static_cast<float>(reducedWidth), 1.0f / static_cast<float>(reducedHeight),
+                static_cast<float>(reducedWidth), static_cast<float>(reducedHeight));
+  const int k = static_cast<int>(s.resolution);
+  b.reduction = glm::vec4(static_cast<float>(k), 0.0f, 0.0f, 0.0f);
   return b;
 }
 

@@ -21,6 +21,7 @@ GodRayGrid godRayGrid(const glm::dvec3& towardSun, double ior);
 // value - floor(value / spacing) * spacing, in [0, spacing).
 double godRayGridPhase(double value, double spacing);
 
-shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int halfWidth, int halfHeight);
+// `reducedWidth` x `reducedHeight`: the size of the march texture (the target's at full res).
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth, int reducedHeight);
 
 }  // namespace postfx::detail

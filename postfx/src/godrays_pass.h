@@ -1,8 +1,9 @@
 #pragma once
 // The god-ray pass: a full-screen march blended additively (ONE, ONE) into the host target, or
-// at half resolution into a plugin-owned RGBA16F texture (alpha = pixel distance) followed by a
-// depth-aware upsample that adds into the target. Runs under the state CausticsPass::bindState
-// set (units, samplers, caustics block, blend); adds its own block, framebuffers and unit 5.
+// at half or quarter resolution into a plugin-owned RGBA16F texture (alpha = pixel distance)
+// followed by a depth-aware upsample that adds into the target. Runs under the state
+// CausticsPass::bindState set (units, samplers, caustics block, blend); adds its own block,
+// framebuffers and unit 5.
 #include <epoxy/gl.h>
 
 #include <string>
@@ -16,7 +17,7 @@ namespace postfx::detail {
 
 class GodRaysPass {
  public:
-  static constexpr GLuint kHalfUnit = 5;
+  static constexpr GLuint kReducedUnit = 5;
 
   GodRaysPass() = default;
   GodRaysPass(const GodRaysPass&) = delete;
@@ -27,21 +28,25 @@ class GodRaysPass {
   Result init(const std::string& defines, std::string& error);
   void release();
 
-  // Attaches the host target, sizes the half-resolution texture when used, uploads the block.
+  // Attaches the host target, sizes the reduced-resolution texture when used, uploads the block.
   Result prepare(const FrameDesc& frame, int width, int height, const shared::GodRaysBlock& block,
                  std::string& error);
   void draw(const FrameDesc& frame, int width, int height);
   void finish();  // lets go of the host's texture
 
-  static int halfSize(int size) { return (size + 1) / 2; }
+  // Texels along a side of `size` pixels at `resolution` (a partial block gets a texel too).
+  static int reducedSize(int size, GodRayResolution resolution) {
+    const int k = static_cast<int>(resolution);
+    return (size + k - 1) / k;
+  }
 
  private:
-  void ensureHalf(int width, int height);
+  void ensureReduced(int width, int height);
 
-  glkit::Program full_, half_, upsample_;
-  GLuint framebuffer_ = 0, halfFramebuffer_ = 0, uniformBuffer_ = 0;
-  GLuint halfTexture_ = 0, halfSampler_ = 0;
-  int halfWidth_ = 0, halfHeight_ = 0;
+  glkit::Program full_, reduced_, upsample_;
+  GLuint framebuffer_ = 0, reducedFramebuffer_ = 0, uniformBuffer_ = 0;
+  GLuint reducedTexture_ = 0, reducedSampler_ = 0;
+  int reducedWidth_ = 0, reducedHeight_ = 0;
 };
 
 }  // namespace postfx::detail

@@ -162,6 +162,9 @@ Result validateGodRays(const GodRaySettings& g, std::string& error) {
   if (!inRange(g.depthFadeDistance, 0.0, 1e5))
     return fail("godRays.depthFadeDistance must be in [0, 1e5] m");
   if (!inRange(g.maxDistance, 0.1, 1e5)) return fail("godRays.maxDistance must be in [0.1, 1e5] m");
+  if (g.resolution != GodRayResolution::Full && g.resolution != GodRayResolution::Half &&
+      g.resolution != GodRayResolution::Quarter)
+    return fail("godRays.resolution is not a GodRayResolution");
   if (g.sampling != GodRaySampling::WorldGrid && g.sampling != GodRaySampling::UniformAlongRay)
     return fail("godRays.sampling is not a GodRaySampling");
   return Result::Ok;

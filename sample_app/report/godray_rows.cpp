@@ -1,6 +1,7 @@
 #include "godray_rows.h"
 
 #include <cstdio>
+#include <iterator>
 
 #include <godray_reference.h>
 
@@ -59,21 +60,26 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
 
   struct Variant {
     const char* method;
-    bool halfResolution;
+    postfx::GodRayResolution resolution;
     postfx::GodRaySampling sampling;
   };
+  using postfx::GodRayResolution;
   const Variant variants[] = {
-      {"god rays, world grid", false, postfx::GodRaySampling::WorldGrid},
-      {"god rays, world grid, half res", true, postfx::GodRaySampling::WorldGrid},
-      {"god rays, uniform along ray", false, postfx::GodRaySampling::UniformAlongRay},
+      {"god rays, world grid", GodRayResolution::Full, postfx::GodRaySampling::WorldGrid},
+      {"god rays, world grid, half res", GodRayResolution::Half, postfx::GodRaySampling::WorldGrid},
+      {"god rays, world grid, quarter res", GodRayResolution::Quarter,
+       postfx::GodRaySampling::WorldGrid},
+      {"god rays, uniform along ray", GodRayResolution::Full,
+       postfx::GodRaySampling::UniformAlongRay},
   };
   const int counts[] = {4, 8, 16, 32, 64};
   int done = 0;
   for (const Variant& variant : variants) {
     for (int samples : counts) {
-      std::fprintf(stderr, "report: %s, %d samples (%d/15)\n", variant.method, samples, ++done);
+      std::fprintf(stderr, "report: %s, %d samples (%d/%zu)\n", variant.method, samples, ++done,
+                   std::size(variants) * std::size(counts));
       frame.godRays.sampleCount = samples;
-      frame.godRays.halfResolution = variant.halfResolution;
+      frame.godRays.resolution = variant.resolution;
       frame.godRays.sampling = variant.sampling;
       PassRun run;
       if (!runPass(create, frame, "god_rays", target, settings.timedFrames, run, error))

@@ -1,9 +1,9 @@
 // ocean_sample bench: per-pass GPU time of the plugin on the default scene, and each pass's
 // ratio to the floor pass measured in the same run (the only number comparable across
 // machines without a GPU). Also the water spectrum update's cost per resolution.
-// God rays: after the default run, one short run per sample count (4..64) at full and at half
-// resolution, each with a fresh plugin context (fresh timers) and its own floor measured in the
-// same run, reported as rows god_rays_<n> and god_rays_half_<n>.
+// God rays: after the default run, one short run per sample count (4..64) at full, half and
+// quarter resolution, each with a fresh plugin context (fresh timers) and its own floor measured
+// in the same run, reported as rows god_rays_<n>, god_rays_half_<n> and god_rays_quarter_<n>.
 // Physical caustics (seed 004): one short run per grid resolution (64..1024), rows
 // caustics_irradiance_<n> (the extra pass) and caustics_physical_<n> (the full-screen caustics
 // pass sampling its result), with the clamp's bias on stderr.
@@ -97,6 +97,7 @@ int runBench(const Options& options) {
   // Variants: same scene and frames, one fresh context each (a context's timers keep a median
   // window, so reusing one would mix settings); the newest becomes the renderer's pass.
   const int variantFrames = std::max(1, std::min(options.frames, 20));
+  auto wanted = [&](const std::string& name) { return name.starts_with(options.only); };
   auto runVariant =
       [&](const std::string& label, const Options& variantOptions,
           const std::function<void(PluginSetup&)>& configure) -> const postfx::FrameStats* {
@@ -114,7 +115,7 @@ int runBench(const Options& options) {
   };
 
   // Caustics sampling every cascade everywhere (no skipping): what the skipping saves.
-  if (options.caustics) {
+  if (options.caustics && wanted("caustics_all_cascades")) {
     const postfx::FrameStats* stats =
         runVariant("caustics_all_cascades", options, [](PluginSetup& variant) {
           variant.caustics().minCascadeContrast = 0.0f;
@@ -124,13 +125,19 @@ int runBench(const Options& options) {
     addRow("caustics_all_cascades", *stats, "caustics");
   }
   if (options.godRays) {
-    for (bool half : {false, true}) {
+    const struct {
+      const char* prefix;
+      postfx::GodRayResolution resolution;
+    } resolutions[] = {{"god_rays_", postfx::GodRayResolution::Full},
+                       {"god_rays_half_", postfx::GodRayResolution::Half},
+                       {"god_rays_quarter_", postfx::GodRayResolution::Quarter}};
+    for (const auto& resolution : resolutions) {
       for (int samples : {4, 8, 16, 32, 64}) {
-        const std::string name =
-            std::string(half ? "god_rays_half_" : "god_rays_") + std::to_string(samples);
+        const std::string name = resolution.prefix + std::to_string(samples);
+        if (!wanted(name)) continue;
         const postfx::FrameStats* stats = runVariant(name, options, [&](PluginSetup& variant) {
           variant.godRays().sampleCount = samples;
-          variant.godRays().halfResolution = half;
+          variant.godRays().resolution = resolution.resolution;
         });
         if (!stats) return fail(error);
         addRow(name, *stats, "god_rays");
@@ -140,6 +147,7 @@ int runBench(const Options& options) {
   if (options.caustics) {
     for (int grid : {64, 128, 256, 512, 1024}) {
       const std::string n = std::to_string(grid);
+      if (!wanted("caustics_physical_" + n) && !wanted("caustics_irradiance_" + n)) continue;
       Options physical = options;
       physical.physicalCaustics = true;
       physical.causticsGrid = grid;
@@ -160,6 +168,7 @@ int runBench(const Options& options) {
                              Variant{1024, 512, 3}}) {
       const std::string name = "object_caustics_" + std::to_string(v.map) + "_" +
                                std::to_string(v.grid) + "_" + std::to_string(v.iterations);
+      if (!wanted(name)) continue;
       const postfx::FrameStats* stats = runVariant(name, options, [&](PluginSetup& variant) {
         variant.objectCaustics().mapSize = v.map;
         variant.objectCaustics().gridSize = v.grid;

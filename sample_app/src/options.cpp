@@ -35,10 +35,12 @@ usage:
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
       Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, G god rays, T pauses time,
       1-4 switch presets, Esc quits.
-  ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE]
+  ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE] [--only PREFIX]
       Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a
       floor pass that reads the same inputs and writes the same outputs with no math.
-      Also times the physical caustics model at grid 64..1024 (rows caustics_physical_<n>).
+      Also times each variant: god rays per sample count (god_rays_<n>, god_rays_half_<n>),
+      the physical caustics model at grid 64..1024 (caustics_physical_<n>), object caustics
+      per map/grid/iterations. --only PREFIX runs just the variants whose name starts with it.
   ocean_sample report [--out DIR] [--quick]
       Error against run time of every method and quality setting: each pass timed (median,
       with its floor) and compared with a CPU reference of the same frame. Writes
@@ -147,6 +149,8 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
       options.out = value;
     } else if (flag == "--json") {
       options.json = value;
+    } else if (flag == "--only") {
+      options.only = value;
     } else if (flag == "--frames") {
       if (!parseInt(value, options.frames) || options.frames < 1 || options.frames > 100000) {
         error = "--frames must be an integer in [1, 100000], got '" + std::string(value) + "'";

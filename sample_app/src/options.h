@@ -17,6 +17,7 @@ struct Options {
   std::string out = "ocean.png";
   int frames = 60;             // bench: measured frames after warm-up
   std::string json;            // bench: JSON output path
+  std::string only;            // bench: run only the variant rows whose name starts with this
   bool caustics = true;        // the plugin's seabed caustics
   bool godRays = true;         // the plugin's underwater god rays
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models

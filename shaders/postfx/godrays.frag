@@ -12,8 +12,8 @@
 // w_i = dt_i * exp(-sigma_t * t_i). With w_i = 1 that is the seed's sum(rho_i omega_i) / D_n; the
 // weights make it an unbiased quadrature and extend the sampled part's mean over the rest of the
 // ray when sampleCount runs out before its end. L <= E * intensity * sigma_s / sigma_t: bounded.
-// Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_HALF (write the half-size
-// texture: always written, alpha = the pixel's distance for the depth-aware upsample).
+// Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_REDUCED (write the reduced-
+// size texture: always written, alpha = the pixel's distance for the depth-aware upsample).
 #include "postfx/godrays_common.glsl"
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_godrays.h"
@@ -38,6 +38,9 @@ vec3 sunSource(vec3 p, float t) {
   // Where this point's light entered the water: along the refracted sun to the water plane (the
   // caustics pass's upward projection). No tri-planar: the medium has no normal.
   vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
+  // The full-resolution pixel's footprint even when a reduced texel stands for k x k pixels: a
+  // coarser mip flattens the slopes before the nonlinear omega and brightens the mean (+10 % at
+  // half resolution in the reference test); the upsample is what averages the texels.
   float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
   CascadeSelection cascades = selectCascades(depthBelow, logFootprint);
   vec3 waterNormal = waterNormalFromSlopes(cascadeSlopes(along, 1, logFootprint, cascades));
@@ -47,7 +50,7 @@ vec3 sunSource(vec3 p, float t) {
 }
 
 void emit(vec3 light, float pixelDistance) {
-#if POSTFX_GODRAYS_HALF
+#if POSTFX_GODRAYS_REDUCED
   outLight = vec4(light, pixelDistance);
 #else
   if (!(light.r + light.g + light.b > 0.0)) discard;  // saves the blend; drops NaN too
@@ -56,9 +59,9 @@ void emit(vec3 light, float pixelDistance) {
 }
 
 void main() {
-#if POSTFX_GODRAYS_HALF
-  // Half-size texel i stands for full-resolution pixel 2i (the upsample relies on it).
-  ivec2 pixel = min(ivec2(gl_FragCoord.xy) * 2, ivec2(u.viewport.zw) - 1);
+#if POSTFX_GODRAYS_REDUCED
+  // Reduced texel i stands for full-resolution pixel k*i (the upsample relies on it).
+  ivec2 pixel = min(ivec2(gl_FragCoord.xy) * int(g.reduction.x), ivec2(u.viewport.zw) - 1);
 #else
   ivec2 pixel = ivec2(gl_FragCoord.xy);
 #endif

@@ -1,13 +1,13 @@
 #version 450 core
-// Depth-aware (joint bilateral) upsample of the half-resolution god rays, added into the host
-// target. Each full-resolution pixel blends the four half-size texels around it by bilinear
+// Depth-aware (joint bilateral) upsample of the reduced-resolution god rays, added into the host
+// target. Each full-resolution pixel blends the four reduced texels around it by bilinear
 // weight times the similarity of their distances (stored in alpha by the march), so shafts do
 // not bleed across silhouettes; when no neighbour matches, the closest in distance is taken.
 #include "postfx/godrays_common.glsl"
 
-layout(binding = 5) uniform sampler2D halfGodRays;
+layout(binding = 5) uniform sampler2D reducedGodRays;
 
-// Relative distance difference at which a neighbour's weight falls to 1/e.
+// Relative distance difference at which a neighbour's weight falls to 1/4.
 const float kDepthTolerance = 0.05;
 
 void main() {
@@ -15,21 +15,27 @@ void main() {
   float z0;
   pixelViewRay(pixel, z0);
   if (!(z0 > 0.0)) discard;  // NaN depth texel
-  ivec2 base = pixel >> 1;   // half texel i sits on full pixel 2i
-  vec2 f = vec2(pixel & 1) * 0.5;
-  ivec2 last = ivec2(g.halfViewport.zw) - 1;
+  // Reduced texel i sits on full pixel k*i; pixel k*i + j lies j/k of the way to texel i + 1.
+  int k = int(g.reduction.x);
+  ivec2 base = pixel / k;
+  vec2 f = vec2(pixel - base * k) / float(k);
+  ivec2 last = ivec2(g.reducedViewport.zw) - 1;
   vec3 sum = vec3(0.0), best = vec3(0.0);
   float weightSum = 0.0, bestDiff = 3.0e38;
   for (int j = 0; j < 2; ++j) {
     for (int i = 0; i < 2; ++i) {
-      vec4 tap = texelFetch(halfGodRays, min(base + ivec2(i, j), last), 0);
+      vec4 tap = texelFetch(reducedGodRays, min(base + ivec2(i, j), last), 0);
       float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
       float diff = abs(tap.a - z0) / z0;
       if (diff < bestDiff) {
         bestDiff = diff;
         best = tap.rgb;
       }
-      float w = bilinear * exp(-diff / kDepthTolerance);
+      // Squared Cauchy falloff rather than exp: as steep past the tolerance (1/676 at 5x, exp
+      // gives 1/148), no transcendental.
+      float x = diff * (1.0 / kDepthTolerance);
+      float q = 1.0 + x * x;
+      float w = bilinear / (q * q);
       sum += w * tap.rgb;
       weightSum += w;
     }

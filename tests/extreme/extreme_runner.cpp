@@ -291,7 +291,8 @@ Output Runner::run(const Knobs& k) {
   frame.godRays.surfaceFadeDistance = k.surfaceFade;
   frame.godRays.gridSpacing = k.gridSpacing;
   frame.godRays.sampleCount = k.sampleCount;
-  frame.godRays.halfResolution = pass_ == Pass::GodRaysHalf;
+  frame.godRays.resolution =
+      pass_ == Pass::GodRaysHalf ? postfx::GodRayResolution::Half : postfx::GodRayResolution::Full;
   if (k.uniformSampling) frame.godRays.sampling = postfx::GodRaySampling::UniformAlongRay;
   glm::dmat4 light(0.0);
   light[0][0] = 1.0 / 50.0;

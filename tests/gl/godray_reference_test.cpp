@@ -17,6 +17,7 @@
 namespace {
 
 using postfx::Feature;
+using postfx::GodRayResolution;
 
 class GodRayReferenceTest : public testsupport::GlTest {};
 
@@ -69,7 +70,7 @@ SweepResult sweep(float tau, bool checkConvergence) {
   std::vector<glm::vec4> images[2][5];
   for (int half = 0; half < 2; ++half) {
     for (int i = 0; i < 5; ++i) {
-      frame.godRays.halfResolution = half != 0;
+      frame.godRays.resolution = half != 0 ? GodRayResolution::Half : GodRayResolution::Full;
       frame.godRays.sampleCount = kCounts[i];
       scene.clearTarget(glm::vec4(0.0f));
       EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
