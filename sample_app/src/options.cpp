@@ -29,7 +29,7 @@ usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
                       [--out FILE] [--no-caustics] [--no-god-rays] [--no-object-caustics]
                       [--tau T] [--water-resolution N] [--caustics-model seed002|physical]
-                      [--caustics-grid N]
+                      [--caustics-grid N] [--god-rays-resolution full|half|quarter]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
       or .exr (linear radiance). Default output: ocean.png.
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
@@ -141,6 +141,18 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
           options.causticsGrid > 1024) {
         error =
             "--caustics-grid must be an integer in [64, 1024], got '" + std::string(value) + "'";
+        return false;
+      }
+    } else if (flag == "--god-rays-resolution") {
+      if (value == "full") {
+        options.godRayResolution = 1;
+      } else if (value == "half") {
+        options.godRayResolution = 2;
+      } else if (value == "quarter") {
+        options.godRayResolution = 4;
+      } else {
+        error =
+            "--god-rays-resolution must be full, half or quarter, got '" + std::string(value) + "'";
         return false;
       }
     } else if (flag == "--model") {

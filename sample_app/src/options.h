@@ -26,6 +26,8 @@ struct Options {
   // irradiance (seed 004, Feature::PhysicalCaustics), with this grid resolution.
   bool physicalCaustics = false;
   int causticsGrid = 256;
+  // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
+  int godRayResolution = 0;
   int waterResolution = 256;
   bool quick = false;  // report: a smoke run in a few minutes
 };

@@ -39,6 +39,8 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   // plugin's default keeps the shafts from washing out Snell's window.
   setup->godRays_.intensity = 0.7f;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
+  if (options.godRayResolution > 0)
+    setup->godRays_.resolution = static_cast<postfx::GodRayResolution>(options.godRayResolution);
   if (options.physicalCaustics) {
     setup->caustics_.model = postfx::CausticsModel::WavefrontAreaRatio;
     setup->caustics_.gridResolution = options.causticsGrid;

@@ -88,6 +88,9 @@ TEST_F(SampleCli, AbsurdSize) {
 TEST_F(SampleCli, NotANumber) {
   expectRejected("--time nan", "--time");
 }
+TEST_F(SampleCli, UnknownGodRayResolution) {
+  expectRejected("--god-rays-resolution eighth", "--god-rays-resolution");
+}
 TEST_F(SampleCli, MissingModel) {
   expectRejected("--model " + (dir_ / "missing.glb").string(), "missing.glb");
 }
