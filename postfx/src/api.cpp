@@ -130,7 +130,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     const GodRayResolution resolution = frame.godRays.resolution;
     const shared::GodRaysBlock godBlock = detail::buildGodRaysBlock(
         frame, detail::GodRaysPass::reducedSize(textures.width, resolution),
-        detail::GodRaysPass::reducedSize(textures.height, resolution));
+        detail::GodRaysPass::reducedSize(textures.height, resolution), context.godRayPivot);
     r = context.godRays.prepare(frame, textures.width, textures.height, godBlock, error);
     if (r != Result::Ok) {
       context.caustics.finish();

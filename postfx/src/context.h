@@ -6,6 +6,7 @@
 #include <postfx/postfx.h>
 
 #include "caustics_pass.h"
+#include "godrays_constants.h"
 #include "godrays_pass.h"
 #include "gpu_timers.h"
 #include "irradiance_pass.h"
@@ -19,6 +20,7 @@ struct Context {
   CreateDesc desc;
   detail::CausticsPass caustics;
   detail::GodRaysPass godRays;
+  detail::GodRayGridPivot godRayPivot;
   int godRaysPass = -1;  // timer index of "god_rays" (after the floor when there is one); -1: off
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
   int irradiancePass = -1;  // timer index of "caustics_irradiance"; -1: no PhysicalCaustics

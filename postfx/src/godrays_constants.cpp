@@ -23,8 +23,17 @@ double godRayGridPhase(double value, double spacing) {
   return phase >= spacing || phase < 0.0 ? 0.0 : phase;  // rounding can land on the bound
 }
 
-shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth,
-                                       int reducedHeight) {
+const glm::dvec3& GodRayGridPivot::follow(const GodRayGrid& grid, double spacing,
+                                          const glm::dvec3& camera) {
+  const glm::dvec3 d = camera - pivot_;
+  pivot_ += std::round(glm::dot(d, grid.x) / spacing) * spacing * grid.x +
+            std::round(glm::dot(d, grid.z) / spacing) * spacing * grid.z +
+            glm::dot(d, grid.y) * grid.y;
+  return pivot_;
+}
+
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth, int reducedHeight,
+                                       GodRayGridPivot& pivot) {
   shared::GodRaysBlock b{};
   const GodRaySettings& s = frame.godRays;
   const WaterSurface& water = frame.water;
@@ -32,9 +41,10 @@ shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth,
   const double spacing = s.gridSpacing;
   b.gridX = glm::vec4(glm::vec3(grid.x), s.gridSpacing);
   b.gridZ = glm::vec4(glm::vec3(grid.z), static_cast<float>(s.sampleCount));
-  // World snapping: the grid's planes pass through the world origin; only the camera's offset
-  // within its cell reaches the GPU.
-  const glm::dvec3& camera = frame.camera.position;
+  // World snapping: the grid's planes pass through the pivot (the world origin until the camera
+  // moves); only the camera's offset within its cell reaches the GPU.
+  const glm::dvec3 camera =
+      frame.camera.position - pivot.follow(grid, spacing, frame.camera.position);
   b.gridOffset = glm::vec4(static_cast<float>(godRayGridPhase(glm::dot(camera, grid.x), spacing)),
                            static_cast<float>(godRayGridPhase(glm::dot(camera, grid.z), spacing)),
                            s.sampling == GodRaySampling::UniformAlongRay ? 1.0f : 0.0f,

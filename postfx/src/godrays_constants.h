@@ -21,7 +21,26 @@ GodRayGrid godRayGrid(const glm::dvec3& towardSun, double ior);
 // value - floor(value / spacing) * spacing, in [0, spacing).
 double godRayGridPhase(double value, double spacing);
 
+// The point the grid's planes pass through, kept next to the camera without moving a plane.
+// When the sun turns, the grid turns about this point: were it the world origin, a camera 1e6 m
+// away would see every plane sweep 1e6 * (the sun's turn) metres, so a slowly setting sun would
+// reshuffle all samples every frame (flicker). Kept next to the camera, nearby planes move by
+// about spacing * (the turn) instead, as they do near the origin. A context's state: starts at
+// the world origin.
+class GodRayGridPivot {
+ public:
+  // Moves the pivot to the grid lattice point nearest the camera (x', z' by whole spacings; y',
+  // along which the planes run, freely): the same planes for this frame's grid. Returns it.
+  const glm::dvec3& follow(const GodRayGrid& grid, double spacing, const glm::dvec3& camera);
+  const glm::dvec3& point() const { return pivot_; }
+
+ private:
+  glm::dvec3 pivot_{0.0};
+};
+
 // `reducedWidth` x `reducedHeight`: the size of the march texture (the target's at full res).
-shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth, int reducedHeight);
+// `pivot` is the context's: it follows the camera (see GodRayGridPivot).
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth, int reducedHeight,
+                                       GodRayGridPivot& pivot);
 
 }  // namespace postfx::detail

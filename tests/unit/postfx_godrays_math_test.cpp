@@ -2,7 +2,9 @@
 // (godrays_constants), evaluated on the CPU exactly as the shader does.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "godrays_constants.h"
@@ -123,6 +125,70 @@ TEST(PostfxGodRayGrid, PhaseIsSnappedInDoubleFarFromTheOrigin) {
   const double p = godRayGridPhase(-1e-17, 0.5);  // rounds onto the bound
   EXPECT_GE(p, 0.0);
   EXPECT_LT(p, 0.5);
+}
+
+// Circular distance between two phases in [0, spacing).
+double phaseDistance(double a, double b, double spacing) {
+  const double d = std::abs(a - b);
+  return std::min(d, spacing - d);
+}
+
+TEST(PostfxGodRayGrid, PivotKeepsEveryPlaneInPlaceWhileTheSunHoldsStill) {
+  using postfx::detail::godRayGridPhase;
+  const double spacing = 0.75;
+  const postfx::detail::GodRayGrid grid =
+      postfx::detail::godRayGrid(glm::dvec3(0.6, 0.5, 0.2), 1.333);
+  postfx::detail::GodRayGridPivot pivot;
+  double worst = 0.0;
+  for (const glm::dvec3& camera :
+       {glm::dvec3(0.1, -3, 0.2), glm::dvec3(13.7, -4, -2.2), glm::dvec3(1e6, -5, -2e6),
+        glm::dvec3(1e6 + 0.31, -5.2, -2e6 + 0.07), glm::dvec3(-3.3, -1, 8.8)}) {
+    const glm::dvec3 relative = camera - pivot.follow(grid, spacing, camera);
+    for (const glm::dvec3& axis : {grid.x, grid.z}) {
+      // The planes through the world origin: where they were before the pivot moved.
+      worst =
+          std::max(worst, phaseDistance(godRayGridPhase(glm::dot(relative, axis), spacing),
+                                        godRayGridPhase(glm::dot(camera, axis), spacing), spacing));
+    }
+    EXPECT_LT(glm::length(relative - glm::dot(relative, grid.y) * grid.y), spacing)
+        << "the pivot is a lattice point next to the camera";
+  }
+  std::printf("static sun: planes moved by at most %.3g m as the pivot followed the camera\n",
+              worst);
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(PostfxGodRayGrid, SettingSunFarFromTheOriginMovesNearbyPlanesOnlySlightly) {
+  using postfx::detail::godRayGridPhase;
+  const double spacing = 0.75, turn = 1e-4;  // radians per frame: a 17-minute day
+  const glm::dvec3 camera(1e6, -5.0, -2e6);
+  postfx::detail::GodRayGridPivot pivot;
+  double pivotPrevious[2] = {0, 0}, originPrevious[2] = {0, 0};
+  double pivotWorst = 0.0, originWorst = 0.0;
+  for (int frame = 0; frame < 10; ++frame) {
+    const double azimuth = 0.3 + turn * frame;
+    const glm::dvec3 sun(0.7 * std::cos(azimuth), 0.7, 0.7 * std::sin(azimuth));
+    const postfx::detail::GodRayGrid grid = postfx::detail::godRayGrid(sun, 1.333);
+    const glm::dvec3 relative = camera - pivot.follow(grid, spacing, camera);
+    const glm::dvec3 axes[2] = {grid.x, grid.z};
+    for (int i = 0; i < 2; ++i) {
+      const double withPivot = godRayGridPhase(glm::dot(relative, axes[i]), spacing);
+      const double fromOrigin = godRayGridPhase(glm::dot(camera, axes[i]), spacing);
+      if (frame > 0) {
+        pivotWorst = std::max(pivotWorst, phaseDistance(withPivot, pivotPrevious[i], spacing));
+        originWorst = std::max(originWorst, phaseDistance(fromOrigin, originPrevious[i], spacing));
+      }
+      pivotPrevious[i] = withPivot;
+      originPrevious[i] = fromOrigin;
+    }
+  }
+  std::printf(
+      "sun turning 1e-4 rad/frame, camera 2.2e6 m out: nearby planes move %.3g m/frame "
+      "about the pivot, %.3g m/frame about the world origin (spacing %.2f m)\n",
+      pivotWorst, originWorst, spacing);
+  // About the pivot: |camera - pivot| <= spacing * sqrt(2), so spacing * sqrt(2) * turn ~ 1e-4.
+  EXPECT_LT(pivotWorst, 2.0 * spacing * turn);
+  EXPECT_GT(originWorst, 0.1) << "the case is meant to show the reshuffle about the origin";
 }
 
 }  // namespace
