@@ -19,10 +19,12 @@ postfx_add_test(postfx_gl_tests
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
 
+# The scene fixtures, the CPU ray tracer and the map measurements come from ocean_reference
+# (sample_app/reference), which the report's object-caustics rows use too.
 postfx_add_test(postfx_object_caustics_tests
-  SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_fixtures.cpp
-          gl/postfx_object_caustics_reference.cpp gl/postfx_object_caustics_util.cpp
+  SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
           gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
-  LIBS postfx gbuffer glm::glm PkgConfig::EPOXY
+          gl/postfx_object_caustics_host_test.cpp
+  LIBS postfx ocean_reference gbuffer glm::glm PkgConfig::EPOXY
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -92,8 +92,10 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
-  const shared::CausticsBlock block = detail::buildCausticsBlock(
-      context.desc, frame, textures.width, textures.height, textures.water);
+  shared::CausticsBlock block = detail::buildCausticsBlock(context.desc, frame, textures.width,
+                                                           textures.height, textures.water);
+  // No water texture (object caustics only): the floor then reads no cascade.
+  if (!textures.hasWater) block.oblique.w = 0.0f;
 
   detail::GlStateGuard guard;
   DebugGroup group("postfx");
@@ -114,7 +116,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   if (!godRays && context.godRaysPass >= 0) context.timers.markSkipped(context.godRaysPass);
   if (!objects && context.objectCausticsPass >= 0)
     context.timers.markSkipped(context.objectCausticsPass);
-  if (!caustics && !godRays) {
+  // The floor runs whenever some timed pass does, so that every pass has its ratio.
+  if (!caustics && !godRays && !(objects && floor)) {
     if (floor) context.timers.markSkipped(Context::kFloorPass);
     r = objects ? runObjectCaustics(context, frame, textures.width, textures.height) : Result::Ok;
     context.timers.endFrame();

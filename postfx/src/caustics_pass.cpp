@@ -188,10 +188,14 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   glBindTextureUnit(kDepthUnit, frame.depth.texture);
   glBindTextureUnit(kNormalUnit, frame.normal.texture);
   glBindTextureUnit(kAlbedoUnit, frame.albedo.texture);
-  glBindTextureUnit(kWaterUnit, frame.water.texture.texture);
   const GLuint pointSamplers[] = {pointSampler_, pointSampler_, pointSampler_};
   glBindSamplers(kDepthUnit, 3, pointSamplers);
-  glBindSampler(kWaterUnit, textures.waterMipmapped ? waterMipSampler_ : waterLinearSampler_);
+  // Without water (object caustics only) nothing samples the unit; binding 0 there would unbind
+  // every target of the unit, which the state guard does not restore.
+  if (frame.water.texture.texture != 0) {
+    glBindTextureUnit(kWaterUnit, frame.water.texture.texture);
+    glBindSampler(kWaterUnit, textures.waterMipmapped ? waterMipSampler_ : waterLinearSampler_);
+  }
   if (hasFeature(desc_.features, Feature::ShadowMask)) {
     glBindTextureUnit(kShadowUnit, frame.shadow.depth.texture);
     glBindSampler(kShadowUnit, frame.shadow.depthConvention == 0 ? shadowReverseSampler_

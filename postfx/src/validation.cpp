@@ -139,6 +139,14 @@ bool isMipComplete(GLuint texture, int width, int height) {
   return true;
 }
 
+Result checkShadowTexture(const CreateDesc& create, const FrameDesc& frame, std::string& error) {
+  if (!hasFeature(create.features, Feature::ShadowMask)) return Result::Ok;
+  TextureFacts shadow;
+  const Result r = checkTexture("shadow.depth", frame.shadow.depth, {GL_TEXTURE_2D}, kDepthFormats,
+                                shadow, error);
+  return r != Result::Ok ? r : checkDepthMode("shadow.depth", frame.shadow.depth.texture, error);
+}
+
 }  // namespace
 
 Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& error) {
@@ -309,6 +317,27 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
     }
   }
 
+  // Only the seabed caustics and the god rays (and the benchmark floor beside them) sample the
+  // water: a host with glass but no water simulation may leave it 0. A texture given is
+  // still checked, so a stale name is reported rather than sampled.
+  const bool waterNeeded =
+      (hasFeature(create.features, Feature::Caustics) && frame.caustics.enabled) ||
+      (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled);
+  out.hasWater = waterNeeded || frame.water.texture.texture != 0;
+  if (!out.hasWater) {
+    out.width = target.width;
+    out.height = target.height;
+    out.water = {};
+    out.waterMipmapped = false;
+    return checkShadowTexture(create, frame, error);
+  }
+
+  if (frame.water.texture.texture == 0) {
+    error =
+        "water.texture: required while seabed caustics or god rays are enabled (0 is accepted "
+        "only when both are off, e.g. object caustics alone)";
+    return Result::MissingTexture;
+  }
   TextureFacts water;
   const bool single = create.waterTexture == WaterTextureType::Single2D;
   r = checkTexture("water.texture", frame.water.texture,
@@ -321,14 +350,8 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
     return Result::SizeMismatch;
   }
 
-  if (hasFeature(create.features, Feature::ShadowMask)) {
-    TextureFacts shadow;
-    r = checkTexture("shadow.depth", frame.shadow.depth, {GL_TEXTURE_2D}, kDepthFormats, shadow,
-                     error);
-    if (r != Result::Ok) return r;
-    r = checkDepthMode("shadow.depth", frame.shadow.depth.texture, error);
-    if (r != Result::Ok) return r;
-  }
+  r = checkShadowTexture(create, frame, error);
+  if (r != Result::Ok) return r;
 
   out.width = target.width;
   out.height = target.height;

@@ -7,42 +7,13 @@
 
 #include <seabed_reference.h>
 #include <water_readback.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "error_metrics.h"
+#include "flat_gbuffer.h"
 #include "pass_runner.h"
 
 namespace ocean::report {
 namespace {
-
-constexpr double kNear = 0.1;
-
-// The flat-seabed G-buffer: every pixel sees the floor at the same view depth, facing up, white.
-class FlatSeabedGbuffer {
- public:
-  FlatSeabedGbuffer(int width, int height, float windowDepth) {
-    const size_t pixels = size_t(width) * size_t(height);
-    glCreateTextures(GL_TEXTURE_2D, 3, textures_);
-    glTextureStorage2D(depth(), 1, GL_DEPTH_COMPONENT32F, width, height);
-    glTextureStorage2D(normal(), 1, GL_RGBA16F, width, height);
-    glTextureStorage2D(albedo(), 1, GL_RGBA8, width, height);
-    const std::vector<float> depths(pixels, windowDepth);
-    glTextureSubImage2D(depth(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT,
-                        depths.data());
-    const float up[4] = {0.0f, 1.0f, 0.0f, 0.0f}, white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearTexImage(normal(), 0, GL_RGBA, GL_FLOAT, up);
-    glClearTexImage(albedo(), 0, GL_RGBA, GL_FLOAT, white);
-  }
-  ~FlatSeabedGbuffer() { glDeleteTextures(3, textures_); }
-  FlatSeabedGbuffer(const FlatSeabedGbuffer&) = delete;
-  FlatSeabedGbuffer& operator=(const FlatSeabedGbuffer&) = delete;
-  GLuint depth() const { return textures_[0]; }
-  GLuint normal() const { return textures_[1]; }
-  GLuint albedo() const { return textures_[2]; }
-
- private:
-  GLuint textures_[3] = {};
-};
 
 // Refracted sun's cosine to the vertical: N.L of a floor facing up, which the raw factor holds.
 double refractedCosine(const glm::dvec3& towardSun, double ior) {
@@ -57,29 +28,21 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
                      std::vector<Row>& rows, std::string& note, std::string& error) {
   const int w = settings.width, h = settings.height, bin = settings.binPixels;
   const double height = settings.receiverDepth - settings.cameraDepth;  // camera to floor (m)
-  const double aspect = double(w) / double(h);
-  const double f = 1.0 / std::tan(glm::radians(30.0));  // 60 degree vertical field of view
+  const TopDownView topDown = topDownView(w, h, height);
+  const double aspect = topDown.aspect, f = topDown.focal;
 
   postfx::FrameDesc frame = hostFrame;
   const double level = frame.water.level;
   const glm::dvec3 camera(hostFrame.camera.position.x, level - settings.cameraDepth,
                           hostFrame.camera.position.z);
-  // Straight down, image up = world -z: view x = world x, view y = -world z.
-  const glm::dmat4 view =
-      glm::lookAt(glm::dvec3(0.0), glm::dvec3(0.0, -1.0, 0.0), glm::dvec3(0.0, 0.0, -1.0));
-  glm::dmat4 projection(0.0);  // reverse-Z, infinite far plane: window depth = near / distance
-  projection[0][0] = f / aspect;
-  projection[1][1] = f;
-  projection[2][3] = -1.0;
-  projection[3][2] = kNear;
-  FlatSeabedGbuffer gbuffer(w, h, float(kNear / height));
+  FlatFloorGbuffer gbuffer(w, h, topDown.windowDepth);
   ReportTarget target(w, h);
   frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
   frame.normal = {gbuffer.normal(), GL_RGBA16F};
   frame.albedo = {gbuffer.albedo(), GL_RGBA8};
   frame.camera.position = camera;
-  frame.camera.view = glm::mat4(view);
-  frame.camera.projection = projection;
+  frame.camera.view = glm::mat4(topDown.view);
+  frame.camera.projection = topDown.projection;
   frame.caustics = postfx::CausticsSettings{};
   frame.caustics.surfaceFadeDepth = 0.0f;  // the reference has no fade
   frame.godRays.enabled = false;

@@ -1,5 +1,6 @@
 #include "pass_runner.h"
 
+#include <object_caustics_metrics.h>
 #include <plugin_setup.h>
 
 namespace ocean::report {
@@ -54,6 +55,10 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* pas
       out.raw.resize(pixels);
       glGetTextureImage(raw, 0, GL_RED, GL_FLOAT, GLsizei(pixels * sizeof(float)), out.raw.data());
     }
+    out.objectMapPlacement = postfx::objectCausticMap(*context);
+    out.objectMap.clear();
+    if (out.objectMapPlacement.texture != 0)
+      out.objectMap = ocean::reference::readObjectMap(out.objectMapPlacement);
   }
   postfx::destroy(context);
   return ok;

@@ -17,6 +17,10 @@ struct PassRun {
   double medianMs = 0.0, floorMs = 0.0;
   std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order
   std::vector<float> raw;        // raw caustic factor (with Feature::RawCausticOutput)
+  // The object caustic map of the last frame (rgb, row v = 0 first) and where it lies; empty
+  // and texture 0 when the object caustics did not run.
+  std::vector<glm::dvec3> objectMap;
+  postfx::ObjectCausticMap objectMapPlacement;
 };
 
 // A GL_RGBA32F target of the frame's size, owned by the report.

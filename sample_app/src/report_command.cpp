@@ -10,6 +10,7 @@
 #include <caustic_rows.h>
 #include <error_plot.h>
 #include <godray_rows.h>
+#include <object_caustic_rows.h>
 #include <pass_runner.h>
 #include <report_table.h>
 
@@ -70,7 +71,11 @@ int runReport(const Options& given) {
   if (given.quick) caustics.physicalGrids = {64, 128, 256};
   std::string causticNote;
   if (!report::measureCaustics(frame, caustics, rows, causticNote, error)) return fail(error);
-  info.referenceNote = causticNote + "\n\n" + godRayNote;
+  std::string objectNote;
+  if (!report::measureObjectCaustics(target, report::objectCausticSweep(given.quick), rows,
+                                     objectNote, error))
+    return fail(error);
+  info.referenceNote = causticNote + "\n\n" + godRayNote + "\n\n" + objectNote;
 
   const std::string dir = options.out + "/";
   if (!report::writeCsv(dir + "error_vs_time.csv", rows, error) ||

@@ -22,19 +22,17 @@ struct SphereRun {
   double ms = 0.0;
 };
 
-// The sphere (R = 1, IOR 1.5, tinted glass) 0.4 m above the plane y = 0, sun 25 degrees from
-// the zenith: the axial caustic lands where the line through the centre along the light meets
-// the plane.
+// The report's glass sphere over a plane (ocean::reference::glassSphereOverPlane: R = 1, IOR 1.5,
+// tinted glass, 0.4 m above the plane y = 0, sun 25 degrees from the zenith): the axial caustic
+// lands where the line through the centre along the light meets the plane.
 SphereRun runSphere(const postfx::ObjectCausticsSettings& settings, int referenceRays, bool print) {
-  const glm::dvec3 sun = sunAt(25.0, 40.0);
+  const ocean::reference::SphereOverPlane scene = ocean::reference::glassSphereOverPlane();
+  const glm::dvec3 sun = scene.towardSun;
   ObjectHost host(sun);
-  const GlMesh mesh = makeSphereMesh(1.0, 160, 80);
-  SphereCaster sphere;
-  sphere.centre = {0.3, 1.4, -0.2};
-  sphere.ior = 1.5;
-  sphere.absorption = {0.02, 0.1, 0.3};
+  const GlMesh mesh = makeSphereMesh(scene.sphere.radius, 160, 80);
+  const SphereCaster& sphere = scene.sphere;
   postfx::CasterMaterial glass;
-  glass.ior = 1.5f;
+  glass.ior = float(sphere.ior);
   glass.absorption = glm::vec3(sphere.absorption);
   const postfx::CasterMesh caster = mesh.caster(translation(sphere.centre), glass);
   auto fx = makeObjectContext();

@@ -44,46 +44,6 @@ int objectPassIndex(const postfx::FrameStats& stats) {
   return -1;
 }
 
-std::vector<glm::dvec3> readObjectMap(const postfx::ObjectCausticMap& map) {
-  const std::vector<glm::vec4> rgba = readRgba(map.texture, map.size, map.size);
-  std::vector<glm::dvec3> out(rgba.size());
-  for (size_t i = 0; i < rgba.size(); ++i) out[i] = glm::dvec3(glm::vec3(rgba[i]));
-  return out;
-}
-
-glm::dvec3 mapFlux(const std::vector<glm::dvec3>& map, const postfx::ObjectCausticMap& p) {
-  const double texelArea = glm::length(p.axisU) * glm::length(p.axisV) / (double(p.size) * p.size);
-  glm::dvec3 sum(0.0);
-  for (const glm::dvec3& v : map) sum += v;
-  return sum * texelArea;
-}
-
-glm::dvec2 focusTexel(const std::vector<glm::dvec3>& map, int size, int radius) {
-  size_t best = 0;
-  for (size_t i = 0; i < map.size(); ++i)
-    if (map[i].g > map[best].g) best = i;
-  const int bx = static_cast<int>(best % size), by = static_cast<int>(best / size);
-  const double peak = map[best].g;
-  glm::dvec2 sum(0.0);
-  double weight = 0.0;
-  for (int y = std::max(0, by - radius); y <= std::min(size - 1, by + radius); ++y)
-    for (int x = std::max(0, bx - radius); x <= std::min(size - 1, bx + radius); ++x) {
-      const double v = map[y * size + x].g;
-      if (v < 0.5 * peak) continue;
-      sum += glm::dvec2(x + 0.5, y + 0.5) * v;
-      weight += v;
-    }
-  return sum / weight;
-}
-
-glm::dvec3 texelOnPlane(const postfx::ObjectCausticMap& map, const glm::dvec2& texel,
-                        double planeY) {
-  const glm::dvec3 p =
-      map.origin + map.axisU * (texel.x / map.size) + map.axisV * (texel.y / map.size);
-  const double t = (planeY - p.y) / map.direction.y;
-  return p + map.direction * t;
-}
-
 bool allFinite(const std::vector<glm::dvec3>& values) {
   for (const glm::dvec3& v : values)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return false;

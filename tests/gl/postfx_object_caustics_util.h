@@ -8,12 +8,32 @@
 
 #include <postfx/postfx.h>
 
-#include "postfx_object_caustics_fixtures.h"
-#include "postfx_object_caustics_reference.h"
+#include <object_caustics_metrics.h>
+#include <object_caustics_reference.h>
+#include <object_caustics_scene.h>
+
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
 
 namespace postfxtest {
+
+// The scene fixtures, the CPU reference and the map measurements live in ocean_reference (the
+// report measures the same scene).
+using ocean::reference::CausticReference;
+using ocean::reference::focusTexel;
+using ocean::reference::gaussianBlur;
+using ocean::reference::GlMesh;
+using ocean::reference::makeCubeMesh;
+using ocean::reference::makeRingMesh;
+using ocean::reference::makeSphereMesh;
+using ocean::reference::mapFlux;
+using ocean::reference::readObjectMap;
+using ocean::reference::ReceiverMap;
+using ocean::reference::RingCaster;
+using ocean::reference::SphereCaster;
+using ocean::reference::texelOnPlane;
+using ocean::reference::traceRingReference;
+using ocean::reference::traceSphereReference;
 
 // Unit vector toward a sun at the given zenith and azimuth angles (degrees; azimuth from +x
 // toward +z).
@@ -52,20 +72,6 @@ inline ContextPtr makeObjectContext(postfx::Feature extra = postfx::Feature::Non
 }
 
 int objectPassIndex(const postfx::FrameStats& stats);
-
-// The plugin's map read back as doubles (rgb), size x size.
-std::vector<glm::dvec3> readObjectMap(const postfx::ObjectCausticMap& map);
-
-// Total flux (sun irradiance 1, m^2) in a map of relative irradiance.
-glm::dvec3 mapFlux(const std::vector<glm::dvec3>& map, const postfx::ObjectCausticMap& placement);
-
-// Brightest spot: centroid (texel units, continuous) of the texels >= half the maximum of the
-// green channel within +-radius texels of the maximum.
-glm::dvec2 focusTexel(const std::vector<glm::dvec3>& map, int size, int radius = 6);
-
-// Where the map texel position lies on the plane y = planeY (projected along the light).
-glm::dvec3 texelOnPlane(const postfx::ObjectCausticMap& map, const glm::dvec2& texel,
-                        double planeY);
 
 bool allFinite(const std::vector<glm::dvec3>& values);
 

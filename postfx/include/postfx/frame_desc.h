@@ -59,6 +59,10 @@ struct WaterSurface {
   // accepted and sampled without mips); sampled with GL_REPEAT by the plugin's own sampler.
   // Layer c covers world xz with uv = (xz - origin) / tileSize[c]. The surface normal is
   // normalize(-sum(dh/dx), 1, -sum(dh/dz)) over the cascades.
+  // Required when the frame runs seabed caustics or god rays (Feature::Caustics with
+  // caustics.enabled, Feature::GodRays with godRays.enabled); a host with object caustics only
+  // (glass, no water simulation) may leave it 0, with `level` below its casters so that they are
+  // lit by the sun itself. A texture given is always validated.
   TextureRef texture;
   int cascadeCount = 1;                                    // [1, kMaxCascades], <= layer count
   double tileSize[kMaxCascades] = {64.0, 16.0, 4.0, 1.0};  // metres per tile, > 0

@@ -71,9 +71,11 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // caustics (postfx/casters.h; timed as "object_caustics") run last, skipped (0 ms) with no
 // caster, objectCaustics.settings.enabled off, the sun at/below the horizon, or no caster inside
 // the receiver map's view.
-// With Feature::BenchmarkFloor, a "floor" pass runs first whenever caustics or god rays run: it
-// reads the same inputs and writes the same outputs with no math (adds exactly 0), so that
-// caustics.medianMs / floor.medianMs measures the shader's cost independently of the machine.
+// With Feature::BenchmarkFloor, a "floor" pass runs first whenever any timed pass runs (caustics,
+// god rays or object caustics): a full-screen pass that reads the G-buffer, the water cascades
+// (when a water texture is given) and the shadow map, and writes the same outputs with no math
+// (adds exactly 0), so that e.g. caustics.medianMs / floor.medianMs measures the shader's cost
+// independently of the machine.
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
 // Deletes the context's GL objects (current GL context required; without one they are leaked

@@ -9,7 +9,7 @@
 
 #include <postfx/postfx.h>
 
-namespace postfxtest {
+namespace ocean::reference {
 
 struct SphereCaster {
   glm::dvec3 centre{0.0};
@@ -32,17 +32,30 @@ struct CausticReference {
   double interceptedArea = 0.0;        // sun-perpendicular area of rays that hit the caster
 };
 
-// `map`: the plugin's map placement (from postfx::objectCausticMap); raysPerSide^2 rays over a
-// sun-perpendicular square of half side `halfSide` around the caster.
+// `map`: the plugin's map placement (from postfx::objectCausticMap), or any other square grid of
+// bins perpendicular to the light given the same way; raysPerSide^2 rays over a sun-perpendicular
+// square around the caster. `seed` picks the jitter: two seeds give independent estimates, whose
+// difference measures the reference's own noise.
 CausticReference traceSphereReference(const SphereCaster& sphere, const glm::dvec3& towardSun,
                                       double planeY, const postfx::ObjectCausticMap& map,
-                                      int raysPerSide);
+                                      int raysPerSide, unsigned seed = 0);
 CausticReference traceRingReference(const RingCaster& ring, const glm::dvec3& towardSun,
                                     double planeY, const postfx::ObjectCausticMap& map,
                                     int raysPerSide);
+
+// The glass sphere over a plane that the accuracy test and the report measure: R = 1 m, IOR 1.5,
+// tinted (absorption 0.02, 0.1, 0.3 per m), its bottom 0.4 m above the plane y = 0, the sun 25
+// degrees from the zenith: the plane lies just beyond the paraxial focus (1.5 R from the
+// centre), where the spherical aberration spreads the rim rays around the axial peak.
+struct SphereOverPlane {
+  SphereCaster sphere;
+  glm::dvec3 towardSun{0.0, 1.0, 0.0};  // unit
+  double planeY = 0.0;
+};
+SphereOverPlane glassSphereOverPlane();
 
 // Separable Gaussian blur (sigma in texels) of a size x size map, for comparing the reference
 // with the GPU's splatted map at the same resolution.
 std::vector<glm::dvec3> gaussianBlur(const std::vector<glm::dvec3>& map, int size, double sigma);
 
-}  // namespace postfxtest
+}  // namespace ocean::reference

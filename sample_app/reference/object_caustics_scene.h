@@ -1,15 +1,17 @@
 #pragma once
-// Host-side fixtures for the object-caustics tests: caster meshes in GL buffers (what a host's
-// renderer owns) and an analytic receiver depth map (a plane seen from the sun, the depth a host
-// shadow pass would write), computed in double on the CPU.
+// Host-side inputs of the object-caustics scenes the tests and the report run (a glass sphere or
+// a metal ring over a plane): caster meshes in GL buffers (what a host's renderer owns) and an
+// analytic receiver depth map (a plane seen from the sun, the depth a host shadow pass would
+// write), computed in double on the CPU.
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 
 #include <postfx/postfx.h>
 
-namespace postfxtest {
+namespace ocean::reference {
 
 // A triangle mesh in host-owned buffers: position (float3) + normal (float3), 24-byte stride.
 class GlMesh {
@@ -56,4 +58,4 @@ class ReceiverMap {
   int size = 0;
 };
 
-}  // namespace postfxtest
+}  // namespace ocean::reference

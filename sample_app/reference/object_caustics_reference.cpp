@@ -1,5 +1,6 @@
-#include "postfx_object_caustics_reference.h"
+#include "object_caustics_reference.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -8,7 +9,7 @@
 #include <random>
 #include <thread>
 
-namespace postfxtest {
+namespace ocean::reference {
 namespace {
 
 struct Landing {
@@ -47,7 +48,7 @@ std::optional<glm::dvec3> landOnPlane(const glm::dvec3& p, const glm::dvec3& d, 
 
 CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfSide,
                        const glm::dvec3& towardSun, const postfx::ObjectCausticMap& map, int n,
-                       const char* name) {
+                       const char* name, unsigned seed = 0) {
   const glm::dvec3 d = -glm::normalize(towardSun);
   const glm::dvec3 ref = std::abs(d.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
   const glm::dvec3 right = glm::normalize(glm::cross(ref, d)), up = glm::cross(d, right);
@@ -67,7 +68,8 @@ CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfS
     for (int j = t; j < n; j += threads) {
       if (t == 0 && (j % (n / 4 + 1)) == 0)
         std::fprintf(stderr, "[reference %s] %d%%\n", name, 100 * j / n);
-      std::mt19937_64 rng(0x5eedULL + static_cast<unsigned long long>(j));
+      std::mt19937_64 rng(0x5eedULL + static_cast<unsigned long long>(j) +
+                          (static_cast<unsigned long long>(seed) << 32));
       std::uniform_real_distribution<double> jitter(0.0, 1.0);
       for (int i = 0; i < n; ++i) {
         const double a = -halfSide + (i + jitter(rng)) * cell;
@@ -106,7 +108,7 @@ CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfS
 
 CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& towardSun,
                                       double planeY, const postfx::ObjectCausticMap& map,
-                                      int raysPerSide) {
+                                      int raysPerSide, unsigned seed) {
   const TraceFn fn = [&s, planeY](const glm::dvec3& o,
                                   const glm::dvec3& d) -> std::optional<Landing> {
     const glm::dvec3 oc = o - s.centre;
@@ -129,7 +131,7 @@ CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& t
     if (!hit) return none;
     return Landing{*hit, t1 * t2 * glm::exp(-s.absorption * chord)};
   };
-  return trace(fn, s.centre, s.radius * 1.01, towardSun, map, raysPerSide, "sphere");
+  return trace(fn, s.centre, s.radius * 1.01, towardSun, map, raysPerSide, "sphere", seed);
 }
 
 CausticReference traceRingReference(const RingCaster& r, const glm::dvec3& towardSun, double planeY,
@@ -182,6 +184,20 @@ CausticReference traceRingReference(const RingCaster& r, const glm::dvec3& towar
                "ring");
 }
 
+SphereOverPlane glassSphereOverPlane() {
+  const double pi = 3.14159265358979323846;
+  const double zenith = 25.0 * pi / 180.0, azimuth = 40.0 * pi / 180.0;  // azimuth from +x to +z
+  SphereOverPlane s;
+  s.sphere.centre = {0.3, 1.4, -0.2};
+  s.sphere.radius = 1.0;
+  s.sphere.ior = 1.5;
+  s.sphere.absorption = {0.02, 0.1, 0.3};
+  s.towardSun = {std::sin(zenith) * std::cos(azimuth), std::cos(zenith),
+                 std::sin(zenith) * std::sin(azimuth)};
+  s.planeY = 0.0;
+  return s;
+}
+
 std::vector<glm::dvec3> gaussianBlur(const std::vector<glm::dvec3>& map, int size, double sigma) {
   const int radius = static_cast<int>(std::ceil(3.0 * sigma));
   std::vector<double> kernel(2 * radius + 1);
@@ -205,4 +221,4 @@ std::vector<glm::dvec3> gaussianBlur(const std::vector<glm::dvec3>& map, int siz
   return out;
 }
 
-}  // namespace postfxtest
+}  // namespace ocean::reference

@@ -1,10 +1,10 @@
-#include "postfx_object_caustics_fixtures.h"
+#include "object_caustics_scene.h"
 
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace postfxtest {
+namespace ocean::reference {
 
 GlMesh::GlMesh(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                const std::vector<std::uint32_t>& indices) {
@@ -168,4 +168,4 @@ postfx::SunShadowMap ReceiverMap::desc() const {
   return s;
 }
 
-}  // namespace postfxtest
+}  // namespace ocean::reference

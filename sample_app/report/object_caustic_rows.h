@@ -1,0 +1,48 @@
+#pragma once
+// The report's object-caustics rows: the glass sphere over a plane
+// (ocean::reference::glassSphereOverPlane) at several caustic-map sizes, ray-grid sizes and
+// receiver-hit iteration counts, each timed (with its floor) and compared with exact CPU ray
+// tracing of the same sphere.
+//
+// The host is one with glass but no water simulation: no water texture, the level far below, a
+// flat receiver G-buffer seen from above and the receiver depth map of the plane seen from the
+// sun. Error columns: the relative RMSE (green channel) of the map resampled onto a fixed grid
+// of bins perpendicular to the light, against the reference traced into the same bins (so maps
+// of every size meet one converged reference); the note holds the focus position error (% of
+// the radius) and the flux error, measured as the accuracy test does (reference traced into
+// each GPU map and blurred by the splat).
+#include <string>
+#include <vector>
+
+#include "pass_runner.h"
+#include "report_table.h"
+
+namespace ocean::report {
+
+struct ObjectCausticVariant {
+  enum class Sweep { MapSize, GridSize, Iterations, Splat };
+  std::string method;  // the plot's series
+  Sweep sweep;         // what varies along it: named first in the setting (the plot's label)
+  int mapSize, gridSize, iterations;
+  float splatRadius;  // texels
+};
+
+struct ObjectCausticReportSettings {
+  std::vector<ObjectCausticVariant> variants;  // runs shared where two series meet
+  int timedFrames = 16;
+  int referenceRaysPerSide = 3000;  // per seed (two seeds) for the binned reference
+  int focusRaysPerSide = 1200;      // per row, into the GPU map, for focus and flux
+  int binCount = 80;                // per side of the bin grid...
+  double binSide = 3.2;             // ...covering this many metres around the sphere's axis
+};
+
+// The full sweep (map 256/512/1024; grid 64/128/256/512; iterations 1/3/5; splat 0.5/1/2 at
+// map 1024) or the quick one.
+ObjectCausticReportSettings objectCausticSweep(bool quick);
+
+// `target`: the report's timing target (its size is the G-buffer's). Appends rows; `note` gets
+// the scene and the reference's convergence. Progress on stderr.
+bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReportSettings& settings,
+                           std::vector<Row>& rows, std::string& note, std::string& error);
+
+}  // namespace ocean::report
