@@ -31,11 +31,6 @@ namespace {
 
 constexpr int kWarmupFrames = 8;
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "ocean_sample: %s\n", message.c_str());
-  return 1;
-}
-
 std::string jsonEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -73,7 +68,7 @@ int runBench(const Options& options) {
   std::string error;
   HeadlessSession session;
   if (!openHeadlessSession(options, /*debug=*/false, /*benchmarkFloor=*/true, session, error)) {
-    return fail(error);
+    return commandFailed(error);
   }
   Renderer& renderer = *session.renderer;
   const Preset& preset = session.preset;
@@ -83,7 +78,7 @@ int runBench(const Options& options) {
   FrameInput input{preset.camera, preset.sun, options.timeSeconds};
   std::fprintf(stderr, "bench: default settings, %d frames\n", options.frames);
   if (!renderFrames(renderer, input, options.timeSeconds, options.frames, error)) {
-    return fail(error);
+    return commandFailed(error);
   }
   std::vector<Row> rows;
   {
@@ -121,7 +116,7 @@ int runBench(const Options& options) {
           variant.caustics().minCascadeContrast = 0.0f;
           variant.godRays().enabled = false;
         });
-    if (!stats) return fail(error);
+    if (!stats) return commandFailed(error);
     addRow("caustics_all_cascades", *stats, "caustics");
   }
   if (options.godRays) {
@@ -139,7 +134,7 @@ int runBench(const Options& options) {
           variant.godRays().sampleCount = samples;
           variant.godRays().resolution = resolution.resolution;
         });
-        if (!stats) return fail(error);
+        if (!stats) return commandFailed(error);
         addRow(name, *stats, "god_rays");
       }
     }
@@ -153,7 +148,7 @@ int runBench(const Options& options) {
       physical.causticsGrid = grid;
       const postfx::FrameStats* stats =
           runVariant("caustics_physical_" + n, physical, [](PluginSetup&) {});
-      if (!stats) return fail(error);
+      if (!stats) return commandFailed(error);
       addRow("caustics_irradiance_" + n, *stats, "caustics_irradiance");
       addRow("caustics_physical_" + n, *stats, "caustics");
       std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
@@ -174,7 +169,7 @@ int runBench(const Options& options) {
         variant.objectCaustics().gridSize = v.grid;
         variant.objectCaustics().iterations = v.iterations;
       });
-      if (!stats) return fail(error);
+      if (!stats) return commandFailed(error);
       addRow(name, *stats, "object_caustics");
     }
   }
@@ -200,14 +195,14 @@ int runBench(const Options& options) {
   std::printf("\nwater spectrum update (GPU time per frame, memory held):\n");
   std::ostringstream waterTable;
   if (runWaterBench(waterTable, std::min(options.frames, 30)) != 0) {
-    return fail("water benchmark failed");
+    return commandFailed("water benchmark failed");
   }
   std::fputs(waterTable.str().c_str(), stdout);
 
   if (!options.json.empty()) {
     std::ofstream file(options.json);
     file << json.str();
-    if (!file) return fail("cannot write '" + options.json + "'");
+    if (!file) return commandFailed("cannot write '" + options.json + "'");
   }
   return 0;
 }

@@ -1,9 +1,14 @@
 #pragma once
 // The sub-commands of ocean_sample. Each returns the process exit code and writes nothing but
 // its result (and one error line on stderr) .
+#include <string>
+
 #include "options.h"
 
 namespace ocean {
+
+// The one error line every command writes: "ocean_sample: <message>" on stderr. Returns 1.
+int commandFailed(const std::string& message);
 
 int runRender(const Options& options);
 int runView(const Options& options);

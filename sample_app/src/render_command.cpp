@@ -11,36 +11,28 @@
 #include "renderer.h"
 
 namespace ocean {
-namespace {
-
-int fail(const std::string& message) {
-  std::fprintf(stderr, "ocean_sample: %s\n", message.c_str());
-  return 1;
-}
-
-}  // namespace
-
 int runRender(const Options& options) {
   std::string error;
   // Checked before any work so a bad path fails fast and leaves nothing behind.
-  if (!checkOutputPath(options.out, error)) return fail(error);
+  if (!checkOutputPath(options.out, error)) return commandFailed(error);
   HeadlessSession session;
   if (!openHeadlessSession(options, /*debug=*/true, /*benchmarkFloor=*/false, session, error)) {
-    return fail(error);
+    return commandFailed(error);
   }
   const Preset& preset = session.preset;
   Renderer& renderer = *session.renderer;
   glcontext::HeadlessContext& context = *session.context;
 
   FrameInput input{preset.camera, preset.sun, options.timeSeconds};
-  if (!renderer.render(input, error)) return fail(error);
+  if (!renderer.render(input, error)) return commandFailed(error);
   for (const auto& message : context.debugLog().take()) {
-    if (message.type == GL_DEBUG_TYPE_ERROR) return fail(glcontext::debugMessageString(message));
+    if (message.type == GL_DEBUG_TYPE_ERROR)
+      return commandFailed(glcontext::debugMessageString(message));
   }
   const std::vector<float> radiance = renderer.readRadiance();
   if (!writeImage(options.out, options.width, options.height, renderer.readColor(), &radiance,
                   error)) {
-    return fail(error);
+    return commandFailed(error);
   }
   return 0;
 }

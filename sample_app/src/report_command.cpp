@@ -18,15 +18,6 @@
 #include "headless_session.h"
 
 namespace ocean {
-namespace {
-
-int fail(const std::string& message) {
-  std::fprintf(stderr, "ocean_sample: %s\n", message.c_str());
-  return 1;
-}
-
-}  // namespace
-
 int runReport(const Options& given) {
   Options options = given;
   // Small enough for the CPU references to converge in minutes; --quick for a smoke run.
@@ -34,16 +25,16 @@ int runReport(const Options& given) {
   options.height = given.quick ? 90 : 180;
   std::error_code fsError;
   std::filesystem::create_directories(options.out, fsError);
-  if (fsError) return fail("cannot create '" + options.out + "': " + fsError.message());
+  if (fsError) return commandFailed("cannot create '" + options.out + "': " + fsError.message());
 
   std::string error;
   HeadlessSession session;
   if (!openHeadlessSession(options, /*debug=*/false, /*benchmarkFloor=*/false, session, error))
-    return fail(error);
+    return commandFailed(error);
   std::fprintf(stderr, "report: rendering the %s preset at %dx%d\n", options.preset.c_str(),
                options.width, options.height);
   FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
-  if (!session.renderer->render(input, error)) return fail(error);
+  if (!session.renderer->render(input, error)) return commandFailed(error);
   glFinish();
 
   const postfx::CreateDesc& host = session.plugin->createDesc();
@@ -61,7 +52,7 @@ int runReport(const Options& given) {
   godRays.timedFrames = given.quick ? 6 : 16;
   std::string godRayNote;
   if (!report::measureGodRays(host, frame, target, godRays, rows, godRayNote, error))
-    return fail(error);
+    return commandFailed(error);
   report::CausticReportSettings caustics;
   caustics.width = given.quick ? 160 : 320;
   caustics.height = given.quick ? 88 : 176;
@@ -70,11 +61,12 @@ int runReport(const Options& given) {
   caustics.timedFrames = godRays.timedFrames;
   if (given.quick) caustics.physicalGrids = {64, 128, 256};
   std::string causticNote;
-  if (!report::measureCaustics(frame, caustics, rows, causticNote, error)) return fail(error);
+  if (!report::measureCaustics(frame, caustics, rows, causticNote, error))
+    return commandFailed(error);
   std::string objectNote;
   if (!report::measureObjectCaustics(target, report::objectCausticSweep(given.quick), rows,
                                      objectNote, error))
-    return fail(error);
+    return commandFailed(error);
   info.referenceNote = causticNote + "\n\n" + godRayNote + "\n\n" + objectNote;
 
   const std::string dir = options.out + "/";
@@ -82,7 +74,7 @@ int runReport(const Options& given) {
       !report::writeErrorPlot(dir + "error_vs_time.png", "error against GPU time, " + info.device,
                               rows, error) ||
       !report::writeMarkdown(dir + "error_vs_time.md", info, rows, "error_vs_time.png", error))
-    return fail(error);
+    return commandFailed(error);
   std::fprintf(stderr, "report: wrote %serror_vs_time.{csv,md,png} (%zu rows)\n", dir.c_str(),
                rows.size());
   return 0;

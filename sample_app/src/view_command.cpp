@@ -77,8 +77,7 @@ int runView(const Options& options) {
   }
   ocean_scene::Model scene;
   if (!buildScene(options.models, scene, error)) {
-    std::fprintf(stderr, "ocean_sample: %s\n", error.c_str());
-    return 1;
+    return commandFailed(error);
   }
   if (glfwInit() != GLFW_TRUE) {
     std::fprintf(stderr, "ocean_sample: cannot initialise GLFW (no display?)\n");
@@ -108,8 +107,7 @@ int runView(const Options& options) {
                       ? PluginSetup::create(*renderer, options, /*benchmarkFloor=*/false, error)
                       : nullptr;
     if (!renderer || !plugin) {
-      std::fprintf(stderr, "ocean_sample: %s\n", error.c_str());
-      status = 1;
+      status = commandFailed(error);
     } else {
       state.input = {state.preset.camera, state.preset.sun, options.timeSeconds};
       state.causticsEnabled = options.caustics;
@@ -132,8 +130,7 @@ int runView(const Options& options) {
         plugin->godRays().enabled = state.godRaysEnabled;
         last = now;
         if (!renderer->render(state.input, error)) {
-          std::fprintf(stderr, "ocean_sample: %s\n", error.c_str());
-          status = 1;
+          status = commandFailed(error);
         }
         renderer->presentTo(0, options.width, options.height);
         glfwSwapBuffers(window);
