@@ -92,10 +92,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
-  shared::CausticsBlock block = detail::buildCausticsBlock(context.desc, frame, textures.width,
-                                                           textures.height, textures.water);
-  // No water texture (object caustics only): the floor then reads no cascade.
-  if (!textures.hasWater) block.oblique.w = 0.0f;
+  const shared::CausticsBlock block = detail::buildCausticsBlock(
+      context.desc, frame, textures.width, textures.height, textures.water);
 
   detail::GlStateGuard guard;
   DebugGroup group("postfx");
@@ -130,10 +128,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     return r;
   }
   if (godRays) {
-    const GodRayResolution resolution = frame.godRays.resolution;
-    const shared::GodRaysBlock godBlock = detail::buildGodRaysBlock(
-        frame, detail::GodRaysPass::reducedSize(textures.width, resolution),
-        detail::GodRaysPass::reducedSize(textures.height, resolution), context.godRayPivot);
+    const shared::GodRaysBlock godBlock =
+        detail::buildGodRaysBlock(frame, textures.width, textures.height, context.godRayPivot);
     r = context.godRays.prepare(frame, textures.width, textures.height, godBlock, error);
     if (r != Result::Ok) {
       context.caustics.finish();

@@ -68,8 +68,11 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   const double upY = std::max(up.y, 1e-6);
   b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / upY, 0.0);
   const double kx = up.x / upY, kz = up.z / upY;
+  // No water texture (accepted only for object caustics alone): no cascade is read, by the floor
+  // either.
+  const int cascades = surface.texture.texture != 0 ? surface.cascadeCount : 0;
   b.oblique = glm::vec4(static_cast<float>(kx), static_cast<float>(kz), settings.lodBias,
-                        static_cast<float>(surface.cascadeCount));
+                        static_cast<float>(cascades));
 
   const glm::dvec3 cameraFromOrigin =
       camera.position - glm::dvec3(surface.origin.x, surface.level, surface.origin.y);

@@ -32,7 +32,7 @@ const glm::dvec3& GodRayGridPivot::follow(const GodRayGrid& grid, double spacing
   return pivot_;
 }
 
-shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth, int reducedHeight,
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int height,
                                        GodRayGridPivot& pivot) {
   shared::GodRaysBlock b{};
   const GodRaySettings& s = frame.godRays;
@@ -57,6 +57,8 @@ shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth,
   b.sunPath = glm::vec4(glm::vec3(extinction / std::max(grid.y.y, 1e-3)), 0.0f);
   b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
   b.scattering = glm::vec4(water.scattering, 0.0f);
+  const int reducedWidth = godRayReducedSize(width, s.resolution);
+  const int reducedHeight = godRayReducedSize(height, s.resolution);
   b.reducedViewport =
       glm::vec4(1.0f / static_cast<float>(reducedWidth), 1.0f / static_cast<float>(reducedHeight),
                 static_cast<float>(reducedWidth), static_cast<float>(reducedHeight));

@@ -32,15 +32,21 @@ class GodRayGridPivot {
   // Moves the pivot to the grid lattice point nearest the camera (x', z' by whole spacings; y',
   // along which the planes run, freely): the same planes for this frame's grid. Returns it.
   const glm::dvec3& follow(const GodRayGrid& grid, double spacing, const glm::dvec3& camera);
-  const glm::dvec3& point() const { return pivot_; }
 
  private:
   glm::dvec3 pivot_{0.0};
 };
 
-// `reducedWidth` x `reducedHeight`: the size of the march texture (the target's at full res).
-// `pivot` is the context's: it follows the camera (see GodRayGridPivot).
-shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int reducedWidth, int reducedHeight,
+// Texels along a side of `size` pixels at `resolution` (a partial block gets a texel too): the
+// march texture's size, which the pass allocates and the block describes.
+inline int godRayReducedSize(int size, GodRayResolution resolution) {
+  const int k = static_cast<int>(resolution);
+  return (size + k - 1) / k;
+}
+
+// `width` x `height`: the target's. `pivot` is the context's: it follows the camera (see
+// GodRayGridPivot).
+shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int height,
                                        GodRayGridPivot& pivot);
 
 }  // namespace postfx::detail

@@ -1,5 +1,6 @@
 #include "godrays_pass.h"
 
+#include "godrays_constants.h"
 #include "host_target.h"
 
 #include "shader_library.h"
@@ -82,7 +83,7 @@ Result GodRaysPass::prepare(const FrameDesc& frame, int width, int height,
                             const shared::GodRaysBlock& block, std::string& error) {
   const GodRayResolution resolution = frame.godRays.resolution;
   if (resolution != GodRayResolution::Full)
-    ensureReduced(reducedSize(width, resolution), reducedSize(height, resolution));
+    ensureReduced(godRayReducedSize(width, resolution), godRayReducedSize(height, resolution));
   if (!attachHostTarget(framebuffer_, frame.target.texture, "god-ray", error)) {
     finish();
     return Result::GlError;

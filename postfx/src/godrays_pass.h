@@ -34,12 +34,6 @@ class GodRaysPass {
   void draw(const FrameDesc& frame, int width, int height);
   void finish();  // lets go of the host's texture
 
-  // Texels along a side of `size` pixels at `resolution` (a partial block gets a texel too).
-  static int reducedSize(int size, GodRayResolution resolution) {
-    const int k = static_cast<int>(resolution);
-    return (size + k - 1) / k;
-  }
-
  private:
   void ensureReduced(int width, int height);
 

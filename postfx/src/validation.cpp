@@ -323,8 +323,7 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
   const bool waterNeeded =
       (hasFeature(create.features, Feature::Caustics) && frame.caustics.enabled) ||
       (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled);
-  out.hasWater = waterNeeded || frame.water.texture.texture != 0;
-  if (!out.hasWater) {
+  if (!waterNeeded && frame.water.texture.texture == 0) {
     out.width = target.width;
     out.height = target.height;
     out.water = {};

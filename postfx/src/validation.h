@@ -24,9 +24,6 @@ struct ValidatedTextures {
   int width = 0, height = 0;  // of the target (= G-buffer)
   WaterTextureInfo water;
   bool waterMipmapped = false;  // mip-complete: sample with mips; otherwise level 0 only
-  // A water texture was given (or needed, and then validated): false for a host with object
-  // caustics only, whose frame reads no water (the block then has no cascades).
-  bool hasWater = true;
 };
 
 // GL-query checks of every texture: a texture name, the right target and format, sizes that
