@@ -179,7 +179,7 @@ Result validateGodRays(const GodRaySettings& g, std::string& error) {
 }
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (static_cast<std::uint32_t>(desc.features) >= (1u << 8)) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 9)) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }
@@ -196,6 +196,12 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
   if (desc.waterTexture != WaterTextureType::Array2D &&
       desc.waterTexture != WaterTextureType::Single2D) {
     error = "CreateDesc.waterTexture is not a WaterTextureType";
+    return Result::InvalidArgument;
+  }
+  if (desc.waterTexture == WaterTextureType::Array2D &&
+      (desc.maxWaterCascades < 1 || desc.maxWaterCascades > kMaxCascades)) {
+    error = "CreateDesc.maxWaterCascades must be in [1, " + std::to_string(kMaxCascades) +
+            "], got " + std::to_string(desc.maxWaterCascades);
     return Result::InvalidArgument;
   }
   return Result::Ok;
@@ -230,10 +236,10 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!std::isfinite(water.level)) return fail("water.level is not finite");
   if (!std::isfinite(water.origin.x) || !std::isfinite(water.origin.y))
     return fail("water.origin is not finite");
-  const int maxCascades = create.waterTexture == WaterTextureType::Single2D ? 1 : kMaxCascades;
+  const int maxCascades = waterCascadeSlots(create);
   if (water.cascadeCount < 1 || water.cascadeCount > maxCascades)
-    return fail("water.cascadeCount must be in [1, " + std::to_string(maxCascades) + "], got " +
-                std::to_string(water.cascadeCount));
+    return fail("water.cascadeCount must be in [1, " + std::to_string(maxCascades) +
+                "] (CreateDesc.maxWaterCascades), got " + std::to_string(water.cascadeCount));
   for (int c = 0; c < water.cascadeCount; ++c)
     if (!inRange(water.tileSize[c], 1e-3, 1e7))
       return fail("water.tileSize[" + std::to_string(c) + "] must be in [1e-3, 1e7] m");

@@ -13,6 +13,11 @@ namespace postfx::detail {
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error);
 
+// How many water cascades the context's shaders are written for (a valid desc's).
+inline int waterCascadeSlots(const CreateDesc& desc) {
+  return desc.waterTexture == WaterTextureType::Single2D ? 1 : desc.maxWaterCascades;
+}
+
 // Range checks of the god-ray settings (part of validateFrameValues with Feature::GodRays).
 Result validateGodRays(const GodRaySettings& settings, std::string& error);
 

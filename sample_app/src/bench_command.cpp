@@ -119,6 +119,16 @@ int runBench(const Options& options) {
     if (!stats) return commandFailed(error);
     addRow("caustics_all_cascades", *stats, "caustics");
   }
+  // Seed 002's world-axis projections on steep surfaces: what leaving them out saves.
+  if (options.caustics && wanted("caustics_triplanar_walls")) {
+    Options triplanar = options;
+    triplanar.triplanarWalls = true;
+    const postfx::FrameStats* stats =
+        runVariant("caustics_triplanar_walls", triplanar,
+                   [](PluginSetup& variant) { variant.godRays().enabled = false; });
+    if (!stats) return commandFailed(error);
+    addRow("caustics_triplanar_walls", *stats, "caustics");
+  }
   if (options.godRays) {
     const struct {
       const char* prefix;

@@ -30,6 +30,7 @@ usage:
                       [--out FILE] [--no-caustics] [--no-god-rays] [--no-object-caustics]
                       [--tau T] [--water-resolution N] [--caustics-model seed002|physical]
                       [--caustics-grid N] [--god-rays-resolution full|half|quarter]
+                      [--triplanar-walls]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
       or .exr (linear radiance). Default output: ocean.png.
   ocean_sample view [--preset NAME] [--width W] [--height H] [--model FILE]...
@@ -38,7 +39,9 @@ usage:
   ocean_sample bench [--width W] [--height H] [--frames N] [--json FILE] [--only PREFIX]
       Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a
       floor pass that reads the same inputs and writes the same outputs with no math.
-      Also times each variant: god rays per sample count (god_rays_<n>, god_rays_half_<n>),
+      Also times each variant: caustics with every cascade everywhere (caustics_all_cascades)
+      and with the tri-planar walls (caustics_triplanar_walls), god rays per sample count
+      (god_rays_<n>, god_rays_half_<n>, god_rays_quarter_<n>),
       the physical caustics model at grid 64..1024 (caustics_physical_<n>), object caustics
       per map/grid/iterations. --only PREFIX runs just the variants whose name starts with it.
   ocean_sample report [--out DIR] [--quick]
@@ -50,6 +53,8 @@ usage:
 
 caustics models: seed002 (default; exp(-tau a^2), one lookup per pixel) or physical (true
 irradiance from the wavefront area ratio, seed 004; --caustics-grid 64..1024, default 256).
+Every surface looks the water up where its light entered, along the refracted sun; with
+--triplanar-walls steep surfaces blend in seed 002's world-axis projections instead.
 
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
 the sun), above (above the water looking down), waterline (camera 3 cm above the water).
@@ -99,6 +104,10 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
     }
     if (flag == "--no-object-caustics") {
       options.objectCaustics = false;
+      continue;
+    }
+    if (flag == "--triplanar-walls") {
+      options.triplanarWalls = true;
       continue;
     }
     if (i + 1 >= argc) {

@@ -26,6 +26,8 @@ struct Options {
   // irradiance (seed 004, Feature::PhysicalCaustics), with this grid resolution.
   bool physicalCaustics = false;
   int causticsGrid = 256;
+  // Seed 002's world-axis tri-planar lookup on steep surfaces (Feature::TriplanarWalls).
+  bool triplanarWalls = false;
   // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
   int godRayResolution = 0;
   int waterResolution = 256;

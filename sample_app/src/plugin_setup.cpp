@@ -28,6 +28,8 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   }
   desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
   desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
+  desc.maxWaterCascades = std::min(renderer.ocean().cascadeCount(), postfx::kMaxCascades);
+  if (options.triplanarWalls) desc.features = desc.features | postfx::Feature::TriplanarWalls;
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return nullptr;

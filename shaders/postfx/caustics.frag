@@ -1,7 +1,8 @@
 #version 450 core
 // Seabed caustics (seed 002, section 4) added into the host's HDR target. Compile-time
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
-// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL.
+// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL,
+// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS.
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
@@ -43,30 +44,30 @@ float physicalIrradiance(vec3 p, float depthBelow, out float weight) {
 }
 #endif
 
-// Tri-planar weights below this skip their projection's fetches entirely.
+#if POSTFX_TRIPLANAR_WALLS
+// Tri-planar weights below this skip their projection's fetches (on GPUs).
 const float kMinPlaneWeight = 0.02;
 
-// Tri-planar lookup: the plane facing up projects the receiver ALONG THE REFRACTED LIGHT onto
-// the water plane (where its light entered); walls use the world (z, y) and (x, y) planes.
-// Blended by the G-buffer normal. The projections with weight are listed first and looped
-// over (see selectCascades for why a loop rather than branches): a seabed pixel pays for one.
-vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, CascadeSelection cascades) {
+// Seed 002's tri-planar lookup: the plane facing up projects the receiver along the refracted
+// light onto the water plane (where its light entered); walls use the world (z, y) and (x, y)
+// planes. Blended by the G-buffer normal.
+vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, vec4 cascades) {
   vec3 w = pow(abs(n), vec3(u.eta.w));
   w /= max(w.x + w.y + w.z, 1e-20);
-  int planes[3] = int[3](1, 0, 2);
-  int count = 0;
-  if (w.y > kMinPlaneWeight) planes[count++] = 1;
-  if (w.x > kMinPlaneWeight) planes[count++] = 0;
-  if (w.z > kMinPlaneWeight) planes[count++] = 2;
   vec2 slopes = vec2(0.0);
-  for (int i = 0; i < count; ++i) {
-    int plane = planes[i];
-    vec2 coord = plane == 1 ? vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y)
-                            : (plane == 0 ? p.zy : p.xy);
-    slopes += w[plane] * cascadeSlopes(coord, plane, logFootprint, cascades);
-  }
+  if (w.y > kMinPlaneWeight)
+    slopes += w.y * cascadeSlopes(lightEntryCoord(p), 1, logFootprint, cascades);
+  if (w.x > kMinPlaneWeight) slopes += w.x * cascadeSlopes(p.zy, 0, logFootprint, cascades);
+  if (w.z > kMinPlaneWeight) slopes += w.z * cascadeSlopes(p.xy, 2, logFootprint, cascades);
   return slopes;
 }
+#else
+// Every surface, whatever its orientation, is lit by the light that entered the water where the
+// refracted sun through it meets the water plane: one projection, continuous across surfaces.
+vec2 waterSlopes(vec3 p, vec3 n, float logFootprint, vec4 cascades) {
+  return cascadeSlopes(lightEntryCoord(p), 1, logFootprint, cascades);
+}
+#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -109,9 +110,9 @@ void main() {
   // One irradiance for all channels: the mesh is refracted with the mean IOR.
   vec3 physical = vec3(physicalIrradiance(p, depthBelow, physicalWeight));
 #endif
-  // Inside the physical window the seed-002 lookups are not needed: an empty cascade range
-  // skips their fetches (a branch around them would not, on llvmpipe; see selectCascades).
-  CascadeSelection cascades =
+  // Inside the physical window the seed-002 lookups are not needed: zero weights skip their
+  // fetches (on GPUs; a CPU rasteriser runs them masked).
+  vec4 cascades =
       physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
 #if POSTFX_DISPERSION

@@ -8,9 +8,9 @@ void main() {
   vec4 sum = texelFetch(gbufferDepth, pixel, 0) + texelFetch(gbufferNormal, pixel, 0) +
              texelFetch(gbufferAlbedo, pixel, 0);
   int cascades = int(u.oblique.w);
-  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
-    if (c >= cascades) break;
-    sum += textureLod(waterSurface, WATER_COORD(gl_FragCoord.xy * u.viewport.xy, c), 0.0);
+  for (int c = 0; c < POSTFX_CASCADE_SLOTS; ++c) {  // unrolled, like the caustics' lookups
+    if (c < cascades)
+      sum += textureLod(waterSurface, WATER_COORD(gl_FragCoord.xy * u.viewport.xy, c), 0.0);
   }
 #if POSTFX_SHADOW_MASK
   sum.x += texture(sunShadowMap, vec3(gl_FragCoord.xy * u.viewport.xy, 0.5));

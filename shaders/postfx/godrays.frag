@@ -35,15 +35,14 @@ vec3 sunSource(vec3 p, float t) {
   rho *= sunVisibility(p);
   if (!(rho > 0.0)) return vec3(0.0);
 #endif
-  // Where this point's light entered the water: along the refracted sun to the water plane (the
-  // caustics pass's upward projection). No tri-planar: the medium has no normal.
-  vec2 along = vec2(p.x - u.oblique.x * p.y, p.z - u.oblique.y * p.y);
   // The full-resolution pixel's footprint even when a reduced texel stands for k x k pixels: a
   // coarser mip flattens the slopes before the nonlinear omega and brightens the mean (+10 % at
   // half resolution in the reference test); the upsample is what averages the texels.
   float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
-  CascadeSelection cascades = selectCascades(depthBelow, logFootprint);
-  vec3 waterNormal = waterNormalFromSlopes(cascadeSlopes(along, 1, logFootprint, cascades));
+  vec4 cascades = selectCascades(depthBelow, logFootprint);
+  // Looked up where this point's light entered the water, as the caustics pass does.
+  vec3 waterNormal =
+      waterNormalFromSlopes(cascadeSlopes(lightEntryCoord(p), 1, logFootprint, cascades));
   float omega = causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz,
                               u.towardSun.w, u.reference.w);
   return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);

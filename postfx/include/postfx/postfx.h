@@ -33,6 +33,12 @@ enum class Feature : std::uint32_t {
   BenchmarkFloor = 1u << 6,    // also run and time the "floor" pass (benchmarks only: see below)
   PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio (seed 004); its pass
                                // is timed as "caustics_irradiance"
+  // Seed 002's full tri-planar lookup: steep surfaces (more than ~30 degrees from horizontal
+  // at the default CausticsSettings::triplanarSharpness) also sample the water along the world
+  // x and z axes, blended by the G-buffer normal. Without it every surface samples the water
+  // where its light entered, along the refracted sun: seamless across surfaces, and closer to
+  // the traced reference on slopes (README, error report), at a third of the fetches there.
+  TriplanarWalls = 1u << 8,
 };
 constexpr Feature operator|(Feature a, Feature b) {
   return static_cast<Feature>(static_cast<std::uint32_t>(a) | static_cast<std::uint32_t>(b));
@@ -54,6 +60,11 @@ struct CreateDesc {  // fixed for the context's life
   int depthConvention = 0;
   int normalEncoding = 0;
   WaterTextureType waterTexture = WaterTextureType::Array2D;
+  // Most water cascades a frame will give (WaterSurface::cascadeCount <= this), [1,
+  // kMaxCascades]; ignored with Single2D (one). Each slot is a lookup written into the shaders:
+  // a rasteriser that runs both arms of a branch (CPU, e.g. llvmpipe) pays for unused slots, a
+  // GPU does not.
+  int maxWaterCascades = kMaxCascades;
 };
 
 struct Context;  // opaque
