@@ -12,7 +12,7 @@ namespace extreme {
 
 enum class Pass {
   Caustics,            // seabed caustics, seed-002 coefficient
-  CausticsDispersion,  // ... with Feature::Dispersion (per-channel IOR)
+  CausticsDispersion,  // ... with Feature::Dispersion (per-channel IOR) and TriplanarWalls
   CausticsShadow,      // ... with Feature::ShadowMask (synthetic sun shadow map)
   GodRaysFull,         // god rays, full resolution
   GodRaysHalf,         // god rays, half resolution + depth-aware upsample

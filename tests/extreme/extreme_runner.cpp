@@ -25,8 +25,8 @@ postfx::Feature features(Pass pass) {
   switch (pass) {
     case Pass::Caustics:
       return postfxtest::kRaw;
-    case Pass::CausticsDispersion:
-      return postfxtest::kRaw | Feature::Dispersion;
+    case Pass::CausticsDispersion:  // with the other optional lookup path, tri-planar walls
+      return postfxtest::kRaw | Feature::Dispersion | Feature::TriplanarWalls;
     case Pass::CausticsShadow:
       return postfxtest::kRaw | Feature::ShadowMask;
     default:

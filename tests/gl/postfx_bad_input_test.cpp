@@ -128,6 +128,22 @@ TEST_F(PostfxBadInputTest, EachCaseFailsCleanly) {
             Result::MissingTexture);
   EXPECT_NE(std::string(postfx::lastError(shadowed)).find("shadow"), std::string::npos);
 
+  // A frame with more cascades than the context was created with lookups for.
+  postfx::Context* oneCascade = nullptr;
+  desc.features = postfx::Feature::Caustics;
+  desc.maxWaterCascades = 1;
+  ASSERT_EQ(postfx::create(desc, oneCascade), Result::Ok) << postfx::lastError(nullptr);
+  scene.clearTarget(marker);
+  EXPECT_EQ(postfx::dispatch(*oneCascade, postfxtest::makeFrame(scene, water, 2)),
+            Result::InvalidArgument);
+  EXPECT_NE(std::string(postfx::lastError(oneCascade)).find("maxWaterCascades"), std::string::npos)
+      << postfx::lastError(oneCascade);
+  EXPECT_EQ(postfx::stats(*oneCascade).framesDispatched, 0u);
+  for (const glm::vec4& texel : postfxtest::readRgba(scene.target, w, h)) {
+    ASSERT_EQ(texel, marker) << "something was drawn";
+  }
+
+  postfx::destroy(oneCascade);
   postfx::destroy(shadowed);
   postfx::destroy(fx);
   const GLuint textures[] = {water, wrongFormat, wrongSize, water2d, bogus};
@@ -146,6 +162,12 @@ TEST_F(PostfxBadInputTest, CreateRejectsUnknownAndInvalid) {
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("depthConvention"), std::string::npos);
   desc.depthConvention = 0;
+  for (int slots : {0, postfx::kMaxCascades + 1}) {
+    desc.maxWaterCascades = slots;
+    EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
+    EXPECT_NE(std::string(postfx::lastError(nullptr)).find("maxWaterCascades"), std::string::npos);
+  }
+  desc.maxWaterCascades = postfx::kMaxCascades;
   desc.normalEncoding = -1;
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_STREQ(postfx::toString(Result::SizeMismatch), "SizeMismatch");

@@ -1,5 +1,6 @@
 #include "postfx_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -148,6 +149,28 @@ GLuint makeWaterTexture(int size, int layers, double amplitude, bool nan) {
     glTextureSubImage3D(t, 0, 0, 0, layer, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
   }
   glGenerateTextureMipmap(t);
+  return t;
+}
+
+GLuint makeLevelIndependentWaterTexture(int size, double slope) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+  int levels = 1;
+  for (int s = size; s > 1; s >>= 1) ++levels;
+  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
+  const double twoPi = 6.283185307179586;
+  for (int level = 0, n = size; level < levels; ++level, n = std::max(1, n / 2)) {
+    std::vector<glm::vec4> texels(static_cast<size_t>(n * n));
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) {
+        const double u = (x + 0.5) / n, v = (y + 0.5) / n;
+        texels[static_cast<size_t>(y * n + x)] =
+            glm::vec4(float(slope * std::cos(twoPi * u)), float(slope * std::cos(twoPi * v)),
+                      float(slope / twoPi * (std::sin(twoPi * u) + std::sin(twoPi * v))), 1.0f);
+      }
+    }
+    glTextureSubImage3D(t, level, 0, 0, 0, n, n, 1, GL_RGBA, GL_FLOAT, texels.data());
+  }
   return t;
 }
 

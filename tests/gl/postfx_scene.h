@@ -62,6 +62,12 @@ class Scene {
 // flat water; nan fills every texel with NaN.
 GLuint makeWaterTexture(int size, int layers, double amplitude, bool nan = false);
 
+// One layer whose every mip level holds the same smooth wave (one period per tile along u and v,
+// slope amplitude `slope`) sampled at that level's own texel centres instead of box-filtered:
+// a lookup then gives the same slopes (to bilinear interpolation error, < 1e-3 relative down
+// to 16 texels) at every level of detail, so tests can compare pixels whose footprints differ.
+GLuint makeLevelIndependentWaterTexture(int size, double slope);
+
 // A frame for `scene` with the caustics defaults, water at `level` (world), camera at
 // scene.camera + offset (the whole scene moved by `offset`).
 postfx::FrameDesc makeFrame(const Scene& scene, GLuint water, int cascades,
