@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <thread>
 
-namespace reference {
+namespace ocean::reference {
 namespace {
 
 // Mirrors of the shared shader math (shaders/shared/postfx_caustics.h, postfx_godrays.h) and of
@@ -148,7 +148,7 @@ glm::dvec3 source(const Frame& f, const GodRayInputs& in, const glm::dvec3& p, d
   glm::dvec2 slopes(0.0);
   for (int c = 0; c < f.cascades; ++c) {
     const double lod = f.footprintLod ? logFootprint + f.log2TexelsPerMetre[c] : 0.0;
-    slopes += in.water.sample(c, entry / f.tile[c], lod);
+    slopes += glm::dvec2(in.water.sample(c, entry / f.tile[c], lod));
   }
   const double w =
       causticFactor(f.sun, waterNormal(slopes), f.eta, f.reference, f.tau, f.reflectionWeight);
@@ -223,18 +223,18 @@ bool skipped(const postfx::CreateDesc& create, const postfx::FrameDesc& frame) {
 
 }  // namespace
 
-GodRayInputs captureGodRayInputs(const postfx::CreateDesc& create, const postfx::FrameDesc& frame) {
-  GodRayInputs in;
+bool captureGodRayInputs(const postfx::CreateDesc& create, const postfx::FrameDesc& frame,
+                         GodRayInputs& in, std::string& error) {
+  in = GodRayInputs{};
   glGetTextureLevelParameteriv(frame.target.texture, 0, GL_TEXTURE_WIDTH, &in.width);
   glGetTextureLevelParameteriv(frame.target.texture, 0, GL_TEXTURE_HEIGHT, &in.height);
   in.depth.resize(static_cast<size_t>(in.width) * in.height);
   glGetTextureImage(frame.depth.texture, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                     static_cast<GLsizei>(in.depth.size() * sizeof(float)), in.depth.data());
-  in.water = WaterSlopes::readBack(frame.water.texture.texture, frame.water.cascadeCount,
-                                   create.waterTexture == postfx::WaterTextureType::Single2D);
+  if (!in.water.read(frame.water.texture.texture, frame.water.cascadeCount, error)) return false;
   if (postfx::hasFeature(create.features, postfx::Feature::ShadowMask))
     in.shadow = ShadowDepth::readBack(frame.shadow.depth.texture);
-  return in;
+  return true;
 }
 
 std::vector<glm::dvec3> renderGodRayReference(const postfx::CreateDesc& create,
@@ -296,4 +296,4 @@ double relativeRmse(const std::vector<glm::dvec3>& a, const std::vector<glm::dve
   return norm > 0.0 ? std::sqrt(error / norm) : (error > 0.0 ? HUGE_VAL : 0.0);
 }
 
-}  // namespace reference
+}  // namespace ocean::reference

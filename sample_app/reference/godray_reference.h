@@ -11,25 +11,29 @@
 //
 // It reads the same inputs the plugin reads: the depth texture, the water slope texture (every
 // mip level) and the sun shadow map, read back from GL once (captureGodRayInputs).
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include <postfx/postfx.h>
 
-#include "godray_water.h"
+#include "shadow_readback.h"
+#include "water_readback.h"
 
-namespace reference {
+namespace ocean::reference {
 
 struct GodRayInputs {
   int width = 0, height = 0;  // of FrameDesc::target
   std::vector<float> depth;   // window depth per pixel, GL order (row 0 at the bottom)
-  WaterSlopes water;
+  WaterTextureCopy water;
   ShadowDepth shadow;  // read only with Feature::ShadowMask
 };
 
-// Reads back the textures `frame` names (needs the GL context they live in).
-GodRayInputs captureGodRayInputs(const postfx::CreateDesc& create, const postfx::FrameDesc& frame);
+// Reads back the textures `frame` names (needs the GL context they live in); false with a
+// message when the water texture cannot be read.
+bool captureGodRayInputs(const postfx::CreateDesc& create, const postfx::FrameDesc& frame,
+                         GodRayInputs& inputs, std::string& error);
 
 struct GodRayReferenceOptions {
   int samples = 2048;  // segments per pixel along the underwater part of the ray (>= 1024)
@@ -61,4 +65,4 @@ std::vector<glm::dvec3> renderGodRayReference(const postfx::CreateDesc& create,
 double relativeRmse(const std::vector<glm::vec4>& image, const std::vector<glm::dvec3>& reference);
 double relativeRmse(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& reference);
 
-}  // namespace reference
+}  // namespace ocean::reference

@@ -41,14 +41,15 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
 
   std::fprintf(stderr, "report: god-ray reference, %d and %d samples per pixel\n",
                settings.referenceSamples / 2, settings.referenceSamples);
-  const reference::GodRayInputs inputs = reference::captureGodRayInputs(create, frame);
-  reference::GodRayReferenceOptions options;
+  ocean::reference::GodRayInputs inputs;
+  if (!ocean::reference::captureGodRayInputs(create, frame, inputs, error)) return false;
+  ocean::reference::GodRayReferenceOptions options;
   options.samples = settings.referenceSamples;
   const std::vector<double> dense =
-      flatten(reference::renderGodRayReference(create, frame, inputs, options));
+      flatten(ocean::reference::renderGodRayReference(create, frame, inputs, options));
   options.samples = settings.referenceSamples / 2;
   const std::vector<double> half =
-      flatten(reference::renderGodRayReference(create, frame, inputs, options));
+      flatten(ocean::reference::renderGodRayReference(create, frame, inputs, options));
   const double convergence = compareWithReference(half, dense).relativeRmse;
   char text[256];
   std::snprintf(text, sizeof(text),

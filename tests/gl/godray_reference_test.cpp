@@ -78,18 +78,20 @@ SweepResult sweep(float tau, bool checkConvergence) {
     }
   }
 
-  const reference::GodRayInputs inputs = reference::captureGodRayInputs(create, frame);
-  reference::GodRayReferenceOptions options;
+  ocean::reference::GodRayInputs inputs;
+  std::string error;
+  EXPECT_TRUE(ocean::reference::captureGodRayInputs(create, frame, inputs, error)) << error;
+  ocean::reference::GodRayReferenceOptions options;
   std::vector<glm::dvec3> coarse;
   if (checkConvergence) {
     options.samples = 1024;
-    coarse = reference::renderGodRayReference(create, frame, inputs, options);
+    coarse = ocean::reference::renderGodRayReference(create, frame, inputs, options);
   }
   options.samples = checkConvergence ? 2048 : 1024;
-  std::vector<reference::GodRayPixelStats> stats;
+  std::vector<ocean::reference::GodRayPixelStats> stats;
   const std::vector<glm::dvec3> ref =
-      reference::renderGodRayReference(create, frame, inputs, options, &stats);
-  r.convergence = checkConvergence ? reference::relativeRmse(coarse, ref) : 0.0;
+      ocean::reference::renderGodRayReference(create, frame, inputs, options, &stats);
+  r.convergence = checkConvergence ? ocean::reference::relativeRmse(coarse, ref) : 0.0;
   auto mean = [](const auto& image) {
     double sum = 0.0;
     for (const auto& p : image) sum += (double(p.r) + double(p.g) + double(p.b)) / 3.0;
@@ -98,7 +100,7 @@ SweepResult sweep(float tau, bool checkConvergence) {
   r.referenceMean = mean(ref);
   for (int half = 0; half < 2; ++half) {
     for (int i = 0; i < 5; ++i) {
-      r.error[half][i] = reference::relativeRmse(images[half][i], ref);
+      r.error[half][i] = ocean::reference::relativeRmse(images[half][i], ref);
       r.meanRatio[half][i] = mean(images[half][i]) / r.referenceMean;
     }
   }
