@@ -36,8 +36,9 @@ struct CausticsSettings {
   // refracted rays have not focused yet, to full strength, [0, 1e4]. 0 = no fade.
   float surfaceFadeDepth = 1.0f;
 
-  // Exponent sharpening the tri-planar weights |n|^k taken from the G-buffer normal, [1, 32].
-  // High values make each surface use the single projection it faces most (fewest fetches).
+  // With Feature::TriplanarWalls: exponent sharpening the tri-planar weights |n|^k taken from
+  // the G-buffer normal, [1, 32]. High values make each surface use the single projection it
+  // faces most (fewest fetches on GPUs). Validated always, unused without the feature.
   float triplanarSharpness = 8.0f;
 
   // Added to the water-texture mip level chosen from each pixel's footprint, in mip levels,
@@ -47,8 +48,9 @@ struct CausticsSettings {
   // Cascades whose first-order irradiance modulation at a receiver's depth
   // (WaterSurface::rmsLaplacian) is below this are not sampled there; the ones between it and
   // twice it fade in. [0, 1]; 0 samples every cascade everywhere. Also applies to the god rays.
-  // Each cascade skipped saves one filtered water fetch per pixel (the pass's main cost); the
-  // error it costs is in the report (ocean_sample report).
+  // Each cascade skipped saves one filtered water fetch per pixel on a GPU, where a warp whose
+  // pixels all skip it branches around it (a CPU rasteriser such as llvmpipe runs it masked and
+  // saves nothing); the error it costs is in the report (ocean_sample report).
   float minCascadeContrast = 0.1f;
 
   CausticsModel model = CausticsModel::Seed002;
