@@ -11,3 +11,15 @@ postfx_add_test(postfx_physical_tests GL
   LIBS postfx ocean_reference water gbuffer glm::glm PkgConfig::EPOXY)
 target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
+
+# The caustics' water lookups on sloped receivers (along the light vs Feature::TriplanarWalls)
+# against the seabed reference traced onto the same tilted planes, through the report's code.
+postfx_add_test(postfx_slope_lookup_tests GL
+  SOURCES gl/postfx_slope_lookup_test.cpp
+  LIBS ocean_report water glm::glm PkgConfig::EPOXY)
+
+# The report's sloped receiver (pixels to horizontal bins, the plane as the reference's height
+# field, flat-water units) on known answers.
+postfx_add_test(report_sloped_plane_tests
+  SOURCES unit/report_sloped_plane_test.cpp
+  LIBS ocean_report)

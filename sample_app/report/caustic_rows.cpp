@@ -28,14 +28,14 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
                      std::vector<Row>& rows, std::string& note, std::string& error) {
   const int w = settings.width, h = settings.height, bin = settings.binPixels;
   const double height = settings.receiverDepth - settings.cameraDepth;  // camera to floor (m)
-  const TopDownView topDown = topDownView(w, h, height);
+  const PlaneView topDown = topDownView(w, h, height);
   const double aspect = topDown.aspect, f = topDown.focal;
 
   postfx::FrameDesc frame = hostFrame;
   const double level = frame.water.level;
   const glm::dvec3 camera(hostFrame.camera.position.x, level - settings.cameraDepth,
                           hostFrame.camera.position.z);
-  FlatFloorGbuffer gbuffer(w, h, topDown.windowDepth);
+  PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
   ReportTarget target(w, h);
   frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
   frame.normal = {gbuffer.normal(), GL_RGBA16F};

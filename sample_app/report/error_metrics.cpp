@@ -33,4 +33,31 @@ ErrorStats compareWithReference(const std::vector<double>& value,
   return stats;
 }
 
+double affineRmseDifferenceNoise(const std::vector<double>& a, const ErrorStats& statsA,
+                                 const std::vector<double>& b, const ErrorStats& statsB,
+                                 const std::vector<double>& reference,
+                                 const std::vector<double>& sigma) {
+  const size_t n = std::min({a.size(), b.size(), reference.size(), sigma.size()});
+  double rr = 0.0, resA = 0.0, resB = 0.0;
+  auto residual = [&](const std::vector<double>& x, const ErrorStats& s, size_t i) {
+    return reference[i] - (s.fitScale * x[i] + s.fitOffset);
+  };
+  for (size_t i = 0; i < n; ++i) {
+    rr += reference[i] * reference[i];
+    resA += residual(a, statsA, i) * residual(a, statsA, i);
+    resB += residual(b, statsB, i) * residual(b, statsB, i);
+  }
+  if (!(rr > 0.0) || !(resA > 0.0) || !(resB > 0.0)) return 0.0;
+  const double norm = std::sqrt(rr), normA = std::sqrt(resA), normB = std::sqrt(resB);
+  double variance = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const double gradA =
+        residual(a, statsA, i) / (normA * norm) - statsA.affineRmse * reference[i] / rr;
+    const double gradB =
+        residual(b, statsB, i) / (normB * norm) - statsB.affineRmse * reference[i] / rr;
+    variance += (gradB - gradA) * (gradB - gradA) * sigma[i] * sigma[i];
+  }
+  return std::sqrt(variance);
+}
+
 }  // namespace ocean::report

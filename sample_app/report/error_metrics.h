@@ -18,4 +18,15 @@ ErrorStats compareWithReference(const std::vector<double>& value,
                                 const std::vector<double>& reference,
                                 const std::vector<bool>& mask = {});
 
+// Standard deviation of affineRmse(b) - affineRmse(a), both against the same `reference`, that
+// independent noise of standard deviation sigma[i] on reference[i] puts into it, to first order.
+// Each error is |residual| / |reference| with the residual orthogonal to its fit, so a change dr
+// of the reference moves it by (res / |res| / |r| - err r / |r|^2) . dr (the fit's own change is
+// second order). The noise terms common to both errors cancel in the difference, which is why
+// this is far below the worst case, twice |sigma| / |r|.
+double affineRmseDifferenceNoise(const std::vector<double>& a, const ErrorStats& statsA,
+                                 const std::vector<double>& b, const ErrorStats& statsB,
+                                 const std::vector<double>& reference,
+                                 const std::vector<double>& sigma);
+
 }  // namespace ocean::report

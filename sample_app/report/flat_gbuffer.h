@@ -1,31 +1,41 @@
 #pragma once
-// The report's synthetic receiver: a flat floor seen straight down by a pinhole camera, as a
-// G-buffer (every pixel at the same view depth, facing up, white) with the camera matrices that
-// make it so. Used where the compared quantity lives on a plane (seabed caustics, the object
-// caustics' receiver) and the G-buffer only has to give every pixel that plane.
+// The report's synthetic receiver: one plane seen face-on by a pinhole camera looking along its
+// normal, as a G-buffer (every pixel at the same view depth, the plane's normal, white) with the
+// camera matrices that make it so. Used where the compared quantity lives on a plane (seabed
+// caustics on a flat or sloped floor, the object caustics' receiver) and the G-buffer only has
+// to give every pixel that plane. Seen face-on, pixel rows and columns are straight, evenly
+// spaced lines on the plane, so blocks of pixels map to a regular grid there (and on any plane
+// it is projected onto along an image axis, such as the horizontal grid of a reference).
 #include <epoxy/gl.h>
 
 #include <glm/glm.hpp>
 
 namespace ocean::report {
 
-// Looking straight down with image up = world -z (view x = world x, view y = -world z), 60
-// degree vertical field of view, reverse-Z with an infinite far plane (depth convention 0).
-struct TopDownView {
+// The camera at the origin looks along -normal with image up = `imageUp` (orthogonal to the
+// normal), 60 degree vertical field of view, reverse-Z with an infinite far plane (depth
+// convention 0).
+struct PlaneView {
   glm::dmat4 view{1.0}, projection{1.0};
-  float windowDepth = 0.0f;  // of the floor `floorDistance` (m) below the camera
+  float windowDepth = 0.0f;  // of the plane `distance` (m) in front of the camera
   double focal = 0.0;        // projection[1][1]
   double aspect = 1.0;       // width / height
+  // Size on the plane of one pixel (square pixels), m.
+  double pixelSize(int height, double distance) const { return 2.0 * distance / focal / height; }
 };
-TopDownView topDownView(int width, int height, double floorDistance);
+PlaneView planeView(int width, int height, double distance, const glm::dvec3& normal,
+                    const glm::dvec3& imageUp);
+// A horizontal floor seen straight down, image up = world -z (view x = world x, view y = -world z).
+PlaneView topDownView(int width, int height, double floorDistance);
 
-class FlatFloorGbuffer {
+class PlaneGbuffer {
  public:
   // Depth GL_DEPTH_COMPONENT32F, normals GL_RGBA16F world xyz (normal encoding 1), albedo RGBA8.
-  FlatFloorGbuffer(int width, int height, float windowDepth);
-  ~FlatFloorGbuffer();
-  FlatFloorGbuffer(const FlatFloorGbuffer&) = delete;
-  FlatFloorGbuffer& operator=(const FlatFloorGbuffer&) = delete;
+  PlaneGbuffer(int width, int height, float windowDepth,
+               const glm::vec3& normal = glm::vec3(0.0f, 1.0f, 0.0f));
+  ~PlaneGbuffer();
+  PlaneGbuffer(const PlaneGbuffer&) = delete;
+  PlaneGbuffer& operator=(const PlaneGbuffer&) = delete;
   GLuint depth() const { return textures_[0]; }
   GLuint normal() const { return textures_[1]; }
   GLuint albedo() const { return textures_[2]; }

@@ -92,8 +92,8 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
   const ref::SphereOverPlane scene = ref::glassSphereOverPlane();
   const ref::SphereCaster& sphere = scene.sphere;
   const int w = target.width(), h = target.height();
-  const TopDownView topDown = topDownView(w, h, kCameraHeight - scene.planeY);
-  FlatFloorGbuffer gbuffer(w, h, topDown.windowDepth);
+  const PlaneView topDown = topDownView(w, h, kCameraHeight - scene.planeY);
+  PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
   const ref::GlMesh mesh = ref::makeSphereMesh(sphere.radius, 160, 80);
   const ref::ReceiverMap receivers(scene.towardSun, glm::dvec3(0.0), kReceiverHalf, scene.planeY,
                                    kReceiverMapSize);

@@ -13,6 +13,7 @@
 #include <object_caustic_rows.h>
 #include <pass_runner.h>
 #include <report_table.h>
+#include <slope_rows.h>
 
 #include "commands.h"
 #include "headless_session.h"
@@ -63,11 +64,26 @@ int runReport(const Options& given) {
   std::string causticNote;
   if (!report::measureCaustics(frame, caustics, rows, causticNote, error))
     return commandFailed(error);
+  // Slopes: the default water lookup (along the light) against Feature::TriplanarWalls.
+  report::SlopeSettings slopes;
+  slopes.width = given.quick ? 96 : 160;
+  slopes.height = 96;
+  slopes.binPixels = 8;
+  // 0.03: at 0.02 the 60 degree plane facing away (n.L 0.16) alone needs 5e7 rays (12 min);
+  // --quick leaves 60 degrees out for the same reason (8e6 rays at 0.05).
+  slopes.referenceError = given.quick ? 0.05 : 0.03;
+  slopes.timedFrames = godRays.timedFrames;
+  slopes.physicalGrid = 256;
+  const std::vector<double> slopeAngles =
+      given.quick ? std::vector<double>{0.0, 45.0} : std::vector<double>{0.0, 30.0, 45.0, 60.0};
+  std::string slopeNote;
+  if (!report::measureSlopedCaustics(frame, slopes, slopeAngles, rows, slopeNote, error))
+    return commandFailed(error);
   std::string objectNote;
   if (!report::measureObjectCaustics(target, report::objectCausticSweep(given.quick), rows,
                                      objectNote, error))
     return commandFailed(error);
-  info.referenceNote = causticNote + "\n\n" + godRayNote + "\n\n" + objectNote;
+  info.referenceNote = causticNote + "\n\n" + slopeNote + "\n\n" + godRayNote + "\n\n" + objectNote;
 
   const std::string dir = options.out + "/";
   if (!report::writeCsv(dir + "error_vs_time.csv", rows, error) ||
