@@ -36,8 +36,9 @@ enum class Feature : std::uint32_t {
   // Seed 002's full tri-planar lookup: steep surfaces (more than ~30 degrees from horizontal
   // at the default CausticsSettings::triplanarSharpness) also sample the water along the world
   // x and z axes, blended by the G-buffer normal. Without it every surface samples the water
-  // where its light entered, along the refracted sun: seamless across surfaces, and closer to
-  // the traced reference on slopes (README, error report), at a third of the fetches there.
+  // where its light entered, along the refracted sun: seamless across surfaces, and on slopes
+  // of 45-60 degrees its pattern correlates with the traced one as on flat ground where the
+  // tri-planar one does not (error report), at a third of the fetches there.
   TriplanarWalls = 1u << 8,
 };
 constexpr Feature operator|(Feature a, Feature b) {
