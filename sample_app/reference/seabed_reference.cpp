@@ -44,9 +44,9 @@ double refineRoot(F f, double a, double fa, double b, double fb) {
 }
 
 // First crossing (from t = tStart downwards to tEnd) of f from >= 0 to < 0, marching in steps
-// of at most `step`. f(tEnd) must be <= 0. Returns tEnd when f never goes negative before it.
+// of at most `step`. With f(tEnd) <= 0 there is one; otherwise returns `noCrossing`.
 template <class F>
-double firstCrossing(F f, double tStart, double tEnd, double step) {
+double firstCrossing(F f, double tStart, double tEnd, double step, double noCrossing) {
   double a = tStart, fa = f(a);
   if (fa < 0.0) return tStart;
   const double direction = tEnd < tStart ? -1.0 : 1.0;
@@ -59,7 +59,7 @@ double firstCrossing(F f, double tStart, double tEnd, double step) {
     a = b;
     fa = fb;
   }
-  return tEnd;
+  return noCrossing;
 }
 
 struct Accumulator {
@@ -145,7 +145,7 @@ struct Tracer {
       return sun.y * t - surface.sample(u + sun.x * t, v + sun.z * t).height;
     };
     const double step = 0.25 * surface.featureSize() / horizontal;
-    const double t = firstCrossing(above, top, -top, step);
+    const double t = firstCrossing(above, top, -top, step, -top);  // f(-top) < 0 always
     point = glm::dvec3(u + sun.x * t, sun.y * t, v + sun.z * t);
     at = surface.sample(point.x, point.z);
     return true;
@@ -163,7 +163,9 @@ struct Tracer {
     const double horizontal = std::max(std::hypot(dir.x, dir.z), 1e-9);
     const double step = std::min(0.5 * receiver.featureSize / horizontal, end);
     if (aboveSeabed(0.0) < 0.0) return -1.0;
-    return firstCrossing(aboveSeabed, 0.0, end, step);
+    // No crossing by `end` (only when depth does not bound depthAt, against its contract):
+    // the ray misses rather than being binned where it stopped.
+    return firstCrossing(aboveSeabed, 0.0, end, step, -1.0);
   }
 
   void traceRow(int batch, int row, const LaunchWindow& window, glm::dvec2 cell, int columns,
