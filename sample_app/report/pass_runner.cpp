@@ -38,8 +38,12 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* pas
     glFinish();
   }
   if (ok) {
-    out.medianMs = passMedianMs(postfx::stats(*context), passName);
-    out.floorMs = passMedianMs(postfx::stats(*context), "floor");
+    const postfx::FrameStats& stats = postfx::stats(*context);
+    out.medianMs = passMedianMs(stats, passName);
+    out.floorMs = passMedianMs(stats, "floor");
+    out.medianMsByPass.clear();
+    for (int i = 0; i < stats.passCount; ++i)
+      out.medianMsByPass[stats.passes[i].name] = stats.passes[i].medianMs;
     glClearTexImage(target.texture(), 0, GL_RGBA, GL_FLOAT, zero);
     ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
   }

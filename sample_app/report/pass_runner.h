@@ -5,6 +5,7 @@
 // for the image the error is computed from.
 #include <epoxy/gl.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,10 @@
 namespace ocean::report {
 
 struct PassRun {
-  double medianMs = 0.0, floorMs = 0.0;
+  double medianMs = 0.0, floorMs = 0.0;  // of the named pass and of the floor
+  // Every pass the run timed, by name (e.g. "caustics_irradiance" beside "caustics"): one run
+  // prices a method made of several passes.
+  std::map<std::string, double> medianMsByPass;
   std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order
   std::vector<float> raw;        // raw caustic factor (with Feature::RawCausticOutput)
   // The object caustic map of the last frame (rgb, row v = 0 first) and where it lies; empty

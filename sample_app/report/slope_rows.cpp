@@ -31,13 +31,8 @@ bool runVariant(const postfx::FrameDesc& frame, postfx::Feature features, const 
   create.normalEncoding = 1;
   const ReportTarget target(plane.desc.width, plane.desc.height);
   if (!runPass(create, frame, "caustics", target, timedFrames, out.run, error)) return false;
-  if (postfx::hasFeature(features, postfx::Feature::PhysicalCaustics)) {
-    // The irradiance pass is part of the method's cost (as in the flat rows).
-    PassRun irradiance;
-    if (!runPass(create, frame, "caustics_irradiance", target, timedFrames, irradiance, error))
-      return false;
-    out.run.medianMs += irradiance.medianMs;
-  }
+  // The irradiance pass is part of the method's cost (as in the flat rows); 0 without it.
+  out.run.medianMs += out.run.medianMsByPass["caustics_irradiance"];
   out.binned = plane.binned(out.run.raw, scale);
   out.stats = compareWithReference(out.binned, truth);
   return true;
