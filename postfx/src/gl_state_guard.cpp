@@ -55,14 +55,15 @@ GlStateGuard::GlStateGuard() {
   storageIndexed_ = glkit::IndexedBufferBinding::save(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
-namespace {
-void setEnabled(GLenum cap, GLboolean on) {
+void restoreEnabled(GLenum cap, GLboolean on) {
   if (on) {
     glEnable(cap);
   } else {
     glDisable(cap);
   }
 }
+
+namespace {
 void setEnabledi(GLenum cap, GLuint index, GLboolean on) {
   if (on) {
     glEnablei(cap, index);
@@ -86,13 +87,13 @@ GlStateGuard::~GlStateGuard() {
                              static_cast<GLenum>(b.equationAlpha));
     glColorMaski(i, b.colorMask[0], b.colorMask[1], b.colorMask[2], b.colorMask[3]);
   }
-  setEnabled(GL_CULL_FACE, cullFace_);
-  setEnabled(GL_RASTERIZER_DISCARD, rasterizerDiscard_);
-  setEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
+  restoreEnabled(GL_CULL_FACE, cullFace_);
+  restoreEnabled(GL_RASTERIZER_DISCARD, rasterizerDiscard_);
+  restoreEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
   // Core profiles keep one mode for both faces.
   glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygonMode_[0]));
   for (int i = 0; i < clipDistanceCount_; ++i)
-    setEnabled(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), clipDistance_[i]);
+    restoreEnabled(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), clipDistance_[i]);
   glUseProgram(static_cast<GLuint>(program_));
   glBindVertexArray(static_cast<GLuint>(vertexArray_));
   for (int unit = 0; unit < kUnitCount; ++unit) {

@@ -10,6 +10,9 @@
 
 namespace postfx::detail {
 
+// glEnable / glDisable a capability back to a saved glIsEnabled value.
+void restoreEnabled(GLenum cap, GLboolean on);
+
 class GlStateGuard {
  public:
   // Texture units whose 2D / 2D-array / buffer bindings and sampler the passes rebind:

@@ -1,16 +1,8 @@
 #include "object_caustics_state.h"
 
-namespace postfx::detail {
-namespace {
-void setEnabled(GLenum cap, GLboolean on) {
-  if (on) {
-    glEnable(cap);
-  } else {
-    glDisable(cap);
-  }
-}
-}  // namespace
+#include "gl_state_guard.h"
 
+namespace postfx::detail {
 ObjectCausticsStateGuard::ObjectCausticsStateGuard() {
   depthTest_ = glIsEnabled(GL_DEPTH_TEST);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
@@ -27,17 +19,17 @@ ObjectCausticsStateGuard::ObjectCausticsStateGuard() {
 }
 
 ObjectCausticsStateGuard::~ObjectCausticsStateGuard() {
-  setEnabled(GL_DEPTH_TEST, depthTest_);
+  restoreEnabled(GL_DEPTH_TEST, depthTest_);
   glDepthMask(depthMask_);
-  setEnabled(GL_DEPTH_CLAMP, depthClamp_);
+  restoreEnabled(GL_DEPTH_CLAMP, depthClamp_);
   glDepthFunc(static_cast<GLenum>(depthFunc_));
   glDepthRangeIndexed(0, depthRange_[0], depthRange_[1]);
   glClipControl(static_cast<GLenum>(clipOrigin_), static_cast<GLenum>(clipDepthMode_));
-  setEnabled(GL_PRIMITIVE_RESTART, primitiveRestart_);
-  setEnabled(GL_PRIMITIVE_RESTART_FIXED_INDEX, primitiveRestartFixed_);
-  setEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
-  setEnabled(GL_POLYGON_OFFSET_FILL, polygonOffsetFill_);
-  setEnabled(GL_STENCIL_TEST, stencilTest_);
+  restoreEnabled(GL_PRIMITIVE_RESTART, primitiveRestart_);
+  restoreEnabled(GL_PRIMITIVE_RESTART_FIXED_INDEX, primitiveRestartFixed_);
+  restoreEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
+  restoreEnabled(GL_POLYGON_OFFSET_FILL, polygonOffsetFill_);
+  restoreEnabled(GL_STENCIL_TEST, stencilTest_);
 }
 
 }  // namespace postfx::detail
