@@ -6,6 +6,15 @@
 
 namespace ocean {
 
+namespace {
+
+// The ocean's cascades the plugin is given: the context is created for exactly these.
+int pluginCascades(const water::Ocean& ocean) {
+  return std::min(ocean.cascadeCount(), postfx::kMaxCascades);
+}
+
+}  // namespace
+
 double passMedianMs(const postfx::FrameStats& stats, const std::string& name) {
   for (int i = 0; i < stats.passCount; ++i) {
     if (name == stats.passes[i].name) return stats.passes[i].medianMs;
@@ -28,7 +37,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   }
   desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
   desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
-  desc.maxWaterCascades = std::min(renderer.ocean().cascadeCount(), postfx::kMaxCascades);
+  desc.maxWaterCascades = pluginCascades(renderer.ocean());
   if (options.triplanarWalls) desc.features = desc.features | postfx::Feature::TriplanarWalls;
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(nullptr);
@@ -96,7 +105,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.sun.irradiance = frame.input.sun.irradiance;
   desc.water.level = frame.optics.level;
   desc.water.texture = {ocean.slopeTexture(), GL_RGBA16F};
-  desc.water.cascadeCount = std::min(ocean.cascadeCount(), postfx::kMaxCascades);
+  desc.water.cascadeCount = pluginCascades(ocean);
   for (int c = 0; c < desc.water.cascadeCount; ++c) {
     desc.water.tileSize[c] = ocean.tileSize(c);
     desc.water.rmsLaplacian[c] = ocean.waveStats(c).rmsLaplacian;
