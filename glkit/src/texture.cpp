@@ -15,4 +15,16 @@ GLuint createTexture2D(GLenum format, int width, int height, GLenum filter, std:
   return texture;
 }
 
+GLuint createSampler(GLenum minFilter, GLenum magFilter, GLenum wrap, std::string_view name) {
+  GLuint sampler = 0;
+  glCreateSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GLint(magFilter));
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GLint(wrap));
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GLint(wrap));
+  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  label(GL_SAMPLER, sampler, name);
+  return sampler;
+}
+
 }  // namespace glkit

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <glkit/texture.h>
+
 #include "shader_library.h"
 
 namespace postfx::detail {
@@ -26,21 +28,8 @@ std::string shaderDefines(const CreateDesc& desc) {
 
 namespace {
 
-GLuint makeSampler(GLenum minFilter, GLenum magFilter, GLenum wrap, const char* name) {
-  GLuint sampler = 0;
-  glCreateSamplers(1, &sampler);
-  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
-  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
-  // A host depth texture may carry GL_COMPARE_REF_TO_TEXTURE; ours decides, not the texture's.
-  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-  glkit::label(GL_SAMPLER, sampler, name);
-  return sampler;
-}
-
 GLuint makeShadowSampler(GLenum compare, const char* name) {
-  GLuint sampler = makeSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, name);
+  GLuint sampler = glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, name);
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, static_cast<GLint>(compare));
   return sampler;
@@ -96,17 +85,19 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
                        GL_DYNAMIC_STORAGE_BIT);
   glkit::label(GL_BUFFER, uniformBuffer_, "postfx.caustics.block");
 
-  pointSampler_ = makeSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "postfx.sampler.point");
-  waterMipSampler_ =
-      makeSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, "postfx.sampler.water_mip");
-  waterLinearSampler_ = makeSampler(GL_LINEAR, GL_LINEAR, GL_REPEAT, "postfx.sampler.water");
+  pointSampler_ =
+      glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "postfx.sampler.point");
+  waterMipSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT,
+                                          "postfx.sampler.water_mip");
+  waterLinearSampler_ =
+      glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_REPEAT, "postfx.sampler.water");
   if (hasFeature(desc.features, Feature::ShadowMask)) {
     shadowForwardSampler_ = makeShadowSampler(GL_LEQUAL, "postfx.sampler.shadow_forward");
     shadowReverseSampler_ = makeShadowSampler(GL_GEQUAL, "postfx.sampler.shadow_reverse_z");
   }
   if (hasFeature(desc.features, Feature::PhysicalCaustics))
     irradianceSampler_ =
-        makeSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "postfx.sampler.irradiance");
+        glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "postfx.sampler.irradiance");
   return Result::Ok;
 }
 

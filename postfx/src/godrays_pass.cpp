@@ -1,5 +1,7 @@
 #include "godrays_pass.h"
 
+#include <glkit/texture.h>
+
 #include "godrays_constants.h"
 #include "host_target.h"
 
@@ -45,12 +47,8 @@ Result GodRaysPass::init(const std::string& defines, std::string& error) {
   glNamedBufferStorage(uniformBuffer_, sizeof(shared::GodRaysBlock), nullptr,
                        GL_DYNAMIC_STORAGE_BIT);
   glkit::label(GL_BUFFER, uniformBuffer_, "postfx.god_rays.block");
-  glCreateSamplers(1, &reducedSampler_);
-  glSamplerParameteri(reducedSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(reducedSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glSamplerParameteri(reducedSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(reducedSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glkit::label(GL_SAMPLER, reducedSampler_, "postfx.sampler.god_rays_reduced");
+  reducedSampler_ = glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
+                                         "postfx.sampler.god_rays_reduced");
   return Result::Ok;
 }
 

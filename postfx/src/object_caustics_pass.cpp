@@ -1,5 +1,6 @@
 #include "object_caustics_pass.h"
 
+#include <glkit/texture.h>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "host_target.h"
@@ -29,19 +30,6 @@ bool build(const std::string& defines, const char* vertex, const char* fragment,
     return false;
   out = glkit::Program(program);
   return true;
-}
-
-GLuint makeSampler(GLenum filter, const char* name) {
-  GLuint sampler = 0;
-  glCreateSamplers(1, &sampler);
-  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
-  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  // Host depth textures may carry GL_COMPARE_REF_TO_TEXTURE: ours reads depth values.
-  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-  glkit::label(GL_SAMPLER, sampler, name);
-  return sampler;
 }
 
 GLuint makeTexture(GLenum format, int size, const char* name) {
@@ -106,8 +94,10 @@ Result ObjectCausticsPass::init(const std::string& defines, std::string& error) 
   const GLenum two[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glNamedFramebufferDrawBuffers(frontFbo_, 2, two);
   glNamedFramebufferDrawBuffers(backFbo_, 2, two);
-  pointSampler_ = makeSampler(GL_NEAREST, "postfx.object_caustics.sampler.point");
-  linearSampler_ = makeSampler(GL_LINEAR, "postfx.object_caustics.sampler.linear");
+  pointSampler_ = glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
+                                       "postfx.object_caustics.sampler.point");
+  linearSampler_ = glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
+                                        "postfx.object_caustics.sampler.linear");
   return Result::Ok;
 }
 
