@@ -5,6 +5,6 @@ set(_extreme_private ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT}
 postfx_add_test(extreme_case_tests
   SOURCES extreme/extreme_case.cpp extreme/extreme_table.cpp extreme/extreme_runner.cpp
           extreme/extreme_bounds.cpp extreme/extreme_suite_test.cpp gl/postfx_scene.cpp
-  LIBS postfx gbuffer water glm::glm PkgConfig::EPOXY
+  LIBS postfx gbuffer water glm::glm postfx::epoxy
   GL LABELS extreme)
 target_include_directories(extreme_case_tests PRIVATE ${_extreme_private})

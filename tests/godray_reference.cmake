@@ -2,6 +2,6 @@
 if(TARGET ocean_reference)
   postfx_add_test(godray_reference_tests
     SOURCES gl/godray_reference_test.cpp gl/postfx_scene.cpp
-    LIBS ocean_reference postfx gbuffer glm::glm PkgConfig::EPOXY
+    LIBS ocean_reference postfx gbuffer glm::glm postfx::epoxy
     GL LABELS reference)
 endif()

@@ -7,7 +7,7 @@ postfx_add_test(postfx_unit_tests
   SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp unit/postfx_godrays_math_test.cpp
           unit/postfx_no_context_test.cpp unit/postfx_irradiance_layout_test.cpp
           unit/postfx_object_caustics_frame_test.cpp
-  LIBS postfx gbuffer glm::glm PkgConfig::EPOXY)
+  LIBS postfx gbuffer glm::glm postfx::epoxy)
 target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
 
 postfx_add_test(postfx_gl_tests
@@ -15,7 +15,7 @@ postfx_add_test(postfx_gl_tests
           gl/postfx_caustics_test.cpp gl/postfx_stability_test.cpp gl/postfx_timing_test.cpp
           gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp
           gl/postfx_cascade_skip_test.cpp gl/postfx_caustics_lookup_test.cpp
-  LIBS postfx gbuffer glm::glm PkgConfig::EPOXY
+  LIBS postfx gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
 
@@ -25,6 +25,6 @@ postfx_add_test(postfx_object_caustics_tests
   SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
           gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
           gl/postfx_object_caustics_host_test.cpp
-  LIBS postfx ocean_reference gbuffer glm::glm PkgConfig::EPOXY
+  LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -8,7 +8,7 @@ postfx_add_test(reference_unit_tests
 postfx_add_test(postfx_physical_tests GL
   SOURCES gl/postfx_scene.cpp gl/postfx_physical_mode_test.cpp
           gl/postfx_physical_reference_test.cpp
-  LIBS postfx ocean_reference water gbuffer glm::glm PkgConfig::EPOXY)
+  LIBS postfx ocean_reference water gbuffer glm::glm postfx::epoxy)
 target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
 
@@ -16,7 +16,7 @@ target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/pos
 # against the seabed reference traced onto the same tilted planes, through the report's code.
 postfx_add_test(postfx_slope_lookup_tests GL
   SOURCES gl/postfx_slope_lookup_test.cpp
-  LIBS ocean_report water glm::glm PkgConfig::EPOXY)
+  LIBS ocean_report water glm::glm postfx::epoxy)
 
 # The report's sloped receiver (pixels to horizontal bins, the plane as the reference's height
 # field, flat-water units) on known answers.

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <water/ocean.h>
+#include <postfx/water/ocean.h>
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <thread>
 
-#include <water/random.h>
+#include <postfx/water/random.h>
 
 namespace ocean::reference {
 namespace {

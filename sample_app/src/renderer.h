@@ -12,8 +12,8 @@
 #include <gbuffer/targets.h>
 #include <glkit/program.h>
 #include <scene/model.h>
-#include <water/ocean.h>
-#include <water/optics.h>
+#include <postfx/water/ocean.h>
+#include <postfx/water/optics.h>
 
 #include "camera.h"
 #include "gpu_scene.h"

@@ -5,8 +5,8 @@
 #include <limits>
 #include <numbers>
 
-#include <water/initial_spectrum.h>
-#include <water/ocean.h>
+#include <postfx/water/initial_spectrum.h>
+#include <postfx/water/ocean.h>
 
 #include "postfx_scene.h"
 #include "postfx_test_util.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <postfx/postfx.h>
-#include <water/ocean.h>
+#include <postfx/water/ocean.h>
 
 #include "postfx_scene.h"
 #include "seabed_reference.h"

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <sstream>
 
-#include <water/initial_spectrum.h>
-#include <water/reference.h>
-#include <water/spectrum.h>
+#include <postfx/water/initial_spectrum.h>
+#include <postfx/water/reference.h>
+#include <postfx/water/spectrum.h>
 
 #include "water_test_util.h"
 

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include <water/ocean.h>
+#include <postfx/water/ocean.h>
 
 namespace watertest {
 

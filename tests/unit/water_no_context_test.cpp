@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <glkit/current_context.h>
-#include <water/ocean.h>
+#include <postfx/water/ocean.h>
 
 TEST(WaterWithoutContext, CreateRefusesInsteadOfAborting) {
   ASSERT_FALSE(glkit::hasCurrentContext());

@@ -6,8 +6,8 @@
 #include <complex>
 #include <numbers>
 
-#include <water/random.h>
-#include <water/reference.h>
+#include <postfx/water/random.h>
+#include <postfx/water/reference.h>
 
 namespace {
 

@@ -8,9 +8,9 @@
 #include <limits>
 #include <numbers>
 
-#include <water/initial_spectrum.h>
-#include <water/random.h>
-#include <water/spectrum.h>
+#include <postfx/water/initial_spectrum.h>
+#include <postfx/water/random.h>
+#include <postfx/water/spectrum.h>
 
 namespace {
 

@@ -1,10 +1,10 @@
-#include <water/initial_spectrum.h>
+#include <postfx/water/initial_spectrum.h>
 
 #include <cmath>
 #include <numbers>
 
-#include <water/random.h>
-#include <water/spectrum.h>
+#include <postfx/water/random.h>
+#include <postfx/water/spectrum.h>
 
 namespace water {
 namespace {

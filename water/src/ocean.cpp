@@ -1,4 +1,4 @@
-#include <water/ocean.h>
+#include <postfx/water/ocean.h>
 
 #include <bit>
 #include <cmath>
@@ -8,8 +8,8 @@
 
 #include <glkit/current_context.h>
 #include <glkit/program.h>
-#include <water/initial_spectrum.h>
-#include <water/spectrum.h>
+#include <postfx/water/initial_spectrum.h>
+#include <postfx/water/spectrum.h>
 
 #include "gl_state_guard.h"
 #include "shader_interface.h"

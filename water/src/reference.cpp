@@ -1,4 +1,4 @@
-#include <water/reference.h>
+#include <postfx/water/reference.h>
 
 #include <array>
 #include <cmath>

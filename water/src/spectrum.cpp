@@ -1,6 +1,6 @@
-#include <water/spectrum.h>
+#include <postfx/water/spectrum.h>
 
-#include <water/initial_spectrum.h>
+#include <postfx/water/initial_spectrum.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include <water/ocean_desc.h>
+#include <postfx/water/ocean_desc.h>
 
 namespace water {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include <water/result.h>
+#include <postfx/water/result.h>
 
 namespace water {
 

@@ -3,7 +3,7 @@
 // wavenumber band each cascade owns and the analytic mean-square slope. Pure CPU math.
 #include <vector>
 
-#include <water/ocean_desc.h>
+#include <postfx/water/ocean_desc.h>
 
 namespace water {
 

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include <water/initial_spectrum.h>
+#include <postfx/water/initial_spectrum.h>
 
 namespace water {
 

@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include <water/ocean_desc.h>
-#include <water/result.h>
-#include <water/spectrum.h>
+#include <postfx/water/ocean_desc.h>
+#include <postfx/water/result.h>
+#include <postfx/water/spectrum.h>
 
 namespace water {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <water/ocean_desc.h>
+#include <postfx/water/ocean_desc.h>
 
 namespace water {
 
