@@ -52,10 +52,10 @@ struct Row {
 };
 
 bool measure(int resolution, int frames, Row& row, std::string& error) {
-  water::OceanDesc desc;
+  postfx::water::OceanDesc desc;
   desc.resolution = resolution;
-  std::unique_ptr<water::Ocean> ocean;
-  if (water::Ocean::create(desc, ocean, error) != water::Result::Ok) return false;
+  std::unique_ptr<postfx::water::Ocean> ocean;
+  if (postfx::water::Ocean::create(desc, ocean, error) != postfx::water::Result::Ok) return false;
   TimerRing ring;
   std::vector<double> samples;
   const int total = kWarmupFrames + std::max(frames, 5);
@@ -70,7 +70,7 @@ bool measure(int resolution, int frames, Row& row, std::string& error) {
     if (frame >= kRingDepth) collect(frame - kRingDepth);
     glQueryCounter(ring.queries[2 * slot], GL_TIMESTAMP);
     // 1/60 s steps from far in the future: the cost must not depend on the time value.
-    if (ocean->update(1e6 + frame / 60.0, error) != water::Result::Ok) return false;
+    if (ocean->update(1e6 + frame / 60.0, error) != postfx::water::Result::Ok) return false;
     glQueryCounter(ring.queries[2 * slot + 1], GL_TIMESTAMP);
     ring.pending[slot] = true;
   }

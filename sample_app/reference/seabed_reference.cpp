@@ -170,8 +170,8 @@ struct Tracer {
 
   void traceRow(int batch, int row, const LaunchWindow& window, glm::dvec2 cell, int columns,
                 Accumulator& acc) const {
-    water::GaussianRandom random(0x5EABEDull ^ (static_cast<std::uint64_t>(batch) << 32) ^
-                                 static_cast<std::uint64_t>(row) * 0x9E3779B97F4A7C15ull);
+    postfx::water::GaussianRandom random(0x5EABEDull ^ (static_cast<std::uint64_t>(batch) << 32) ^
+                                         static_cast<std::uint64_t>(row) * 0x9E3779B97F4A7C15ull);
     const BinGrid& bins = desc.bins;
     const glm::dvec2 binSize = bins.size();
     const double weight = cell.x * cell.y;

@@ -9,7 +9,7 @@ namespace ocean {
 namespace {
 
 // The ocean's cascades the plugin is given: the context is created for exactly these.
-int pluginCascades(const water::Ocean& ocean) {
+int pluginCascades(const postfx::water::Ocean& ocean) {
   return std::min(ocean.cascadeCount(), postfx::kMaxCascades);
 }
 
@@ -92,7 +92,7 @@ postfx::CasterMaterial casterMaterial(const ocean_scene::Material& m) {
 
 bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   const gbuffer::Targets& targets = frame.targets;
-  const water::Ocean& ocean = frame.ocean;
+  const postfx::water::Ocean& ocean = frame.ocean;
   postfx::FrameDesc desc;
   desc.depth = {targets.depth(), GL_DEPTH_COMPONENT32F};
   desc.normal = {targets.normal(), GL_RG16_SNORM};

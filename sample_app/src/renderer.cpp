@@ -59,9 +59,10 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   if (targets_.resize(settings_.width, settings_.height, error) != gbuffer::TargetError::None) {
     return false;
   }
-  water::OceanDesc oceanDesc;
+  postfx::water::OceanDesc oceanDesc;
   oceanDesc.resolution = settings_.waterResolution;
-  if (water::Ocean::create(oceanDesc, ocean_, error) != water::Result::Ok) return false;
+  if (postfx::water::Ocean::create(oceanDesc, ocean_, error) != postfx::water::Result::Ok)
+    return false;
 
   if (!build(geometry_, "sample/geometry.vert", "sample/geometry.frag", "sample.geometry", error) ||
       !build(shadow_, "sample/shadow.vert", "sample/depth_only.frag", "sample.shadow", error) ||
@@ -157,7 +158,7 @@ glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
 }
 
 bool Renderer::render(const FrameInput& input, std::string& error) {
-  if (ocean_->update(input.timeSeconds, error) != water::Result::Ok) return false;
+  if (ocean_->update(input.timeSeconds, error) != postfx::water::Result::Ok) return false;
   const glm::dmat4 projection = updateFrameConstants(input);
   const int width = settings_.width, height = settings_.height;
   const glm::dvec3 eye = input.camera.position;

@@ -11,9 +11,9 @@
 
 #include <gbuffer/targets.h>
 #include <glkit/program.h>
-#include <scene/model.h>
 #include <postfx/water/ocean.h>
 #include <postfx/water/optics.h>
+#include <scene/model.h>
 
 #include "camera.h"
 #include "gpu_scene.h"
@@ -40,8 +40,8 @@ struct FrameInput {
 struct HostFrame {
   const gbuffer::Targets& targets;
   const FrameInput& input;
-  const water::Ocean& ocean;
-  const water::Optics& optics;
+  const postfx::water::Ocean& ocean;
+  const postfx::water::Optics& optics;
   GLuint shadowMap;              // D32F, forward [0,1], compare mode on
   glm::dmat4 shadowWorldToClip;  // world -> shadow clip, double, translation included
   glm::dmat4 projection;         // reverse-Z infinite
@@ -72,8 +72,8 @@ class Renderer {
   std::vector<float> readRadiance() const;  // RGBA32F linear, after fog and water surface
   const RenderSettings& settings() const { return settings_; }
   const gbuffer::Targets& targets() const { return targets_; }
-  const water::Optics& optics() const { return optics_; }
-  water::Ocean& ocean() { return *ocean_; }
+  const postfx::water::Optics& optics() const { return optics_; }
+  postfx::water::Ocean& ocean() { return *ocean_; }
 
  private:
   Renderer() = default;
@@ -82,9 +82,9 @@ class Renderer {
   glm::dmat4 updateFrameConstants(const FrameInput& input);
 
   RenderSettings settings_;
-  water::Optics optics_;
+  postfx::water::Optics optics_;
   gbuffer::Targets targets_;
-  std::unique_ptr<water::Ocean> ocean_;
+  std::unique_ptr<postfx::water::Ocean> ocean_;
   GpuScene scene_;
   ShadowMap shadowMap_;
   ShadowMap receiverMap_;  // created by enableReceiverMap()

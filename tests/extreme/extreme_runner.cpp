@@ -118,8 +118,8 @@ void syntheticWaterFacts(double amplitude, Facts& f) {
 struct SpectrumBounds {
   double slope[4] = {}, height[4] = {}, gradient[4] = {}, rate[4] = {}, chop[4] = {};
 };
-SpectrumBounds spectrumBounds(const water::OceanDesc& desc) {
-  const water::InitialSpectrum s = water::buildInitialSpectrum(desc);
+SpectrumBounds spectrumBounds(const postfx::water::OceanDesc& desc) {
+  const postfx::water::InitialSpectrum s = postfx::water::buildInitialSpectrum(desc);
   SpectrumBounds b;
   const int n = s.resolution;
   for (int c = 0; c < s.cascadeCount; ++c) {
@@ -128,8 +128,8 @@ SpectrumBounds spectrumBounds(const water::OceanDesc& desc) {
       for (int i = 0; i < n; ++i) {
         const size_t idx = s.index(c, i, m);
         const double amp = std::abs(s.a[idx]) + std::abs(s.b[idx]);
-        const double k =
-            dk * std::hypot(water::signedFrequency(i, n), water::signedFrequency(m, n));
+        const double k = dk * std::hypot(postfx::water::signedFrequency(i, n),
+                                         postfx::water::signedFrequency(m, n));
         const double w = kTwoPi * s.cycles[idx] / desc.loopPeriod;
         b.height[c] += amp;
         b.slope[c] += k * amp;
@@ -142,8 +142,8 @@ SpectrumBounds spectrumBounds(const water::OceanDesc& desc) {
   return b;
 }
 
-water::OceanDesc oceanDesc() {
-  water::OceanDesc desc;
+postfx::water::OceanDesc oceanDesc() {
+  postfx::water::OceanDesc desc;
   desc.resolution = 32;
   return desc;
 }
@@ -152,7 +152,7 @@ water::OceanDesc oceanDesc() {
 
 struct Runner::State {
   postfxtest::ContextPtr fx;
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   SpectrumBounds spectrum;
 };
 
@@ -166,10 +166,10 @@ Runner::~Runner() = default;
 namespace {
 
 // Water pass: every mip level of the slope texture, each texel with its cascade's bounds.
-Output runWater(water::Ocean& ocean, const SpectrumBounds& sb, double time) {
+Output runWater(postfx::water::Ocean& ocean, const SpectrumBounds& sb, double time) {
   Output out;
   std::string error;
-  if (ocean.update(time, error) != water::Result::Ok) {
+  if (ocean.update(time, error) != postfx::water::Result::Ok) {
     out.error = error;
     return out;
   }
@@ -198,7 +198,8 @@ Output Runner::run(const Knobs& k) {
   if (pass_ == Pass::Water) {
     if (!state_->ocean) {
       std::string error;
-      if (water::Ocean::create(oceanDesc(), state_->ocean, error) != water::Result::Ok) {
+      if (postfx::water::Ocean::create(oceanDesc(), state_->ocean, error) !=
+          postfx::water::Result::Ok) {
         Output out;
         out.error = error;
         return out;
@@ -233,9 +234,9 @@ Output Runner::run(const Knobs& k) {
   GLuint water = 0;
   if (useOcean) {
     std::string error;
-    if ((!state_->ocean &&
-         water::Ocean::create(oceanDesc(), state_->ocean, error) != water::Result::Ok) ||
-        state_->ocean->update(k.oceanTime, error) != water::Result::Ok) {
+    if ((!state_->ocean && postfx::water::Ocean::create(oceanDesc(), state_->ocean, error) !=
+                               postfx::water::Result::Ok) ||
+        state_->ocean->update(k.oceanTime, error) != postfx::water::Result::Ok) {
       out.error = "water module: " + error;
       return out;
     }

@@ -112,18 +112,18 @@ inline double mean(const std::vector<double>& v) {
 }
 
 // A small real sea: 64^2 texels, the default three cascades (250, 37, 5.3 m), 7 m/s wind.
-inline std::unique_ptr<water::Ocean> makeSmallOcean(double timeSeconds) {
-  water::OceanDesc desc;
+inline std::unique_ptr<postfx::water::Ocean> makeSmallOcean(double timeSeconds) {
+  postfx::water::OceanDesc desc;
   desc.resolution = 64;
   desc.windSpeed = 7.0;
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  if (water::Ocean::create(desc, ocean, error) != water::Result::Ok) return nullptr;
-  if (ocean->update(timeSeconds, error) != water::Result::Ok) return nullptr;
+  if (postfx::water::Ocean::create(desc, ocean, error) != postfx::water::Result::Ok) return nullptr;
+  if (ocean->update(timeSeconds, error) != postfx::water::Result::Ok) return nullptr;
   return ocean;
 }
 
-inline void useOcean(postfx::FrameDesc& frame, const water::Ocean& ocean) {
+inline void useOcean(postfx::FrameDesc& frame, const postfx::water::Ocean& ocean) {
   frame.water.texture = {ocean.slopeTexture(), GL_RGBA16F};
   frame.water.cascadeCount = ocean.cascadeCount();
   for (int c = 0; c < ocean.cascadeCount(); ++c) frame.water.tileSize[c] = ocean.tileSize(c);

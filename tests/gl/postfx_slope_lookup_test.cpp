@@ -33,7 +33,7 @@ ocean::report::SlopeSettings smallSettings() {
   return s;
 }
 
-postfx::FrameDesc seaFrame(const water::Ocean& ocean) {
+postfx::FrameDesc seaFrame(const postfx::water::Ocean& ocean) {
   postfx::FrameDesc frame;
   postfxtest::useOcean(frame, ocean);
   frame.sun.direction = glm::normalize(glm::dvec3(0.3, 1.0, 0.2));  // 69 degrees up

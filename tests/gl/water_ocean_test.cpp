@@ -20,11 +20,11 @@ using testsupport::GlTest;
 using watertest::readDisplacement;
 using watertest::readSlope;
 
-std::unique_ptr<water::Ocean> makeOcean(const water::OceanDesc& desc) {
-  std::unique_ptr<water::Ocean> ocean;
+std::unique_ptr<postfx::water::Ocean> makeOcean(const postfx::water::OceanDesc& desc) {
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  const water::Result result = water::Ocean::create(desc, ocean, error);
-  EXPECT_EQ(result, water::Result::Ok) << error;
+  const postfx::water::Result result = postfx::water::Ocean::create(desc, ocean, error);
+  EXPECT_EQ(result, postfx::water::Result::Ok) << error;
   return ocean;
 }
 
@@ -36,19 +36,19 @@ class WaterOcean : public GlTest {};
 // add ~1e-6 of the field's RMS; 2e-4 RMS leaves room for drivers with coarser sin/cos. A bug in
 // the GPU path (sign, texel offset, phase) shows up at the 10-100 % level instead.
 TEST_F(WaterOcean, MatchesCpuReferenceWithinHalfPrecision) {
-  const water::OceanDesc desc = watertest::smallDesc();
+  const postfx::water::OceanDesc desc = watertest::smallDesc();
   auto ocean = makeOcean(desc);
   ASSERT_TRUE(ocean);
-  const water::InitialSpectrum spectrum = water::buildInitialSpectrum(desc);
+  const postfx::water::InitialSpectrum spectrum = postfx::water::buildInitialSpectrum(desc);
   const int n = desc.resolution;
   const size_t perLayer = static_cast<size_t>(n) * n;
   double maxSlopeError = 0.0, maxHeightError = 0.0, maxJacobianError = 0.0, maxDispError = 0.0;
   for (double time : {0.0, 17.25, 431.9}) {
-    ASSERT_EQ(ocean->update(time), water::Result::Ok);
+    ASSERT_EQ(ocean->update(time), postfx::water::Result::Ok);
     const auto slope = readSlope(*ocean);
     const auto displacement = readDisplacement(*ocean);
     for (int c = 0; c < desc.cascadeCount; ++c) {
-      const auto reference = water::evaluateReference(spectrum, desc, c, time);
+      const auto reference = postfx::water::evaluateReference(spectrum, desc, c, time);
       glm::dvec4 rms(0.0), rmsDisp(0.0);
       for (size_t t = 0; t < perLayer; ++t) {
         rms += reference.slope[t] * reference.slope[t];
@@ -108,7 +108,7 @@ TEST_F(WaterOcean, TexturesFollowTheContract) {
   glGetObjectLabel(GL_TEXTURE, ocean->slopeTexture(), sizeof(label), nullptr, label);
   EXPECT_STREQ(label, "water.slope");
   // The mips are regenerated every update: the 1x1 level is the mean of level 0.
-  ASSERT_EQ(ocean->update(55.5), water::Result::Ok);
+  ASSERT_EQ(ocean->update(55.5), postfx::water::Result::Ok);
   const auto level0 = readSlope(*ocean);
   const auto top = watertest::readLevel(ocean->slopeTexture(), 6, 1, 3);
   for (int c = 0; c < 3; ++c) {
@@ -124,13 +124,13 @@ TEST_F(WaterOcean, TexturesFollowTheContract) {
 }
 
 TEST_F(WaterOcean, RepeatsAfterTheLoopPeriod) {
-  const water::OceanDesc desc = watertest::smallDesc();
+  const postfx::water::OceanDesc desc = watertest::smallDesc();
   auto ocean = makeOcean(desc);
   ASSERT_TRUE(ocean);
   const double time = 73.3;
-  ASSERT_EQ(ocean->update(time), water::Result::Ok);
+  ASSERT_EQ(ocean->update(time), postfx::water::Result::Ok);
   const auto first = readSlope(*ocean);
-  ASSERT_EQ(ocean->update(time + desc.loopPeriod), water::Result::Ok);
+  ASSERT_EQ(ocean->update(time + desc.loopPeriod), postfx::water::Result::Ok);
   const auto second = readSlope(*ocean);
   double maxDifference = 0.0, maxValue = 0.0;
   for (size_t t = 0; t < first.size(); ++t) {
@@ -147,14 +147,14 @@ TEST_F(WaterOcean, RepeatsAfterTheLoopPeriod) {
 // At t = 1e7 s a float phase w * t would be off by whole radians; the integer loop phase makes
 // it bit-identical to t mod T.
 TEST_F(WaterOcean, FarFutureTimeIsAsCleanAsLoopStart) {
-  const water::OceanDesc desc = watertest::smallDesc();
+  const postfx::water::OceanDesc desc = watertest::smallDesc();
   auto ocean = makeOcean(desc);
   ASSERT_TRUE(ocean);
-  ASSERT_EQ(ocean->update(1e7), water::Result::Ok);
+  ASSERT_EQ(ocean->update(1e7), postfx::water::Result::Ok);
   const auto far = readSlope(*ocean);
-  ASSERT_EQ(ocean->update(std::fmod(1e7, desc.loopPeriod)), water::Result::Ok);
+  ASSERT_EQ(ocean->update(std::fmod(1e7, desc.loopPeriod)), postfx::water::Result::Ok);
   const auto reduced = readSlope(*ocean);
-  ASSERT_EQ(ocean->update(0.0), water::Result::Ok);
+  ASSERT_EQ(ocean->update(0.0), postfx::water::Result::Ok);
   const auto start = readSlope(*ocean);
   EXPECT_TRUE(watertest::allFinite(far));
   EXPECT_EQ(0, std::memcmp(far.data(), reduced.data(), far.size() * sizeof(glm::vec4)));
@@ -170,7 +170,7 @@ TEST_F(WaterOcean, FarFutureTimeIsAsCleanAsLoopStart) {
 // the a-b cross terms at one instant. Slope is dominated by the few modes around the spectral
 // peak, so one sea is ~10 % off; we average 8 seeds x 6 times and allow 3 sigma / sqrt(8) + 1 %.
 TEST_F(WaterOcean, SlopeVarianceMatchesTheSpectrum) {
-  water::OceanDesc desc = watertest::smallDesc(64);
+  postfx::water::OceanDesc desc = watertest::smallDesc(64);
   const int seeds = 8;
   const double times[] = {0.0, 41.0, 97.5, 173.1, 260.0, 517.3};
   double measured = 0.0;
@@ -179,26 +179,26 @@ TEST_F(WaterOcean, SlopeVarianceMatchesTheSpectrum) {
     auto ocean = makeOcean(desc);
     ASSERT_TRUE(ocean);
     for (double time : times) {
-      ASSERT_EQ(ocean->update(time), water::Result::Ok);
+      ASSERT_EQ(ocean->update(time), postfx::water::Result::Ok);
       measured += watertest::meanSquareSlope(readSlope(*ocean), desc.resolution, desc.cascadeCount);
     }
   }
   measured /= seeds * static_cast<double>(std::size(times));
-  const double expected = water::discreteMeanSquareSlope(desc);
-  const auto bands = water::cascadeBands(desc);
+  const double expected = postfx::water::discreteMeanSquareSlope(desc);
+  const auto bands = postfx::water::cascadeBands(desc);
   const int n = desc.resolution;
   double sumW = 0.0, sumW2 = 0.0;
   for (int c = 0; c < desc.cascadeCount; ++c) {
     const double dk = 2.0 * std::numbers::pi / desc.tileSize[c];
     for (int m = 0; m < n; ++m) {
       for (int i = 0; i < n; ++i) {
-        const double kx = water::signedFrequency(i, n) * dk;
-        const double kz = water::signedFrequency(m, n) * dk;
+        const double kx = postfx::water::signedFrequency(i, n) * dk;
+        const double kz = postfx::water::signedFrequency(m, n) * dk;
         const double k = std::hypot(kx, kz);
         if (i == n / 2 || m == n / 2 || k == 0.0 || k < bands[c].kMin || k >= bands[c].kMax) {
           continue;
         }
-        const double w = k * k * water::waveSpectrum(kx, kz, desc) * dk * dk;
+        const double w = k * k * postfx::water::waveSpectrum(kx, kz, desc) * dk * dk;
         sumW += w;
         sumW2 += w * w;
       }
@@ -207,7 +207,7 @@ TEST_F(WaterOcean, SlopeVarianceMatchesTheSpectrum) {
   const double sigma = std::sqrt(2.0 * sumW2) / sumW / std::sqrt(double(seeds));
   std::cout << "mean-square slope (" << seeds << " seeds): measured " << measured
             << ", spectrum sum " << expected << ", continuous integral "
-            << water::integratedMeanSquareSlope(desc) << ", ratio " << measured / expected
+            << postfx::water::integratedMeanSquareSlope(desc) << ", ratio " << measured / expected
             << ", sigma of the mean " << sigma << "\n";
   RecordProperty("mean_square_slope_ratio", std::to_string(measured / expected));
   EXPECT_NEAR(measured / expected, 1.0, 3.0 * sigma + 0.01);

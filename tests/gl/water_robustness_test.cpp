@@ -25,23 +25,26 @@ int liveObjectCount() {
 
 TEST_F(WaterRobustness, BadDescriptionsFailWithNothingAllocated) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<std::pair<const char*, std::function<void(water::OceanDesc&)>>> cases = {
-      {"zero resolution", [](water::OceanDesc& d) { d.resolution = 0; }},
-      {"non power of two", [](water::OceanDesc& d) { d.resolution = 96; }},
-      {"above 512", [](water::OceanDesc& d) { d.resolution = 1024; }},
-      {"negative wind", [](water::OceanDesc& d) { d.windSpeed = -3.0; }},
-      {"NaN wind", [nan](water::OceanDesc& d) { d.windSpeed = nan; }},
-      {"NaN direction", [nan](water::OceanDesc& d) { d.windDirection = nan; }},
-      {"no cascades", [](water::OceanDesc& d) { d.cascadeCount = 0; }},
-      {"growing tiles", [](water::OceanDesc& d) { d.tileSize[1] = 300.0; }},
-  };
+  const std::vector<std::pair<const char*, std::function<void(postfx::water::OceanDesc&)>>> cases =
+      {
+          {"zero resolution", [](postfx::water::OceanDesc& d) { d.resolution = 0; }},
+          {"non power of two", [](postfx::water::OceanDesc& d) { d.resolution = 96; }},
+          {"above 512", [](postfx::water::OceanDesc& d) { d.resolution = 1024; }},
+          {"negative wind", [](postfx::water::OceanDesc& d) { d.windSpeed = -3.0; }},
+          {"NaN wind", [nan](postfx::water::OceanDesc& d) { d.windSpeed = nan; }},
+          {"NaN direction", [nan](postfx::water::OceanDesc& d) { d.windDirection = nan; }},
+          {"no cascades", [](postfx::water::OceanDesc& d) { d.cascadeCount = 0; }},
+          {"growing tiles", [](postfx::water::OceanDesc& d) { d.tileSize[1] = 300.0; }},
+      };
   const int before = liveObjectCount();
   for (const auto& [name, edit] : cases) {
-    water::OceanDesc desc = watertest::smallDesc();
+    postfx::water::OceanDesc desc = watertest::smallDesc();
     edit(desc);
-    std::unique_ptr<water::Ocean> ocean;
+    std::unique_ptr<postfx::water::Ocean> ocean;
     std::string error;
-    EXPECT_EQ(water::Ocean::create(desc, ocean, error), water::Result::InvalidArgument) << name;
+    EXPECT_EQ(postfx::water::Ocean::create(desc, ocean, error),
+              postfx::water::Result::InvalidArgument)
+        << name;
     EXPECT_FALSE(ocean) << name;
     EXPECT_FALSE(error.empty()) << name;
   }
@@ -49,12 +52,12 @@ TEST_F(WaterRobustness, BadDescriptionsFailWithNothingAllocated) {
 }
 
 TEST_F(WaterRobustness, CalmSeaIsFlat) {
-  water::OceanDesc desc = watertest::smallDesc();
+  postfx::water::OceanDesc desc = watertest::smallDesc();
   desc.windSpeed = 0.0;
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  ASSERT_EQ(water::Ocean::create(desc, ocean, error), water::Result::Ok) << error;
-  ASSERT_EQ(ocean->update(12.0), water::Result::Ok);
+  ASSERT_EQ(postfx::water::Ocean::create(desc, ocean, error), postfx::water::Result::Ok) << error;
+  ASSERT_EQ(ocean->update(12.0), postfx::water::Result::Ok);
   for (const glm::vec4& texel : watertest::readSlope(*ocean)) {
     ASSERT_EQ(texel, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   }
@@ -64,16 +67,17 @@ TEST_F(WaterRobustness, CalmSeaIsFlat) {
 }
 
 TEST_F(WaterRobustness, NonFiniteTimeIsRefusedAndChangesNothing) {
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  ASSERT_EQ(water::Ocean::create(watertest::smallDesc(), ocean, error), water::Result::Ok);
-  ASSERT_EQ(ocean->update(5.0), water::Result::Ok);
+  ASSERT_EQ(postfx::water::Ocean::create(watertest::smallDesc(), ocean, error),
+            postfx::water::Result::Ok);
+  ASSERT_EQ(ocean->update(5.0), postfx::water::Result::Ok);
   const auto before = watertest::readSlope(*ocean);
   for (double time :
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
         -std::numeric_limits<double>::infinity()}) {
     error.clear();
-    EXPECT_EQ(ocean->update(time, error), water::Result::InvalidArgument);
+    EXPECT_EQ(ocean->update(time, error), postfx::water::Result::InvalidArgument);
     EXPECT_FALSE(error.empty());
   }
   const auto after = watertest::readSlope(*ocean);
@@ -82,17 +86,17 @@ TEST_F(WaterRobustness, NonFiniteTimeIsRefusedAndChangesNothing) {
 
 TEST_F(WaterRobustness, NoNaNAtExtremeButValidSettings) {
   for (double wind : {0.01, 60.0}) {
-    water::OceanDesc desc = watertest::smallDesc();
+    postfx::water::OceanDesc desc = watertest::smallDesc();
     desc.windSpeed = wind;
     desc.choppiness = 4.0;
     desc.spreading = 200.0;
     desc.depth = 2.0;
     desc.fetch = 1e7;
-    std::unique_ptr<water::Ocean> ocean;
+    std::unique_ptr<postfx::water::Ocean> ocean;
     std::string error;
-    ASSERT_EQ(water::Ocean::create(desc, ocean, error), water::Result::Ok) << error;
+    ASSERT_EQ(postfx::water::Ocean::create(desc, ocean, error), postfx::water::Result::Ok) << error;
     for (double time : {-1e9, -3.5, 0.0, 1e-9, 1e7, 1e12}) {
-      ASSERT_EQ(ocean->update(time), water::Result::Ok);
+      ASSERT_EQ(ocean->update(time), postfx::water::Result::Ok);
       EXPECT_TRUE(watertest::allFinite(watertest::readSlope(*ocean))) << wind << " " << time;
       EXPECT_TRUE(watertest::allFinite(watertest::readDisplacement(*ocean))) << wind << " " << time;
     }
@@ -100,20 +104,23 @@ TEST_F(WaterRobustness, NoNaNAtExtremeButValidSettings) {
 }
 
 TEST_F(WaterRobustness, SameDescriptionGivesBitIdenticalTextures) {
-  std::unique_ptr<water::Ocean> first, second;
+  std::unique_ptr<postfx::water::Ocean> first, second;
   std::string error;
-  ASSERT_EQ(water::Ocean::create(watertest::smallDesc(), first, error), water::Result::Ok);
-  ASSERT_EQ(water::Ocean::create(watertest::smallDesc(), second, error), water::Result::Ok);
-  ASSERT_EQ(first->update(33.0), water::Result::Ok);
-  ASSERT_EQ(second->update(33.0), water::Result::Ok);
+  ASSERT_EQ(postfx::water::Ocean::create(watertest::smallDesc(), first, error),
+            postfx::water::Result::Ok);
+  ASSERT_EQ(postfx::water::Ocean::create(watertest::smallDesc(), second, error),
+            postfx::water::Result::Ok);
+  ASSERT_EQ(first->update(33.0), postfx::water::Result::Ok);
+  ASSERT_EQ(second->update(33.0), postfx::water::Result::Ok);
   const auto a = watertest::readSlope(*first), b = watertest::readSlope(*second);
   EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)));
 }
 
 TEST_F(WaterRobustness, ReportsTheMemoryItHolds) {
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  ASSERT_EQ(water::Ocean::create(watertest::smallDesc(), ocean, error), water::Result::Ok);
+  ASSERT_EQ(postfx::water::Ocean::create(watertest::smallDesc(), ocean, error),
+            postfx::water::Result::Ok);
   // 64^2 x 3 cascades: spectrum 20 B, scratch 2 x 16 B, two RGBA16F chains of 8 B x 4/3.
   const size_t texels = 64 * 64 * 3;
   size_t chain = 0;
@@ -123,9 +130,10 @@ TEST_F(WaterRobustness, ReportsTheMemoryItHolds) {
 
 // update() binds a program, three image units and a storage buffer: all must come back.
 TEST_F(WaterRobustness, UpdateRestoresTheHostsGlState) {
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  ASSERT_EQ(water::Ocean::create(watertest::smallDesc(), ocean, error), water::Result::Ok);
+  ASSERT_EQ(postfx::water::Ocean::create(watertest::smallDesc(), ocean, error),
+            postfx::water::Result::Ok);
 
   GLuint hostTexture = 0, hostBuffer = 0, otherBuffer = 0;
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &hostTexture);
@@ -152,7 +160,7 @@ TEST_F(WaterRobustness, UpdateRestoresTheHostsGlState) {
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, hostBuffer, 256, 512);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, otherBuffer);
 
-  ASSERT_EQ(ocean->update(9.0), water::Result::Ok);
+  ASSERT_EQ(ocean->update(9.0), postfx::water::Result::Ok);
 
   GLint value = 0;
   glGetIntegerv(GL_CURRENT_PROGRAM, &value);

@@ -12,8 +12,8 @@
 namespace watertest {
 
 // A small sea for tests: 64^2, the default three cascades.
-inline water::OceanDesc smallDesc(int resolution = 64) {
-  water::OceanDesc desc;
+inline postfx::water::OceanDesc smallDesc(int resolution = 64) {
+  postfx::water::OceanDesc desc;
   desc.resolution = resolution;
   return desc;
 }
@@ -26,11 +26,11 @@ inline std::vector<glm::vec4> readLevel(GLuint texture, int level, int side, int
   return texels;
 }
 
-inline std::vector<glm::vec4> readSlope(const water::Ocean& ocean) {
+inline std::vector<glm::vec4> readSlope(const postfx::water::Ocean& ocean) {
   return readLevel(ocean.slopeTexture(), 0, ocean.resolution(), ocean.cascadeCount());
 }
 
-inline std::vector<glm::vec4> readDisplacement(const water::Ocean& ocean) {
+inline std::vector<glm::vec4> readDisplacement(const postfx::water::Ocean& ocean) {
   return readLevel(ocean.displacementTexture(), 0, ocean.resolution(), ocean.cascadeCount());
 }
 

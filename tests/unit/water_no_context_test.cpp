@@ -7,9 +7,10 @@
 
 TEST(WaterWithoutContext, CreateRefusesInsteadOfAborting) {
   ASSERT_FALSE(glkit::hasCurrentContext());
-  std::unique_ptr<water::Ocean> ocean;
+  std::unique_ptr<postfx::water::Ocean> ocean;
   std::string error;
-  EXPECT_EQ(water::Ocean::create(water::OceanDesc{}, ocean, error), water::Result::NoContext);
+  EXPECT_EQ(postfx::water::Ocean::create(postfx::water::OceanDesc{}, ocean, error),
+            postfx::water::Result::NoContext);
   EXPECT_EQ(ocean, nullptr);
   EXPECT_NE(error.find("context"), std::string::npos) << error;
 }

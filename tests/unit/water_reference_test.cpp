@@ -16,7 +16,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 TEST(WaterReference, FftMatchesPlainDft) {
   const int n = 32;
-  water::GaussianRandom random(7);
+  postfx::water::GaussianRandom random(7);
   std::vector<Complex> data(n);
   for (auto& value : data) {
     double re = 0.0, im = 0.0;
@@ -24,7 +24,7 @@ TEST(WaterReference, FftMatchesPlainDft) {
     value = {re, im};
   }
   std::vector<Complex> fast = data;
-  water::inverseFft(fast.data(), n, 1);
+  postfx::water::inverseFft(fast.data(), n, 1);
   for (int x = 0; x < n; ++x) {
     Complex sum;
     for (int k = 0; k < n; ++k) sum += data[k] * std::polar(1.0, kTwoPi * x * k / n);
@@ -35,17 +35,17 @@ TEST(WaterReference, FftMatchesPlainDft) {
 // Texel (i, j) must hold the sum of every wave at world ((i + 0.5), (j + 0.5)) * L / N, and that
 // sum must be real (the spectrum is Hermitian).
 TEST(WaterReference, FieldsEqualTheDirectSumOfWaves) {
-  water::OceanDesc desc;
+  postfx::water::OceanDesc desc;
   desc.resolution = 16;
   desc.cascadeCount = 2;
   desc.tileSize = {40.0, 7.3, 0.0, 0.0};
   desc.choppiness = 1.3;
   const double time = 123.456;
-  const auto spectrum = water::buildInitialSpectrum(desc);
+  const auto spectrum = postfx::water::buildInitialSpectrum(desc);
   const int n = desc.resolution;
   const double omegaStep = kTwoPi / desc.loopPeriod;
   for (int c = 0; c < desc.cascadeCount; ++c) {
-    const auto fields = water::evaluateReference(spectrum, desc, c, time);
+    const auto fields = postfx::water::evaluateReference(spectrum, desc, c, time);
     const double size = desc.tileSize[c], dk = kTwoPi / size;
     for (int j : {0, 5, 15}) {
       for (int i : {0, 3, 8}) {
@@ -57,8 +57,8 @@ TEST(WaterReference, FieldsEqualTheDirectSumOfWaves) {
         for (int m = 0; m < n; ++m) {
           for (int p = 0; p < n; ++p) {
             const size_t mode = spectrum.index(c, p, m);
-            const double kx = water::signedFrequency(p, n) * dk;
-            const double kz = water::signedFrequency(m, n) * dk;
+            const double kx = postfx::water::signedFrequency(p, n) * dk;
+            const double kz = postfx::water::signedFrequency(m, n) * dk;
             const double k = std::hypot(kx, kz);
             const double w = spectrum.cycles[mode] * omegaStep;
             const Complex amplitude = spectrum.a[mode] * std::polar(1.0, -w * time) +

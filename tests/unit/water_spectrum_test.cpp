@@ -14,14 +14,14 @@
 
 namespace {
 
-using water::OceanDesc;
-using water::Result;
+using postfx::water::OceanDesc;
+using postfx::water::Result;
 
 constexpr double kPi = std::numbers::pi;
 
 Result validate(const OceanDesc& desc) {
   std::string error;
-  const Result result = water::validateOceanDesc(desc, error);
+  const Result result = postfx::water::validateOceanDesc(desc, error);
   if (result != Result::Ok) {
     EXPECT_FALSE(error.empty());
   }
@@ -69,11 +69,11 @@ TEST(WaterDesc, RejectsNonFiniteAndOutOfRangeFields) {
 
 TEST(WaterSpectrum, JonswapPeaksAtTheFetchLimitedPeakFrequency) {
   OceanDesc desc;
-  const double peak =
-      22.0 * std::cbrt(water::kGravity * water::kGravity / (desc.windSpeed * desc.fetch));
+  const double peak = 22.0 * std::cbrt(postfx::water::kGravity * postfx::water::kGravity /
+                                       (desc.windSpeed * desc.fetch));
   double best = 0.0, bestOmega = 0.0;
   for (double omega = 0.1; omega < 5.0; omega += 1e-4) {
-    const double s = water::jonswap(omega, desc);
+    const double s = postfx::water::jonswap(omega, desc);
     ASSERT_TRUE(std::isfinite(s));
     if (s > best) best = s, bestOmega = omega;
   }
@@ -85,21 +85,22 @@ TEST(WaterSpectrum, SpreadingIntegratesToOne) {
     double sum = 0.0;
     const int steps = 200000;
     for (int i = 0; i < steps; ++i) {
-      sum += water::directionalSpreading(-kPi + (i + 0.5) * 2.0 * kPi / steps, s);
+      sum += postfx::water::directionalSpreading(-kPi + (i + 0.5) * 2.0 * kPi / steps, s);
     }
     EXPECT_NEAR(sum * 2.0 * kPi / steps, 1.0, 1e-6) << "s = " << s;
   }
 }
 
 TEST(WaterSpectrum, ShallowDispersionTendsToDeepWater) {
-  EXPECT_NEAR(water::dispersion(1.0, 1000.0), water::dispersion(1.0, 0.0), 1e-12);
+  EXPECT_NEAR(postfx::water::dispersion(1.0, 1000.0), postfx::water::dispersion(1.0, 0.0), 1e-12);
   // Shallow limit: omega = k sqrt(g d).
-  EXPECT_NEAR(water::dispersion(1e-3, 1.0), 1e-3 * std::sqrt(water::kGravity), 1e-8);
+  EXPECT_NEAR(postfx::water::dispersion(1e-3, 1.0), 1e-3 * std::sqrt(postfx::water::kGravity),
+              1e-8);
 }
 
 TEST(WaterSpectrum, CascadeBandsAreContiguousAndDisjoint) {
   OceanDesc desc;
-  const auto bands = water::cascadeBands(desc);
+  const auto bands = postfx::water::cascadeBands(desc);
   ASSERT_EQ(bands.size(), 3u);
   EXPECT_EQ(bands[0].kMin, 0.0);
   for (size_t c = 0; c + 1 < bands.size(); ++c) {
@@ -115,8 +116,8 @@ TEST(WaterSpectrum, CascadeBandsAreContiguousAndDisjoint) {
 TEST(WaterSpectrum, ModesStayInsideTheirBand) {
   OceanDesc desc;
   desc.resolution = 64;
-  const auto spectrum = water::buildInitialSpectrum(desc);
-  const auto bands = water::cascadeBands(desc);
+  const auto spectrum = postfx::water::buildInitialSpectrum(desc);
+  const auto bands = postfx::water::cascadeBands(desc);
   const int n = desc.resolution;
   for (int c = 0; c < desc.cascadeCount; ++c) {
     const double dk = 2.0 * kPi / desc.tileSize[c];
@@ -126,8 +127,8 @@ TEST(WaterSpectrum, ModesStayInsideTheirBand) {
         const size_t at = spectrum.index(c, i, m);
         if (spectrum.a[at] == std::complex<double>{}) continue;
         ++nonzero;
-        const double k =
-            std::hypot(water::signedFrequency(i, n) * dk, water::signedFrequency(m, n) * dk);
+        const double k = std::hypot(postfx::water::signedFrequency(i, n) * dk,
+                                    postfx::water::signedFrequency(m, n) * dk);
         EXPECT_GE(k, bands[c].kMin);
         EXPECT_LT(k, bands[c].kMax);
       }
@@ -139,17 +140,17 @@ TEST(WaterSpectrum, ModesStayInsideTheirBand) {
 TEST(WaterSpectrum, InitialSpectrumIsBitIdenticalAcrossBuilds) {
   OceanDesc desc;
   desc.resolution = 32;
-  const auto first = water::buildInitialSpectrum(desc);
-  const auto second = water::buildInitialSpectrum(desc);
+  const auto first = postfx::water::buildInitialSpectrum(desc);
+  const auto second = postfx::water::buildInitialSpectrum(desc);
   EXPECT_EQ(first.a, second.a);
   EXPECT_EQ(first.b, second.b);
   EXPECT_EQ(first.cycles, second.cycles);
   desc.seed += 1;
-  EXPECT_NE(water::buildInitialSpectrum(desc).a, first.a);
+  EXPECT_NE(postfx::water::buildInitialSpectrum(desc).a, first.a);
 }
 
 TEST(WaterSpectrum, RandomSourceIsStandardNormal) {
-  water::GaussianRandom random(42);
+  postfx::water::GaussianRandom random(42);
   double sum = 0.0, sum2 = 0.0;
   const int pairs = 200000;
   for (int i = 0; i < pairs; ++i) {
@@ -166,15 +167,15 @@ TEST(WaterSpectrum, RandomSourceIsStandardNormal) {
 TEST(WaterSpectrum, FrequenciesAreWholeCyclesPerLoop) {
   OceanDesc desc;
   desc.resolution = 16;
-  const auto spectrum = water::buildInitialSpectrum(desc);
+  const auto spectrum = postfx::water::buildInitialSpectrum(desc);
   const int n = desc.resolution;
   for (int c = 0; c < desc.cascadeCount; ++c) {
     const double dk = 2.0 * kPi / desc.tileSize[c];
     for (int m = 0; m < n; ++m) {
       for (int i = 0; i < n; ++i) {
-        const double k =
-            std::hypot(water::signedFrequency(i, n) * dk, water::signedFrequency(m, n) * dk);
-        const double exact = water::dispersion(k, 0.0) * desc.loopPeriod / (2.0 * kPi);
+        const double k = std::hypot(postfx::water::signedFrequency(i, n) * dk,
+                                    postfx::water::signedFrequency(m, n) * dk);
+        const double exact = postfx::water::dispersion(k, 0.0) * desc.loopPeriod / (2.0 * kPi);
         EXPECT_LE(std::abs(spectrum.cycles[spectrum.index(c, i, m)] - exact), 0.5);
       }
     }
@@ -183,25 +184,25 @@ TEST(WaterSpectrum, FrequenciesAreWholeCyclesPerLoop) {
 
 TEST(WaterSpectrum, LoopPhaseIsPeriodicAndExactFarFromZero) {
   const double period = 600.0;
-  EXPECT_EQ(water::loopPhase(0.0, period), 0u);
-  EXPECT_EQ(water::loopPhase(period, period), 0u);
-  EXPECT_EQ(water::loopPhase(150.0, period), 1u << 30);
-  EXPECT_EQ(water::loopPhase(-150.0, period), 3u << 30);
+  EXPECT_EQ(postfx::water::loopPhase(0.0, period), 0u);
+  EXPECT_EQ(postfx::water::loopPhase(period, period), 0u);
+  EXPECT_EQ(postfx::water::loopPhase(150.0, period), 1u << 30);
+  EXPECT_EQ(postfx::water::loopPhase(-150.0, period), 3u << 30);
   // 1e7 = 16666 * 600 + 400: the state at 1e7 s is exactly the one at 400 s.
-  EXPECT_EQ(water::loopPhase(1e7, period), water::loopPhase(400.0, period));
-  EXPECT_EQ(water::loopPhase(1e7 + 0.25, period), water::loopPhase(400.25, period));
+  EXPECT_EQ(postfx::water::loopPhase(1e7, period), postfx::water::loopPhase(400.0, period));
+  EXPECT_EQ(postfx::water::loopPhase(1e7 + 0.25, period), postfx::water::loopPhase(400.25, period));
 }
 
 TEST(WaterSpectrum, CalmSeaHasNoEnergyAndNoNaN) {
   OceanDesc desc;
   desc.windSpeed = 0.0;
   desc.resolution = 16;
-  const auto spectrum = water::buildInitialSpectrum(desc);
+  const auto spectrum = postfx::water::buildInitialSpectrum(desc);
   for (size_t i = 0; i < spectrum.a.size(); ++i) {
     ASSERT_EQ(spectrum.a[i], std::complex<double>{});
     ASSERT_EQ(spectrum.b[i], std::complex<double>{});
   }
-  EXPECT_EQ(water::discreteMeanSquareSlope(desc), 0.0);
+  EXPECT_EQ(postfx::water::discreteMeanSquareSlope(desc), 0.0);
 }
 
 // Physics: the cascaded grid reproduces the continuous spectrum's mean-square slope. The grid
@@ -212,8 +213,8 @@ TEST(WaterSpectrum, GridReproducesTheContinuousMeanSquareSlope) {
     OceanDesc desc;
     desc.resolution = 128;
     desc.windSpeed = wind;
-    const double discrete = water::discreteMeanSquareSlope(desc);
-    const double integral = water::integratedMeanSquareSlope(desc);
+    const double discrete = postfx::water::discreteMeanSquareSlope(desc);
+    const double integral = postfx::water::integratedMeanSquareSlope(desc);
     std::cout << "wind " << wind << " m/s: mean-square slope grid " << discrete << ", integral "
               << integral << ", ratio " << discrete / integral << "\n";
     EXPECT_NEAR(discrete / integral, 1.0, 0.03) << "wind " << wind;
@@ -225,9 +226,9 @@ TEST(WaterSpectrum, GridReproducesTheContinuousMeanSquareSlope) {
 // The per-cascade statistics the caustics use to leave out waves that cannot focus: checked
 // against an independent integral of the continuous spectrum over each cascade's band.
 TEST(WaterSpectrum, CascadeWaveStatsMatchTheSpectrumIntegrals) {
-  const water::OceanDesc desc;
-  const std::vector<water::CascadeBand> bands = water::cascadeBands(desc);
-  const std::vector<water::CascadeWaveStats> stats = water::cascadeWaveStats(desc);
+  const postfx::water::OceanDesc desc;
+  const std::vector<postfx::water::CascadeBand> bands = postfx::water::cascadeBands(desc);
+  const std::vector<postfx::water::CascadeWaveStats> stats = postfx::water::cascadeWaveStats(desc);
   ASSERT_EQ(stats.size(), bands.size());
   for (size_t c = 0; c < stats.size(); ++c) {
     // Simpson in log k of k^p S_iso(k) k dk over the band, S_iso = S(omega) omega' / k.
@@ -238,8 +239,9 @@ TEST(WaterSpectrum, CascadeWaveStatsMatchTheSpectrumIntegrals) {
       double sum = 0.0;
       for (int i = 0; i <= steps; ++i) {
         const double k = std::exp(lo + i * h);
-        const double f = std::pow(k, power) * water::jonswap(water::dispersion(k, 0.0), desc) *
-                         water::dispersionDerivative(k, 0.0) * k;
+        const double f = std::pow(k, power) *
+                         postfx::water::jonswap(postfx::water::dispersion(k, 0.0), desc) *
+                         postfx::water::dispersionDerivative(k, 0.0) * k;
         sum += (i == 0 || i == steps ? 1.0 : (i % 2 ? 4.0 : 2.0)) * f;
       }
       return sum * h / 3.0;
@@ -261,9 +263,9 @@ TEST(WaterSpectrum, CascadeWaveStatsMatchTheSpectrumIntegrals) {
       EXPECT_GT(stats[c].rmsLaplacian, stats[c - 1].rmsLaplacian);
     }
   }
-  water::OceanDesc calm;
+  postfx::water::OceanDesc calm;
   calm.windSpeed = 0.0;
-  for (const water::CascadeWaveStats& s : water::cascadeWaveStats(calm)) {
+  for (const postfx::water::CascadeWaveStats& s : postfx::water::cascadeWaveStats(calm)) {
     EXPECT_EQ(s.rmsSlope, 0.0);
     EXPECT_EQ(s.rmsLaplacian, 0.0);
   }

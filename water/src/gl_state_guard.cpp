@@ -2,7 +2,7 @@
 
 #include "shader_interface.h"
 
-namespace water::detail {
+namespace postfx::water::detail {
 
 static_assert(WATER_IMAGE_UNIT_COUNT == 3, "GlStateGuard saves exactly the units update() binds");
 
@@ -34,4 +34,4 @@ GlStateGuard::~GlStateGuard() {
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageGeneric_));
 }
 
-}  // namespace water::detail
+}  // namespace postfx::water::detail

@@ -6,7 +6,7 @@
 
 #include <glkit/buffer_binding.h>
 
-namespace water::detail {
+namespace postfx::water::detail {
 
 class GlStateGuard {
  public:
@@ -25,4 +25,4 @@ class GlStateGuard {
   glkit::IndexedBufferBinding storage_;
 };
 
-}  // namespace water::detail
+}  // namespace postfx::water::detail

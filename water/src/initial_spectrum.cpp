@@ -6,7 +6,7 @@
 #include <postfx/water/random.h>
 #include <postfx/water/spectrum.h>
 
-namespace water {
+namespace postfx::water {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
@@ -81,4 +81,4 @@ uint32_t loopPhase(double timeSeconds, double loopPeriod) {
   return static_cast<uint32_t>(units & 0xFFFFFFFFull);
 }
 
-}  // namespace water
+}  // namespace postfx::water

@@ -14,7 +14,7 @@
 #include "gl_state_guard.h"
 #include "shader_interface.h"
 
-namespace water {
+namespace postfx::water {
 namespace {
 
 using namespace detail;
@@ -168,7 +168,7 @@ Result Ocean::update(double timeSeconds, std::string& error) {
   const int cascades = desc_.cascadeCount;
 
   GlStateGuard guard;
-  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "water::Ocean::update");
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "postfx::water::Ocean::update");
 
   float waveSteps[kMaxCascades] = {};
   for (int c = 0; c < cascades; ++c) {
@@ -203,4 +203,4 @@ Result Ocean::update(double timeSeconds, std::string& error) {
   return Result::Ok;
 }
 
-}  // namespace water
+}  // namespace postfx::water

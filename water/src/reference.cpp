@@ -5,7 +5,7 @@
 #include <numbers>
 #include <utility>
 
-namespace water {
+namespace postfx::water {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
@@ -96,4 +96,4 @@ SurfaceFields evaluateReference(const InitialSpectrum& spectrum, const OceanDesc
   return fields;
 }
 
-}  // namespace water
+}  // namespace postfx::water

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace water {
+namespace postfx::water {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -144,4 +144,4 @@ double integratedMeanSquareSlope(const OceanDesc& desc) {
   return sum * h / 3.0;
 }
 
-}  // namespace water
+}  // namespace postfx::water

@@ -2,7 +2,7 @@
 
 #include <postfx/water/ocean_desc.h>
 
-namespace water {
+namespace postfx::water {
 namespace {
 
 // !(x >= lo && x <= hi) is also true for NaN.
@@ -53,4 +53,4 @@ Result validateOceanDesc(const OceanDesc& desc, std::string& error) {
   return Result::Ok;
 }
 
-}  // namespace water
+}  // namespace postfx::water

@@ -66,8 +66,8 @@ struct WaterSurface {
   TextureRef texture;
   int cascadeCount = 1;                                    // [1, kMaxCascades], <= layer count
   double tileSize[kMaxCascades] = {64.0, 16.0, 4.0, 1.0};  // metres per tile, > 0
-  // Optional statistics of each cascade's waves (water::Ocean::waveStats gives them). They let
-  // a pixel leave out the cascades it cannot see (CausticsSettings::minCascadeContrast):
+  // Optional statistics of each cascade's waves (postfx::water::Ocean::waveStats gives them). They
+  // let a pixel leave out the cascades it cannot see (CausticsSettings::minCascadeContrast):
   //  - rmsLaplacian (1/m): RMS of the Laplacian of the cascade's height. To first order its
   //    waves modulate the irradiance at path length L below the surface by L*(1-1/n)*rmsLaplacian:
   //    long, gentle waves only tilt the light at shallow depth, they cannot focus it there.

@@ -7,7 +7,7 @@
 
 #include <postfx/water/ocean_desc.h>
 
-namespace water {
+namespace postfx::water {
 
 // Mode (n, m) of cascade c, stored at index (c * N + m) * N + n, is the wave vector
 // k = 2 pi / L_c * (n', m') with n' = n for n < N/2 and n - N otherwise (FFT order).
@@ -41,4 +41,4 @@ inline int signedFrequency(int n, int resolution) {
 // GPU too. Requires a finite time.
 uint32_t loopPhase(double timeSeconds, double loopPeriod);
 
-}  // namespace water
+}  // namespace postfx::water

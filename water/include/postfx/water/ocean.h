@@ -25,7 +25,7 @@
 #include <postfx/water/result.h>
 #include <postfx/water/spectrum.h>
 
-namespace water {
+namespace postfx::water {
 
 class Ocean {
  public:
@@ -69,4 +69,4 @@ class Ocean {
   size_t gpuBytes_ = 0;
 };
 
-}  // namespace water
+}  // namespace postfx::water

@@ -7,7 +7,7 @@
 
 #include <postfx/water/result.h>
 
-namespace water {
+namespace postfx::water {
 
 inline constexpr int kMaxCascades = 4;
 inline constexpr int kMaxResolution = 512;
@@ -48,4 +48,4 @@ struct OceanDesc {
 // naming the field. Does not consult GL (Ocean::create checks the driver's limits).
 Result validateOceanDesc(const OceanDesc& desc, std::string& error);
 
-}  // namespace water
+}  // namespace postfx::water

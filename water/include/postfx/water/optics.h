@@ -2,7 +2,7 @@
 // Optical properties of the water body, as the caustics and god-ray passes need them. A plain
 // struct the host fills and hands to whichever pass consumes it; the Ocean does not use it.
 
-namespace water {
+namespace postfx::water {
 
 struct Rgb {
   double r, g, b;
@@ -24,4 +24,4 @@ struct Optics {
   double phaseAsymmetry = 0.9;
 };
 
-}  // namespace water
+}  // namespace postfx::water

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <numbers>
 
-namespace water {
+namespace postfx::water {
 
 class GaussianRandom {
  public:
@@ -33,4 +33,4 @@ class GaussianRandom {
   uint64_t state_;
 };
 
-}  // namespace water
+}  // namespace postfx::water

@@ -8,7 +8,7 @@
 
 #include <postfx/water/initial_spectrum.h>
 
-namespace water {
+namespace postfx::water {
 
 // One cascade's fields, texel (i, j) at index j * N + i, laid out exactly like the textures:
 // slope = (dh/dx, dh/dz, h, J), displacement = (Dx, h, Dz, 0).
@@ -24,4 +24,4 @@ SurfaceFields evaluateReference(const InitialSpectrum& spectrum, const OceanDesc
 // n k / N} (no normalisation, the surface is a plain sum of its modes).
 void inverseFft(std::complex<double>* data, int count, int stride);
 
-}  // namespace water
+}  // namespace postfx::water

@@ -2,7 +2,7 @@
 // Error reporting for the water module: a code the host can branch on plus a message it can
 // show. Nothing in this module prints, throws across its API or aborts.
 
-namespace water {
+namespace postfx::water {
 
 enum class Result {
   Ok,
@@ -31,4 +31,4 @@ inline const char* toString(Result result) {
   return "Unknown";
 }
 
-}  // namespace water
+}  // namespace postfx::water

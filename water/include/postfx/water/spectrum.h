@@ -5,7 +5,7 @@
 
 #include <postfx/water/ocean_desc.h>
 
-namespace water {
+namespace postfx::water {
 
 // Angular frequency (rad/s) of a wave of wavenumber k (rad/m): sqrt(g k tanh(k d)), deep water
 // (sqrt(g k)) when depth <= 0.
@@ -53,4 +53,4 @@ struct CascadeWaveStats {
 // One entry per cascade, summed over the same discrete modes the FFT holds.
 std::vector<CascadeWaveStats> cascadeWaveStats(const OceanDesc& desc);
 
-}  // namespace water
+}  // namespace postfx::water
