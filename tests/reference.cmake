@@ -23,3 +23,8 @@ postfx_add_test(postfx_slope_lookup_tests GL
 postfx_add_test(report_sloped_plane_tests
   SOURCES unit/report_sloped_plane_test.cpp
   LIBS ocean_report)
+
+# The ray-deviation caustics' pattern is no more streaked along the sun than traced light.
+postfx_add_test(postfx_streak_tests GL
+  SOURCES gl/postfx_streak_test.cpp
+  LIBS ocean_report water glm::glm postfx::epoxy)

@@ -11,6 +11,7 @@
 #include "error_metrics.h"
 #include "flat_gbuffer.h"
 #include "pass_runner.h"
+#include "streak_ratio.h"
 
 namespace ocean::report {
 namespace {
@@ -24,72 +25,104 @@ double refractedCosine(const glm::dvec3& towardSun, double ior) {
 
 }  // namespace
 
-bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSettings& settings,
-                     std::vector<Row>& rows, std::string& note, std::string& error) {
+FlatSeabedComparison::FlatSeabedComparison() = default;
+FlatSeabedComparison::~FlatSeabedComparison() = default;
+
+bool FlatSeabedComparison::prepare(const postfx::FrameDesc& hostFrame,
+                                   const CausticReportSettings& settings, std::string& error) {
+  settings_ = settings;
   const int w = settings.width, h = settings.height, bin = settings.binPixels;
   const double height = settings.receiverDepth - settings.cameraDepth;  // camera to floor (m)
   const PlaneView topDown = topDownView(w, h, height);
   const double aspect = topDown.aspect, f = topDown.focal;
 
-  postfx::FrameDesc frame = hostFrame;
-  const double level = frame.water.level;
+  frame_ = hostFrame;
+  const double level = frame_.water.level;
   const glm::dvec3 camera(hostFrame.camera.position.x, level - settings.cameraDepth,
                           hostFrame.camera.position.z);
-  PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
-  ReportTarget target(w, h);
-  frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
-  frame.normal = {gbuffer.normal(), GL_RGBA16F};
-  frame.albedo = {gbuffer.albedo(), GL_RGBA8};
-  frame.camera.position = camera;
-  frame.camera.view = glm::mat4(topDown.view);
-  frame.camera.projection = topDown.projection;
-  frame.caustics = postfx::CausticsSettings{};
-  frame.caustics.surfaceFadeDepth = 0.0f;  // the reference has no fade
-  frame.godRays.enabled = false;
-  frame.objectCaustics = {};
+  gbuffer_ = std::make_unique<PlaneGbuffer>(w, h, topDown.windowDepth);
+  target_ = std::make_unique<ReportTarget>(w, h);
+  frame_.depth = {gbuffer_->depth(), GL_DEPTH_COMPONENT32F};
+  frame_.normal = {gbuffer_->normal(), GL_RGBA16F};
+  frame_.albedo = {gbuffer_->albedo(), GL_RGBA8};
+  frame_.camera.position = camera;
+  frame_.camera.view = glm::mat4(topDown.view);
+  frame_.camera.projection = topDown.projection;
+  frame_.godRays.enabled = false;
+  frame_.objectCaustics = {};
 
   // Bins: blocks of bin x bin pixels; pixel (i, j) sees world x = camera.x + (2(i+.5)/w - 1)
   // * height * aspect / f and z = camera.z - (2(j+.5)/h - 1) * height / f.
   const double pixelX = 2.0 * height * aspect / f / w, pixelZ = 2.0 * height / f / h;
-  ocean::reference::ReferenceDesc desc;
-  desc.towardSun = glm::normalize(hostFrame.sun.direction);
-  desc.ior = hostFrame.water.ior;
-  desc.bins.origin = {camera.x - 0.5 * w * pixelX, camera.z - 0.5 * h * pixelZ};
-  desc.bins.binSize = bin * pixelX;
-  desc.bins.binSizeZ = bin * pixelZ;
-  desc.bins.countX = w / bin;
-  desc.bins.countZ = h / bin;
-  desc.receivers = {ocean::reference::Receiver::flat(settings.receiverDepth)};
-  desc.targetRelativeError = settings.referenceError;
-  desc.label = "report: seabed reference";
+  desc_ = {};
+  desc_.towardSun = glm::normalize(hostFrame.sun.direction);
+  desc_.ior = hostFrame.water.ior;
+  desc_.bins.origin = {camera.x - 0.5 * w * pixelX, camera.z - 0.5 * h * pixelZ};
+  desc_.bins.binSize = bin * pixelX;
+  desc_.bins.binSizeZ = bin * pixelZ;
+  desc_.bins.countX = w / bin;
+  desc_.bins.countZ = h / bin;
+  desc_.receivers = {ocean::reference::Receiver::flat(settings.receiverDepth)};
+  desc_.targetRelativeError = settings.referenceError;
+  desc_.label = "report: seabed reference";
   ocean::reference::WaterTextureSurface surface;
   if (!surface.read(hostFrame.water, error)) return false;
   // The reference sees world coordinates; the water origin is part of the surface.
-  const ocean::reference::ReferenceResult reference =
-      ocean::reference::traceSeabedCaustics(surface, desc);
-  const std::vector<double>& truth = reference.receivers[0].irradiance;
-  char text[320];
+  reference_ = ocean::reference::traceSeabedCaustics(surface, desc_);
+  cosine_ = refractedCosine(desc_.towardSun, desc_.ior);
+  return true;
+}
+
+// Pixel (i, j) -> bin (i / bin, (h - 1 - j) / bin): z grows toward the image's bottom row.
+std::vector<double> FlatSeabedComparison::binRaw(const std::vector<float>& raw) const {
+  const int w = settings_.width, h = settings_.height, bin = settings_.binPixels;
+  std::vector<double> sum(truth().size(), 0.0);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      sum[size_t(((h - 1 - j) / bin) * desc_.bins.countX + i / bin)] +=
+          double(raw[size_t(j * w + i)]) / cosine_;
+  for (double& s : sum) s /= double(bin * bin);
+  return sum;
+}
+
+bool FlatSeabedComparison::run(postfx::CreateDesc create, const postfx::CausticsSettings& caustics,
+                               int timedFrames, PassRun& out, std::vector<double>& binned,
+                               std::string& error) const {
+  create.features = create.features | postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+  create.depthConvention = 0;
+  create.normalEncoding = 1;
+  postfx::FrameDesc frame = frame_;
+  frame.caustics = caustics;
+  frame.caustics.surfaceFadeDepth = 0.0f;  // the reference has no fade
+  if (!runPass(create, frame, "caustics", *target_, timedFrames, out, error)) return false;
+  binned = binRaw(out.raw);
+  return true;
+}
+
+double FlatSeabedComparison::streakRatio(const std::vector<double>& binned) const {
+  return ocean::report::streakRatio(binned, desc_.bins.countX, desc_.bins.countZ,
+                                    desc_.bins.binSize, desc_.bins.binSizeZ, desc_.towardSun);
+}
+
+bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSettings& settings,
+                     std::vector<Row>& rows, std::string& note, std::string& error) {
+  FlatSeabedComparison seabed;
+  if (!seabed.prepare(hostFrame, settings, error)) return false;
+  const ocean::reference::ReferenceResult& reference = seabed.reference();
+  const ocean::reference::ReferenceDesc& desc = seabed.desc();
+  const std::vector<double>& truth = seabed.truth();
+  const double truthStreaks = seabed.streakRatio(truth);
+  char text[400];
   std::snprintf(text, sizeof(text),
                 "Caustics: flat seabed %.1f m below the level seen from above, %d x %d bins of "
                 "%.2f x %.2f m; reference: %.3g rays traced through the GPU's water texture "
-                "(level 0) in double, median per-bin error %.2g%s.",
+                "(level 0) in double, median per-bin error %.2g%s; its streak ratio (gradient "
+                "energy across / along the sun's azimuth) %.2f.",
                 settings.receiverDepth, desc.bins.countX, desc.bins.countZ, desc.bins.binSize,
                 desc.bins.binSizeZ, double(reference.rays),
                 reference.receivers[0].medianRelativeError,
-                reference.converged ? "" : " (ray cap reached)");
+                reference.converged ? "" : " (ray cap reached)", truthStreaks);
   note = text;
-
-  const double cosine = refractedCosine(desc.towardSun, desc.ior);
-  // Pixel (i, j) -> bin (i / bin, (h - 1 - j) / bin): z grows toward the image's bottom row.
-  auto binned = [&](const std::vector<float>& raw) {
-    std::vector<double> sum(truth.size(), 0.0);
-    for (int j = 0; j < h; ++j)
-      for (int i = 0; i < w; ++i)
-        sum[size_t(((h - 1 - j) / bin) * desc.bins.countX + i / bin)] +=
-            double(raw[size_t(j * w + i)]) / cosine;
-    for (double& s : sum) s /= double(bin * bin);
-    return sum;
-  };
 
   struct Variant {
     std::string method, setting;
@@ -99,30 +132,29 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
   std::vector<Variant> variants;
   for (float reflection : {0.0f, 0.25f}) {
     for (float tau : {100.0f, 400.0f, 800.0f, 3200.0f}) {
-      Variant v{reflection > 0.0f ? "seed 002, reflection 0.25" : "seed 002, refraction only",
-                "tau " + std::to_string(int(tau)), frame.caustics, false};
+      Variant v{
+          reflection > 0.0f ? "ray deviation, reflection 0.25" : "ray deviation, refraction only",
+          "tau " + std::to_string(int(tau)), postfx::CausticsSettings{}, false};
       v.caustics.tau = tau;
       v.caustics.reflectionWeight = reflection;
       variants.push_back(v);
     }
   }
   for (float cut : {0.0f, 0.3f}) {
-    Variant v{"seed 002, cascade cut-off", "cut " + std::to_string(cut).substr(0, 3) + " tau 800",
-              frame.caustics, false};
+    Variant v{"ray deviation, cascade cut-off",
+              "cut " + std::to_string(cut).substr(0, 3) + " tau 800", postfx::CausticsSettings{},
+              false};
     v.caustics.minCascadeContrast = cut;
     variants.push_back(v);
   }
   for (int grid : settings.physicalGrids) {
-    Variant v{"physical (wavefront area ratio)", "grid " + std::to_string(grid), frame.caustics,
-              true};
+    Variant v{"physical (wavefront area ratio)", "grid " + std::to_string(grid),
+              postfx::CausticsSettings{}, true};
     v.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
     v.caustics.gridResolution = grid;
     variants.push_back(v);
   }
 
-  postfx::CreateDesc create;
-  create.depthConvention = 0;
-  create.normalEncoding = 1;
   const std::vector<double> uniform(truth.size(), 1.0);
   const ErrorStats flat = compareWithReference(uniform, truth);
   Row flatRow;
@@ -136,11 +168,11 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     const Variant& v = variants[k];
     std::fprintf(stderr, "report: caustics %s, %s (%zu/%zu)\n", v.method.c_str(), v.setting.c_str(),
                  k + 1, variants.size());
-    create.features = postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
-    if (v.physical) create.features = create.features | postfx::Feature::PhysicalCaustics;
-    frame.caustics = v.caustics;
+    postfx::CreateDesc create;
+    create.features = v.physical ? postfx::Feature::PhysicalCaustics : postfx::Feature::None;
     PassRun run;
-    if (!runPass(create, frame, "caustics", target, settings.timedFrames, run, error)) return false;
+    std::vector<double> binned;
+    if (!seabed.run(create, v.caustics, settings.timedFrames, run, binned, error)) return false;
     Row row;
     row.pass = "caustics";
     row.method = v.method;
@@ -152,10 +184,14 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
       const double irradianceMs = run.medianMsByPass["caustics_irradiance"];
       row.medianMs += irradianceMs;
       char cost[96];
-      std::snprintf(cost, sizeof(cost), "incl. irradiance pass %.2f ms", irradianceMs);
+      std::snprintf(cost, sizeof(cost), "incl. irradiance pass %.2f ms; ", irradianceMs);
       row.note = cost;
     }
-    const ErrorStats stats = compareWithReference(binned(run.raw), truth);
+    char streaks[96];
+    std::snprintf(streaks, sizeof(streaks), "streak ratio %.2f (traced %.2f)",
+                  seabed.streakRatio(binned), truthStreaks);
+    row.note += streaks;
+    const ErrorStats stats = compareWithReference(binned, truth);
     if (v.physical) {
       row.relativeRmse = stats.relativeRmse;
     } else {

@@ -28,7 +28,7 @@ std::string usage() {
 usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
                       [--out FILE] [--no-caustics] [--no-god-rays] [--no-object-caustics]
-                      [--tau T] [--water-resolution N] [--caustics-model seed002|physical]
+                      [--tau T] [--water-resolution N] [--caustics-model ray-deviation|physical]
                       [--caustics-grid N] [--god-rays-resolution full|half|quarter]
                       [--triplanar-walls]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
@@ -51,7 +51,8 @@ usage:
 
   ocean_sample --help
 
-caustics models: seed002 (default; exp(-tau a^2), one lookup per pixel) or physical (true
+caustics models: ray-deviation (default; exp(-tau a^2), a the refracted ray's deviation from
+flat water, one lookup per cascade and pixel; "seed002" is its former name) or physical (true
 irradiance from the wavefront area ratio, seed 004; --caustics-grid 64..1024, default 256).
 Every surface looks the water up where its light entered, along the refracted sun; with
 --triplanar-walls steep surfaces blend in seed 002's world-axis projections instead.
@@ -140,8 +141,9 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
         return false;
       }
     } else if (flag == "--caustics-model") {
-      if (value != "seed002" && value != "physical") {
-        error = "--caustics-model must be seed002 or physical, got '" + std::string(value) + "'";
+      if (value != "ray-deviation" && value != "seed002" && value != "physical") {
+        error =
+            "--caustics-model must be ray-deviation or physical, got '" + std::string(value) + "'";
         return false;
       }
       options.physicalCaustics = value == "physical";

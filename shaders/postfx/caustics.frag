@@ -104,7 +104,7 @@ void main() {
   float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
 
   float tau = u.towardSun.w;
-  float reflectionWeight = u.reference.w;
+  float reflectionWeight = u.reflection.x;
   float physicalWeight = 0.0;
 #if POSTFX_PHYSICAL
   // One irradiance for all channels: the mesh is refracted with the mean IOR.
@@ -116,10 +116,10 @@ void main() {
       physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
 #if POSTFX_DISPERSION
-  vec3 omega = causticFactorRgb(u.towardSun.xyz, waterNormal, u.eta.rgb, u.reference.xyz, tau,
+  vec3 omega = causticFactorRgb(u.towardSun.xyz, waterNormal, u.eta.rgb, tau,
                                 reflectionWeight);
 #else
-  vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.reference.xyz, tau,
+  vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, tau,
                                   reflectionWeight));
 #endif
 #if POSTFX_PHYSICAL

@@ -1,5 +1,5 @@
-// Caustic math of seed 002 section 4 and the attenuation around it, shared by C++ and GLSL:
-// the shader runs these bodies, and the tests evaluate the very same ones on the CPU.
+// Caustic math of seed 002 section 4 (ray deviation) and the attenuation around it, shared by C++
+// and GLSL: the shader runs these bodies, and the tests evaluate the very same ones on the CPU.
 #ifndef POSTFX_SHARED_CAUSTICS_H
 #define POSTFX_SHARED_CAUSTICS_H
 #include "shared/common.h"
@@ -22,54 +22,64 @@ SHARED_FN vec3 waterNormalFromSlopes(vec2 slopes) {
   return normalize(vec3(-s.x, 1.0f, -s.y));
 }
 
-// Eq. (1): omega = exp(-tau * a^2), a the cosine between a ray and the reference vector that is
-// perpendicular to the unperturbed ray (a = 0 where the surface is flat, so flat water gives 1).
-SHARED_FN float causticOmegaOfCosine(float a, float tau) {
-  float c = clamp(a, -1.0f, 1.0f);
-  return exp(-tau * (c * c));
+// Eq. (1): omega = exp(-tau * a^2). The seed takes a as the cosine between the ray and one
+// reference vector perpendicular to the unperturbed ray, i.e. the deviation across the plane of
+// incidence only, so its pattern is streaked along the sun's azimuth (gradient energy across /
+// along 3.8-4.0 with the sun near the zenith, against 1.1-1.25 in traced light). Here a is the
+// sine of the angle between the ray and its flat-water ray, the whole deviation: isotropic for a
+// high sun, and still a = 0 (omega = 1) where the water is flat. From the difference d of the two
+// unit rays, |d|^2 = 2 - 2 cos, so sin^2 = |d|^2 (1 - |d|^2 / 4): exact to the rounding of d
+// even for the faintest ripple, where 1 - cos^2 would cancel (1e-7 of a^2, 0.1 of omega at
+// tau 1e6).
+SHARED_FN float causticOmegaOfDeviation(vec3 ray, vec3 unperturbed, float tau) {
+  vec3 d = ray - unperturbed;
+  float dd = dot(d, d);
+  return exp(-tau * clamp(dd * (1.0f - 0.25f * dd), 0.0f, 1.0f));
 }
 
-SHARED_FN float causticOmega(vec3 ray, vec3 reference, float tau) {
-  return causticOmegaOfCosine(dot(ray, reference), tau);
+// The sun refracted by flat water (normal +y): the unperturbed ray of eta = 1 / IOR.
+SHARED_FN vec3 flatRefracted(vec3 incident, float eta) {
+  float k = max(1.0f - eta * eta * (1.0f - incident.y * incident.y), 0.0f);
+  return vec3(eta * incident.x, -sqrt(k), eta * incident.z);
 }
 
-// The cosines a of eq. (1) need no refracted or reflected vector, only the three dot products
-// they are made of. With I the incident sun, N the water normal, r the reference, c = N.I and
-// k = 1 - eta^2 (1 - c^2), GLSL's refract() is eta I - (eta c + sqrt(k)) N (0 when k < 0) and
-// reflect() is I - 2 c N, so
-//   r.refract = eta (I.r) - (eta c + sqrt(k)) (N.r),   r.reflect = I.r - 2 c (N.r).
-// The same model to rounding, at a fraction of the arithmetic (it runs per god-ray sample).
-SHARED_FN float refractedCosine(float eta, float c, float incidentDotRef, float normalDotRef) {
+// omega of the sun refracted with eta through the water normal (c = N.I). GLSL's refract() is
+// eta I - (eta c + sqrt(k)) N with k = 1 - eta^2 (1 - c^2); k < 0 is total internal reflection
+// (eta > 1 only): nothing is transmitted, a^2 = 1.
+SHARED_FN float refractedOmega(vec3 incident, vec3 waterNormal, float c, float eta, float tau) {
   float k = 1.0f - eta * eta * (1.0f - c * c);
-  return k < 0.0f ? 0.0f : eta * incidentDotRef - (eta * c + sqrt(k)) * normalDotRef;
+  vec3 refracted = eta * incident - (eta * c + sqrt(max(k, 0.0f))) * waterNormal;
+  float omega = causticOmegaOfDeviation(refracted, flatRefracted(incident, eta), tau);
+  return k < 0.0f ? exp(-tau) : omega;
 }
 
-// The seed's caustic factor for one wavelength: the sun ray refracted (eta = 1 / IOR) and
-// reflected by the local water normal, each turned into omega, blended by reflectionWeight.
-// `reference` is perpendicular to the plane of incidence, hence to both unperturbed rays.
-SHARED_FN float causticFactor(vec3 towardSun, vec3 waterNormal, float eta, vec3 reference,
-                              float tau, float reflectionWeight) {
+// omega of the sun reflected by the water normal, I - 2 c N, against its flat-water reflection.
+SHARED_FN float reflectedOmega(vec3 incident, vec3 waterNormal, float c, float tau) {
+  return causticOmegaOfDeviation(incident - 2.0f * c * waterNormal,
+                                 vec3(incident.x, -incident.y, incident.z), tau);
+}
+
+// The ray-deviation caustic factor for one wavelength (seed 002 with the full deviation): the
+// sun ray refracted (eta = 1 / IOR) and reflected by the local water normal, each turned into
+// omega, blended by reflectionWeight.
+SHARED_FN float causticFactor(vec3 towardSun, vec3 waterNormal, float eta, float tau,
+                              float reflectionWeight) {
   vec3 incident = -towardSun;
   float c = dot(waterNormal, incident);
-  float incidentDotRef = dot(incident, reference), normalDotRef = dot(waterNormal, reference);
-  float omegaT = causticOmegaOfCosine(refractedCosine(eta, c, incidentDotRef, normalDotRef), tau);
-  float omegaR = causticOmegaOfCosine(incidentDotRef - 2.0f * c * normalDotRef, tau);
-  return mix(omegaT, omegaR, reflectionWeight);
+  return mix(refractedOmega(incident, waterNormal, c, eta, tau),
+             reflectedOmega(incident, waterNormal, c, tau), reflectionWeight);
 }
 
 // causticFactor for three wavelengths (per-channel eta, dispersion): the reflected ray is the
 // same for all of them, so its omega is computed once.
-SHARED_FN vec3 causticFactorRgb(vec3 towardSun, vec3 waterNormal, vec3 eta, vec3 reference,
-                                float tau, float reflectionWeight) {
+SHARED_FN vec3 causticFactorRgb(vec3 towardSun, vec3 waterNormal, vec3 eta, float tau,
+                                float reflectionWeight) {
   vec3 incident = -towardSun;
   float c = dot(waterNormal, incident);
-  float incidentDotRef = dot(incident, reference), normalDotRef = dot(waterNormal, reference);
-  vec3 omegaT =
-      vec3(causticOmegaOfCosine(refractedCosine(eta.x, c, incidentDotRef, normalDotRef), tau),
-           causticOmegaOfCosine(refractedCosine(eta.y, c, incidentDotRef, normalDotRef), tau),
-           causticOmegaOfCosine(refractedCosine(eta.z, c, incidentDotRef, normalDotRef), tau));
-  float omegaR = causticOmegaOfCosine(incidentDotRef - 2.0f * c * normalDotRef, tau);
-  return mix(omegaT, vec3(omegaR), reflectionWeight);
+  vec3 omegaT = vec3(refractedOmega(incident, waterNormal, c, eta.x, tau),
+                     refractedOmega(incident, waterNormal, c, eta.y, tau),
+                     refractedOmega(incident, waterNormal, c, eta.z, tau));
+  return mix(omegaT, vec3(reflectedOmega(incident, waterNormal, c, tau)), reflectionWeight);
 }
 
 // Beer-Lambert transmittance along the refracted sun path to a receiver `depthBelow` metres

@@ -89,7 +89,6 @@ TEST_F(PostfxCausticsTest, FlatWaterGivesUniformFactorMatchingSharedMath) {
   const glm::vec3 up(-postfx::detail::refractedSunDown(sun, frame.water.ior));
   const float omega =
       postfx::shared::causticFactor(glm::vec3(sun), glm::vec3(0, 1, 0), 1.0f / frame.water.ior,
-                                    glm::vec3(postfx::detail::incidencePlaneNormal(sun)),
                                     frame.caustics.tau, frame.caustics.reflectionWeight);
   EXPECT_NEAR(omega, 1.0f, 1e-6f) << "flat water: both rays unperturbed, a = 0";
   const float depth = static_cast<float>(-(spec.floorY - 0.0));

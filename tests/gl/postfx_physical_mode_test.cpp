@@ -151,7 +151,7 @@ TEST_F(PostfxPhysicalTest, ReportsTheFluxTheClampRemoved) {
   // and float sums in the texels (1e-6 relative).
   EXPECT_NEAR(reported, removedFraction, 1e-5 + 0.5 / 256.0 * above / texels);
 
-  frame.caustics.model = postfx::CausticsModel::Seed002;
+  frame.caustics.model = postfx::CausticsModel::RayDeviation;
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
   EXPECT_EQ(postfx::stats(*fx).clampedFluxFraction, 0.0) << "no clamp in the seed-002 model";
 }

@@ -104,7 +104,7 @@ const FrameStats& stats(const Context& context) noexcept;
 // With Feature::RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last
 // dispatched target holding the caustic factor (mean of R,G,B) before albedo,
 // irradiance, intensity and absorption; 0 where no caustics (sky, above water, back-facing,
-// shadowed, pass skipped). The factor is in [0, 1] in the Seed002 model and in
+// shadowed, pass skipped). The factor is in [0, 1] in the RayDeviation model and in
 // [0, maxIrradiance] in the WavefrontAreaRatio model. Returns 0 without the feature or before
 // the first dispatch.
 GlName rawCausticTexture(const Context& context) noexcept;

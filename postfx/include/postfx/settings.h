@@ -6,16 +6,19 @@ namespace postfx {
 
 // What the caustics pass multiplies the sun light by.
 enum class CausticsModel {
-  // Seed 002: omega = exp(-tau a^2) from the refracted ray's alignment. One texture lookup per
-  // pixel, any receiver shape; a pattern without absolute scale (flat water gives 1, waves
-  // only darken).
-  Seed002,
+  // omega = exp(-tau a^2), a the sine of the angle between the sun ray refracted (and
+  // reflected) by the local water normal and its flat-water ray (seed 002, section 4, with the
+  // whole deviation rather than its component across the plane of incidence, which streaked
+  // the pattern along the sun's azimuth). One texture lookup per cascade and pixel, any receiver
+  // shape; a pattern without absolute scale (flat water gives 1, waves only darken).
+  RayDeviation,
   // Seed 004: true caustic irradiance from the wavefront area ratio. Every frame a grid over
   // the water surface is refracted onto a few receiver depths and its triangles are added up
   // (folds sum) with brightness = beam area / refracted area. Needs Feature::PhysicalCaustics.
   // Covers a camera-centred square window (windowSize); outside it, and across the window's
-  // outer eighth, it fades to Seed002.
+  // outer eighth, it fades to RayDeviation.
   WavefrontAreaRatio,
+  Seed002 = RayDeviation,  // the former name of RayDeviation
 };
 
 struct CausticsSettings {
@@ -53,7 +56,7 @@ struct CausticsSettings {
   // saves nothing); the error it costs is in the report (ocean_sample report).
   float minCascadeContrast = 0.1f;
 
-  CausticsModel model = CausticsModel::Seed002;
+  CausticsModel model = CausticsModel::RayDeviation;
 
   // --- WavefrontAreaRatio only (validated always) ---
   // Surface grid vertices per side and irradiance texels per side, [64, 1024]. Cost grows with

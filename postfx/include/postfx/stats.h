@@ -29,7 +29,7 @@ struct FrameStats {
   // CausticsModel::WavefrontAreaRatio: the flux CausticsSettings::maxIrradiance removed in the
   // most recent frame whose count has been read back (a few dispatches old, never stalled
   // for), as a fraction of the window's flat-water flux summed over the depth layers. 0 in
-  // the Seed002 model; -1 until a first count is read.
+  // the RayDeviation model; -1 until a first count is read.
   double clampedFluxFraction = -1.0;
 };
 
