@@ -1,0 +1,248 @@
+// postfx_bench: the plugin's GPU cost on its own, for machines where only a GPU driver can be
+// assumed (no OpenImageIO, no GLFW: the plugin, the water module, EGL). A CPU-made seabed
+// G-buffer (seabed_gbuffer.h), the water module's 3-cascade FFT ocean animating every frame, and
+// one fresh plugin context per configuration with the benchmark floor beside it: each row is the
+// median GPU time of the configuration's passes and its ratio to the floor measured in the same
+// run (a full-screen pass reading the same inputs with no math), the number comparable across
+// machines. Prints a table; --json FILE writes the rows too.
+#include <epoxy/gl.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glcontext/context.h>
+#include <postfx/postfx.h>
+#include <postfx/water/ocean.h>
+#include <nlohmann/json.hpp>
+
+#include "seabed_gbuffer.h"
+
+namespace {
+
+constexpr int kWarmupFrames = 8;
+
+struct Options {
+  int width = 1920, height = 1080, frames = postfx::kTimerMedianWindow;
+  std::string json;
+};
+
+struct Config {
+  std::string name;
+  postfx::Feature features;
+  postfx::CausticsSettings caustics;
+  postfx::GodRaySettings godRays;
+  std::vector<const char*> passes;  // the passes whose times make the configuration's cost
+};
+
+struct Row {
+  std::string name;
+  double ms = 0.0, floorMs = 0.0;
+  std::vector<std::pair<std::string, double>> passes;
+};
+
+bool parse(int argc, char** argv, Options& options, std::string& error) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h") {
+      error = "usage: postfx_bench [--width W] [--height H] [--frames N] [--json FILE]";
+      return false;
+    }
+    if (i + 1 >= argc) {
+      error = flag + " needs a value (try --help)";
+      return false;
+    }
+    const std::string value = argv[++i];
+    char* end = nullptr;
+    const long number = std::strtol(value.c_str(), &end, 10);
+    const bool integer = end != value.c_str() && *end == '\0';
+    if (flag == "--json") {
+      options.json = value;
+    } else if (flag == "--width" && integer && number >= 16 && number <= 8192) {
+      options.width = int(number);
+    } else if (flag == "--height" && integer && number >= 16 && number <= 8192) {
+      options.height = int(number);
+    } else if (flag == "--frames" && integer && number >= 1 && number <= 10000) {
+      options.frames = int(number);
+    } else {
+      error = "bad option " + flag + " " + value + " (try --help)";
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<Config> configurations() {
+  using postfx::Feature;
+  std::vector<Config> configs;
+  postfx::GodRaySettings noGodRays;
+  noGodRays.enabled = false;
+  const Feature caustics = Feature::Caustics | Feature::Dispersion;
+  configs.push_back({"caustics", caustics, {}, noGodRays, {"caustics"}});
+  for (int grid : {128, 256}) {
+    postfx::CausticsSettings physical;
+    physical.model = postfx::CausticsModel::WavefrontAreaRatio;
+    physical.gridResolution = grid;
+    configs.push_back({"caustics_physical_" + std::to_string(grid),
+                       caustics | Feature::PhysicalCaustics,
+                       physical,
+                       noGodRays,
+                       {"caustics_irradiance", "caustics"}});
+  }
+  postfx::CausticsSettings noCaustics;
+  noCaustics.enabled = false;
+  for (auto [resolution, label] : {std::pair{postfx::GodRayResolution::Full, "full"},
+                                   std::pair{postfx::GodRayResolution::Half, "half"},
+                                   std::pair{postfx::GodRayResolution::Quarter, "quarter"}}) {
+    postfx::GodRaySettings godRays;
+    godRays.resolution = resolution;
+    configs.push_back({std::string("god_rays_") + label + "_16",
+                       Feature::Caustics | Feature::GodRays,
+                       noCaustics,
+                       godRays,
+                       {"god_rays"}});
+  }
+  configs.push_back(
+      {"default_frame", caustics | Feature::GodRays, {}, {}, {"caustics", "god_rays"}});
+  return configs;
+}
+
+double median(const postfx::FrameStats& stats, const char* name) {
+  for (int i = 0; i < stats.passCount; ++i) {
+    if (std::string(stats.passes[i].name) == name) return stats.passes[i].medianMs;
+  }
+  return 0.0;
+}
+
+bool run(const Config& config, const Options& options, const postfx::bench::SeabedGbuffer& gbuffer,
+         postfx::water::Ocean& ocean, Row& row, std::string& error) {
+  postfx::CreateDesc create;
+  create.features = config.features | postfx::Feature::BenchmarkFloor;
+  create.depthConvention = 1;
+  create.normalEncoding = 1;
+  create.maxWaterCascades = ocean.cascadeCount();
+  postfx::Context* fx = nullptr;
+  if (postfx::create(create, fx) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(nullptr);
+    return false;
+  }
+  const postfx::bench::SeabedView& view = gbuffer.view();
+  postfx::FrameDesc frame;
+  frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
+  frame.normal = {gbuffer.normal(), GL_RGBA16F};
+  frame.albedo = {gbuffer.albedo(), GL_RGBA8};
+  frame.target = {gbuffer.target(), GL_RGBA16F};
+  frame.camera.position = view.eye;
+  frame.camera.view = glm::mat4(view.view);
+  frame.camera.projection = view.projection;
+  frame.sun.direction = glm::normalize(glm::dvec3(0.35, 1.0, -0.25));
+  frame.water.texture = {ocean.slopeTexture(), GL_RGBA16F};
+  frame.water.cascadeCount = ocean.cascadeCount();
+  for (int c = 0; c < ocean.cascadeCount(); ++c) {
+    frame.water.tileSize[c] = ocean.tileSize(c);
+    frame.water.rmsLaplacian[c] = ocean.waveStats(c).rmsLaplacian;
+    frame.water.longestWavelength[c] = ocean.waveStats(c).longestWavelength;
+  }
+  frame.caustics = config.caustics;
+  frame.godRays = config.godRays;
+  GLuint framebuffer = 0;
+  glCreateFramebuffers(1, &framebuffer);
+  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, gbuffer.target(), 0);
+  const int total = kWarmupFrames + options.frames + postfx::kTimerRingDepth;
+  bool ok = true;
+  for (int i = 0; i < total && ok; ++i) {
+    // The measured frames' queries resolve in the last kTimerRingDepth ones (never stalled).
+    if (i == kWarmupFrames + options.frames) glFinish();
+    ok = ocean.update(i / 60.0, error) == postfx::water::Result::Ok;
+    // A host's lighting pass fills the target before the plugin adds to it: here a clear through
+    // a framebuffer, which also keeps 80 frames of added light from saturating the half floats.
+    // (Between the ocean's compute update and the first timed pass it also gives llvmpipe's
+    // GL_TIME_ELAPSED a sane start: right after compute work it reports the absolute time.)
+    const float black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, black);
+    if (ok && postfx::dispatch(*fx, frame) != postfx::Result::Ok) {
+      error = std::string("postfx: ") + postfx::lastError(fx);
+      ok = false;
+    }
+  }
+  if (ok) {
+    const postfx::FrameStats& stats = postfx::stats(*fx);
+    row.name = config.name;
+    row.floorMs = median(stats, "floor");
+    for (const char* pass : config.passes) {
+      row.passes.emplace_back(pass, median(stats, pass));
+      row.ms += row.passes.back().second;
+    }
+  }
+  postfx::destroy(fx);
+  glDeleteFramebuffers(1, &framebuffer);
+  return ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  std::string error;
+  if (!parse(argc, argv, options, error)) {
+    std::fprintf(stderr, "postfx_bench: %s\n", error.c_str());
+    return error.rfind("usage:", 0) == 0 ? 0 : 2;
+  }
+  auto context = glcontext::HeadlessContext::create(false, error);
+  if (!context) {
+    std::fprintf(stderr, "postfx_bench: %s\n", error.c_str());
+    return 1;
+  }
+  std::unique_ptr<postfx::water::Ocean> ocean;
+  if (postfx::water::Ocean::create(postfx::water::OceanDesc{}, ocean, error) !=
+      postfx::water::Result::Ok) {
+    std::fprintf(stderr, "postfx_bench: water: %s\n", error.c_str());
+    return 1;
+  }
+  std::fprintf(stderr, "postfx_bench: %s, %d x %d, %d frames per row; building the G-buffer\n",
+               context->renderer().c_str(), options.width, options.height, options.frames);
+  const postfx::bench::SeabedGbuffer gbuffer(options.width, options.height);
+
+  nlohmann::json json;
+  json["renderer"] = context->renderer();
+  json["width"] = options.width;
+  json["height"] = options.height;
+  json["frames"] = options.frames;
+  json["seabed_fraction"] = gbuffer.seabedFraction();
+  std::printf("%-22s %10s %10s %8s  passes\n", "row", "ms", "floor ms", "ratio");
+  const std::vector<Config> configs = configurations();
+  for (size_t k = 0; k < configs.size(); ++k) {
+    std::fprintf(stderr, "postfx_bench: %s (%zu/%zu)\n", configs[k].name.c_str(), k + 1,
+                 configs.size());
+    Row row;
+    if (!run(configs[k], options, gbuffer, *ocean, row, error)) {
+      std::fprintf(stderr, "postfx_bench: %s: %s\n", configs[k].name.c_str(), error.c_str());
+      return 1;
+    }
+    const double ratio = row.floorMs > 0.0 ? row.ms / row.floorMs : 0.0;
+    std::string passes;
+    nlohmann::json entry = {
+        {"name", row.name}, {"ms", row.ms}, {"floor_ms", row.floorMs}, {"floor_ratio", ratio}};
+    for (const auto& [name, ms] : row.passes) {
+      char text[64];
+      std::snprintf(text, sizeof(text), " %s %.3f", name.c_str(), ms);
+      passes += text;
+      entry["passes"][name] = ms;
+    }
+    std::printf("%-22s %10.3f %10.3f %8.2f %s\n", row.name.c_str(), row.ms, row.floorMs, ratio,
+                passes.c_str());
+    std::fflush(stdout);
+    json["rows"].push_back(entry);
+  }
+  if (!options.json.empty()) {
+    std::ofstream file(options.json);
+    file << json.dump(2) << "\n";
+    if (!file) {
+      std::fprintf(stderr, "postfx_bench: could not write %s\n", options.json.c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
