@@ -46,6 +46,29 @@ void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::
   }
 }
 
+glm::mat4 casterModelToAnchor(const ObjectLightFrame& light, const CasterMesh& mesh) {
+  glm::dmat4 fromWorld(1.0);
+  fromWorld[3] = glm::dvec4(-light.anchor, 1.0);
+  return glm::mat4(fromWorld * mesh.modelToWorld);
+}
+
+glm::mat4 casterNormalToWorld(const CasterMesh& mesh) {
+  return glm::mat4(glm::mat3(glm::transpose(glm::inverse(glm::dmat3(mesh.modelToWorld)))));
+}
+
+bool casterMatricesFinite(const FrameDesc& frame, const ObjectLightFrame& light) {
+  const ObjectCausticsFrame& objects = frame.objectCaustics;
+  for (int c = 0; c < objects.casterCount; ++c) {
+    const glm::mat4 matrices[2] = {casterModelToAnchor(light, objects.casters[c]),
+                                   casterNormalToWorld(objects.casters[c])};
+    for (const glm::mat4& m : matrices)
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          if (!std::isfinite(m[i][j])) return false;
+  }
+  return true;
+}
+
 bool castersInReceiverView(const ObjectCausticsFrame& objects) {
   glm::dvec3 lo, hi;
   casterWorldBounds(objects, lo, hi);

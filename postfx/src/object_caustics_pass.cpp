@@ -176,9 +176,7 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
         placement.axisV == placement_.axisV && placement.size == placement_.size))
     historyValid_ = false;
   placement_ = placement;
-  glm::dmat4 toAnchor(1.0);
-  toAnchor[3] = glm::dvec4(-light.anchor, 1.0);
-  anchorFromWorld_ = toAnchor;
+  light_ = light;
   return Result::Ok;
 }
 
@@ -204,9 +202,8 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
     glProgramUniform1i(program, kBackFaces, back ? 1 : 0);
     for (int c = 0; c < objects.casterCount; ++c) {
       const CasterMesh& m = objects.casters[c];
-      const glm::mat4 modelToAnchor(anchorFromWorld_ * m.modelToWorld);
-      const glm::mat4 normalToWorld(
-          glm::mat3(glm::transpose(glm::inverse(glm::dmat3(m.modelToWorld)))));
+      const glm::mat4 modelToAnchor = casterModelToAnchor(light_, m);
+      const glm::mat4 normalToWorld = casterNormalToWorld(m);
       glProgramUniformMatrix4fv(program, kModelToAnchor, 1, GL_FALSE,
                                 glm::value_ptr(modelToAnchor));
       glProgramUniformMatrix4fv(program, kNormalToWorld, 1, GL_FALSE,
