@@ -36,7 +36,11 @@ const glm::dvec3& GodRayGridPivot::follow(const GodRayGrid& grid, double spacing
     const double cosTurn = std::cos(kMaxContinuousTurn);
     const bool continuous =
         sameSpacing && glm::dot(grid.x, grid_.x) >= cosTurn && glm::dot(grid.y, grid_.y) >= cosTurn;
-    anchor_ = continuous ? pivot_ : glm::dvec3(0.0);
+    // Near the origin, turning about the origin moves nearby planes as little as turning about
+    // the camera would: the anchor stays there, as in a fresh context, until the camera is far.
+    const bool atOrigin =
+        anchor_ == glm::dvec3(0.0) && glm::length(pivot_) <= kOriginReach * spacing;
+    anchor_ = continuous && !atOrigin ? pivot_ : glm::dvec3(0.0);
     grid_ = grid;
     spacing_ = spacing;
   }

@@ -30,13 +30,17 @@ double godRayGridPhase(double value, double spacing);
 //
 // The state is an anchor the current lattice passes through, not a running sum: while the grid
 // holds still the pivot is recomputed from the anchor each frame, so no camera position (1e9 m
-// out, say) leaves rounding behind. The anchor moves to the last pivot only when the grid turns
-// by less than kMaxContinuousTurn; a larger turn or another spacing is a cut, and a cut
-// anchors the lattice at the world origin again, exactly as in a fresh context.
+// out, say) leaves rounding behind. The anchor leaves the world origin only when the grid turns
+// by less than kMaxContinuousTurn with the camera more than kOriginReach spacings from the
+// origin (nearer, turning about the origin moves the nearby planes by at most kOriginReach *
+// spacing * turn, 1 % of a spacing per 1e-4 rad); it then moves to the last pivot. A larger turn
+// or another spacing is a cut, and a cut anchors the lattice at the origin again, exactly as in
+// a fresh context. So only a sun turning slowly while the camera is far keeps a history.
 class GodRayGridPivot {
  public:
   static constexpr double kMaxContinuousTurn = 0.01;  // radians per frame (0.57 degrees)
   static constexpr double kSameGrid = 1e-12;          // radians: below it the grid holds still
+  static constexpr double kOriginReach = 128.0;       // spacings
 
   // The grid lattice point nearest the camera (x', z' by whole spacings from the anchor; y',
   // along which the planes run, freely): the same planes for this frame's grid. Returns it.
