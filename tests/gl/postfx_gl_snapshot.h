@@ -58,7 +58,7 @@ inline GlSnapshot snapshotGlState() {
     std::vector<GLfloat> v(static_cast<size_t>(count) + 4, 0.0f);
     glGetFloatv(pname, v.data());
     std::vector<long long> scaled;
-    for (int i = 0; i < count; ++i) scaled.push_back(static_cast<long long>(v[i] * 1e6));
+    for (int i = 0; i < count; ++i) scaled.push_back(static_cast<long long>(double(v[i]) * 1e6));
     s[name] = scaled;
   };
   floats("blend_color", GL_BLEND_COLOR, 4);
