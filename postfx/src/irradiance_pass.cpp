@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "block_check.h"
 #include "frame_constants.h"
 #include "shader_library.h"
 #include "shared_math.h"
@@ -144,7 +145,7 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   glProgramUniform1i(compute, 4, water.cascadeCount);
   glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),
                      static_cast<float>(sun.z), water.ior);
-  glProgramUniform4f(compute, 7, static_cast<float>(flatT > 0.0 ? 1.0 / flatT : 0.0),
+  glProgramUniform4f(compute, 7, saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
                      static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
   glProgramUniform1i(compute, 9, pointsPerSide);
   for (GLuint program : {triangles_.id(), points_.id()}) {

@@ -243,6 +243,11 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
       if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-3)
         return fail("camera.view: the upper 3x3 is not a rotation (orthonormal)");
   const glm::dmat4& p = camera.projection;
+  // Bounded so that the floats made from it (and 2 / (P[1][1] * height)) stay finite.
+  for (const double entry : {p[0][0], p[1][1], p[2][0], p[2][1], p[2][2], p[3][2]})
+    if (!(std::abs(entry) <= 1e30)) return fail("camera.projection: entries must be within +-1e30");
+  if (!(std::abs(p[0][0]) >= 1e-30 && std::abs(p[1][1]) >= 1e-30))
+    return fail("camera.projection: P[0][0] and P[1][1] must be at least 1e-30 in magnitude");
   if (p[0][0] == 0.0 || p[1][1] == 0.0 || std::abs(p[2][3] + 1.0) > 1e-5 ||
       std::abs(p[3][3]) > 1e-5 || p[3][2] == 0.0)
     return fail("camera.projection is not a perspective projection (P[2][3] = -1, P[3][3] = 0)");

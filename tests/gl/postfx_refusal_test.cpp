@@ -86,8 +86,10 @@ TEST_F(PostfxRefusalTest, PositionsPastTheWorldExtentAreRefused) {
        [](postfx::FrameDesc& f) { f.sun.direction = glm::dvec3(0.0, 1e7, 0.0); }},
       {"sun 1e-7 long", "sun.direction",
        [](postfx::FrameDesc& f) { f.sun.direction = glm::dvec3(0.0, 1e-7, 0.0); }},
-      {"projection with 1e300 focal length", "overflows",
+      {"projection with 1e300 focal length", "camera.projection",
        [](postfx::FrameDesc& f) { f.camera.projection[1][1] = 1e300; }},
+      {"projection with a 1e-300 focal length", "camera.projection",
+       [](postfx::FrameDesc& f) { f.camera.projection[0][0] = 1e-300; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
