@@ -140,6 +140,13 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     r = context.caustics.prepare(frame, textures, block, error);
     if (r != Result::Ok) return r;
   }
+  if (physical) {
+    r = context.irradiance.reserve(frame, error);
+    if (r != Result::Ok) {
+      context.caustics.finish();
+      return r;
+    }
+  }
   if (godRays) {
     r = context.godRays.prepare(frame, width, height, godBlock, error);
     if (r != Result::Ok) {

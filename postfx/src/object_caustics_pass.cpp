@@ -159,10 +159,24 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
   ensureGrid(s.gridSize);
   ensureMap(s.mapSize);
+  // Storage the driver refused (GL_OUT_OF_MEMORY) leaves a map without levels and its
+  // framebuffer incomplete: found here, before any pass adds light.
+  for (GLuint history : history_) {
+    GLint width = 0;
+    glGetTextureLevelParameteriv(history, 0, GL_TEXTURE_WIDTH, &width);
+    if (width != s.mapSize) {
+      error = "objectCaustics: the driver could not allocate the caustic map (mapSize " +
+              std::to_string(s.mapSize) + ")";
+      return Result::OutOfMemory;
+    }
+  }
   for (GLuint fbo : {frontFbo_, backFbo_, splatFbo_}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      error = "objectCaustics: an internal framebuffer is incomplete";
-      return Result::GlError;
+      error =
+          "objectCaustics: an internal framebuffer is incomplete (could the driver not "
+          "allocate the maps? mapSize " +
+          std::to_string(s.mapSize) + ", gridSize " + std::to_string(s.gridSize) + ")";
+      return Result::OutOfMemory;
     }
   }
   if (!attachHostTarget(compositeFbo_, frame.target.texture, "object caustics", error)) {

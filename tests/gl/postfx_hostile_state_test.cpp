@@ -259,7 +259,7 @@ Output run(const Case& c) {
 double added(const Output& o) {
   double sum = 0.0;
   for (const glm::vec4& v : o.target)
-    sum += std::abs(v.r - 0.125f) + std::abs(v.g - 0.25f) + std::abs(v.b - 0.5f);
+    sum += double(std::abs(v.r - 0.125f) + std::abs(v.g - 0.25f) + std::abs(v.b - 0.5f));
   return sum;
 }
 
@@ -373,6 +373,37 @@ TEST_F(PostfxHostileStateTest, ActiveTransformFeedbackIsRefused) {
   glDeleteBuffers(1, &buffer);
   glDeleteProgram(program);
   glDeleteShader(shader);
+  glDeleteTextures(1, &water);
+}
+
+// Conditional rendering cannot be queried in GL 4.5, so dispatch() cannot refuse it; postfx.h
+// says so. What a host gets: inside a conditional render whose query passed no samples, the
+// call returns Ok, adds nothing, and leaves the state as it was.
+TEST_F(PostfxHostileStateTest, InsideAFailedConditionalRenderNothingIsAdded) {
+  Scene scene(SceneSpec{});
+  const GLuint water = makeWaterTexture(32, 3, 0.02);
+  auto fx = makeContext(postfx::Feature::Caustics | postfx::Feature::GodRays);
+  const postfx::FrameDesc frame = makeFrame(scene, water, 3);
+  GLuint query = 0;
+  glCreateQueries(GL_ANY_SAMPLES_PASSED, 1, &query);
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, query);  // nothing drawn: no sample passes
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  const glm::vec4 marker(0.125f, 0.25f, 0.5f, 1.0f);
+  scene.clearTarget(marker);
+  glBeginConditionalRender(query, GL_QUERY_WAIT);
+  const GlSnapshot before = snapshotGlState();
+  EXPECT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
+  for (const auto& [name, value] : before) EXPECT_EQ(value, snapshotGlState().at(name)) << name;
+  glEndConditionalRender();
+  for (const glm::vec4& v : readRgba(scene.target, scene.spec().width, scene.spec().height))
+    ASSERT_EQ(v, marker) << "the host's failed query discards the plugin's draws";
+  // Outside it, the same frame adds light (the test can tell).
+  EXPECT_EQ(postfx::dispatch(*fx, frame), Result::Ok);
+  int changed = 0;
+  for (const glm::vec4& v : readRgba(scene.target, scene.spec().width, scene.spec().height))
+    changed += v != marker ? 1 : 0;
+  EXPECT_GT(changed, 100);
+  glDeleteQueries(1, &query);
   glDeleteTextures(1, &water);
 }
 
