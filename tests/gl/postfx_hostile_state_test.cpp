@@ -234,7 +234,7 @@ struct Output {
   bool operator==(const Output& o) const {
     return target.size() == o.target.size() && raw.size() == o.raw.size() &&
            std::memcmp(target.data(), o.target.data(), target.size() * sizeof(glm::vec4)) == 0 &&
-           std::memcmp(raw.data(), o.raw.data(), raw.size() * sizeof(float)) == 0;
+           (raw.empty() || std::memcmp(raw.data(), o.raw.data(), raw.size() * sizeof(float)) == 0);
   }
 };
 
