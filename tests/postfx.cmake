@@ -15,6 +15,7 @@ postfx_add_test(postfx_gl_tests
           gl/postfx_caustics_test.cpp gl/postfx_stability_test.cpp gl/postfx_timing_test.cpp
           gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp
           gl/postfx_cascade_skip_test.cpp gl/postfx_caustics_lookup_test.cpp
+          gl/postfx_refusal_test.cpp
   LIBS postfx gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
@@ -24,7 +25,15 @@ target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
 postfx_add_test(postfx_object_caustics_tests
   SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
           gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
-          gl/postfx_object_caustics_host_test.cpp
+          gl/postfx_object_caustics_host_test.cpp gl/postfx_hostile_state_test.cpp
   LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})
+
+# The dispatch fuzz (issue 15): a few thousand deterministic cases over every FrameDesc field
+# group, the settings, the casters and the G-buffer texels, in four contexts.
+postfx_add_test(postfx_fuzz_tests
+  SOURCES fuzz/postfx_fuzz_test.cpp gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
+  LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
+  GL LABELS fuzz)
+target_include_directories(postfx_fuzz_tests PRIVATE ${_postfx_private} ${CMAKE_CURRENT_SOURCE_DIR}/gl)

@@ -7,10 +7,13 @@
 #include <memory>
 #include <new>
 
+#include "block_check.h"
 #include "context.h"
+#include "draw_state_guard.h"
 #include "frame_constants.h"
 #include "gl_state_guard.h"
 #include "godrays_constants.h"
+#include "memory_estimate.h"
 #include "object_caustics_frame.h"
 #include "object_caustics_validation.h"
 #include "validation.h"
@@ -61,18 +64,17 @@ bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
 }
 
 // The object caustics, timed as their own pass, after the seabed caustics and god rays.
-Result runObjectCaustics(Context& context, const FrameDesc& frame, int width, int height) {
-  const detail::ObjectLightFrame light = detail::fitObjectLightFrame(frame);
-  const shared::ObjectCausticsBlock block =
-      detail::buildObjectCausticsBlock(context.desc, frame, light, width, height);
-  const Result r = context.objectCaustics.prepare(frame, light, block, context.error);
-  if (r != Result::Ok) return r;
+void drawObjectCaustics(Context& context, const FrameDesc& frame, int width, int height) {
   DebugGroup group("postfx.object_caustics");
   if (hasFeature(context.desc.features, Feature::BenchmarkFloor)) glFinish();
   context.timers.begin(context.objectCausticsPass);
   context.objectCaustics.draw(frame, width, height);
   context.timers.end(context.objectCausticsPass);
-  return Result::Ok;
+}
+
+Result refuse(std::string& error, const char* message) {
+  error = message;
+  return Result::InvalidArgument;
 }
 
 Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
@@ -86,17 +88,81 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     r = detail::validateObjectCaustics(frame, error);
     if (r != Result::Ok) return r;
   }
+  r = detail::checkHostDrawState(error);
+  if (r != Result::Ok) return r;
 
+  const int width = textures.width, height = textures.height;
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
-  const shared::CausticsBlock block = detail::buildCausticsBlock(
-      context.desc, frame, textures.width, textures.height, textures.water);
+  // The floor runs whenever some timed pass does, so that every pass has its ratio.
+  const bool fullScreen = caustics || godRays || (objects && floor);
+
+  // Every constant the GPU will see is built and checked before any GL work. The god-ray pivot
+  // is the one piece of per-frame state that shapes the image: a copy moves with this frame and
+  // is kept only once the frame has been drawn, so a refused frame leaves no trace.
+  const shared::CausticsBlock block =
+      detail::buildCausticsBlock(context.desc, frame, width, height, textures.water);
+  if (fullScreen && !detail::allFinite(block))
+    return refuse(error,
+                  "frame: a caustics constant overflows the GPU's float (camera.projection, or "
+                  "shadow.worldToLightClip about camera.position, has entries too large)");
+  detail::GodRayGridPivot pivot = context.godRayPivot;
+  shared::GodRaysBlock godBlock{};
+  if (godRays) {
+    godBlock = detail::buildGodRaysBlock(frame, width, height, pivot);
+    if (!detail::allFinite(godBlock))
+      return refuse(error, "frame: a god-ray constant overflows the GPU's float");
+  }
+  detail::ObjectLightFrame light;
+  shared::ObjectCausticsBlock objectBlock{};
+  if (objects) {
+    light = detail::fitObjectLightFrame(frame);
+    objectBlock = detail::buildObjectCausticsBlock(context.desc, frame, light, width, height);
+    if (!detail::allFinite(objectBlock) || !detail::casterMatricesFinite(frame, light))
+      return refuse(error,
+                    "frame: an object-caustics constant overflows the GPU's float "
+                    "(objectCaustics.receivers.worldToLightClip or a caster's modelToWorld has "
+                    "entries too large)");
+  }
+  r = detail::checkFrameMemory(context.desc, frame, width, height,
+                               {caustics, godRays, physical, objects}, error);
+  if (r != Result::Ok) return r;
 
   detail::GlStateGuard guard;
+  detail::DrawStateGuard drawState;  // inside: both save the host's values
   DebugGroup group("postfx");
+  // Every resource the frame needs is allocated, and every framebuffer checked, before the
+  // first pass adds light: a failure here leaves the target as it was.
+  if (fullScreen) {
+    r = context.caustics.prepare(frame, textures, block, error);
+    if (r != Result::Ok) return r;
+  }
+  if (physical) {
+    r = context.irradiance.reserve(frame, error);
+    if (r != Result::Ok) {
+      context.caustics.finish();
+      return r;
+    }
+  }
+  if (godRays) {
+    r = context.godRays.prepare(frame, width, height, godBlock, error);
+    if (r != Result::Ok) {
+      context.caustics.finish();
+      return r;
+    }
+  }
+  if (objects) {
+    r = context.objectCaustics.prepare(frame, light, objectBlock, error);
+    if (r != Result::Ok) {
+      if (godRays) context.godRays.finish();
+      if (fullScreen) context.caustics.finish();
+      return r;
+    }
+  }
+
   context.timers.beginFrame();
   if (context.irradiancePass >= 0) {
     const double clamped = context.irradiance.pollClampCounts();
@@ -109,76 +175,59 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   }
   if (!caustics) {
     context.timers.markSkipped(Context::kCausticsPass);
-    context.caustics.clearRaw(textures.width, textures.height);
+    context.caustics.clearRaw(width, height);
   }
   if (!godRays && context.godRaysPass >= 0) context.timers.markSkipped(context.godRaysPass);
   if (!objects && context.objectCausticsPass >= 0)
     context.timers.markSkipped(context.objectCausticsPass);
-  // The floor runs whenever some timed pass does, so that every pass has its ratio.
-  if (!caustics && !godRays && !(objects && floor)) {
-    if (floor) context.timers.markSkipped(Context::kFloorPass);
-    r = objects ? runObjectCaustics(context, frame, textures.width, textures.height) : Result::Ok;
-    context.timers.endFrame();
-    return r;
-  }
-  // The god rays draw under the caustics pass's state (its units, samplers and block).
-  r = context.caustics.prepare(frame, textures, block, error);
-  if (r != Result::Ok) {
-    context.timers.endFrame();
-    return r;
-  }
-  if (godRays) {
-    const shared::GodRaysBlock godBlock =
-        detail::buildGodRaysBlock(frame, textures.width, textures.height, context.godRayPivot);
-    r = context.godRays.prepare(frame, textures.width, textures.height, godBlock, error);
-    if (r != Result::Ok) {
-      context.caustics.finish();
-      context.timers.endFrame();
-      return r;
+  if (!fullScreen && floor) context.timers.markSkipped(Context::kFloorPass);
+
+  if (fullScreen) {
+    // The god rays draw under the caustics pass's state (its units, samplers and block).
+    const GLuint irradiance = physical ? context.irradiance.texture() : 0;
+    context.caustics.bindState(frame, textures, irradiance);
+    if (physical) {
+      // Before the floor and the caustics: both sample its result. Draws into its own
+      // framebuffer, then the caustics pass's state is set again.
+      DebugGroup irradianceGroup("postfx.caustics_irradiance");
+      if (floor) glFinish();
+      context.timers.begin(context.irradiancePass);
+      context.irradiance.draw(frame, textures);
+      context.timers.end(context.irradiancePass);
+      context.caustics.bindState(frame, textures, context.irradiance.texture());
     }
+    // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass.
+    // Tile-based and software rasterizers (llvmpipe) otherwise run both draws interleaved per
+    // tile and no query pair can separate them. This is the one place the plugin waits, and
+    // normal frames never get here.
+    if (floor) {
+      DebugGroup floorGroup("postfx.floor");
+      glFinish();
+      context.timers.begin(Context::kFloorPass);
+      context.caustics.drawFloor();
+      context.timers.end(Context::kFloorPass);
+    }
+    if (caustics) {
+      DebugGroup causticsGroup("postfx.caustics");
+      if (floor) glFinish();
+      context.timers.begin(Context::kCausticsPass);
+      context.caustics.drawCaustics();
+      context.timers.end(Context::kCausticsPass);
+    }
+    if (godRays) {
+      DebugGroup godRaysGroup("postfx.god_rays");
+      if (floor) glFinish();
+      context.timers.begin(context.godRaysPass);
+      context.godRays.draw(frame, width, height);
+      context.timers.end(context.godRaysPass);
+      context.godRays.finish();
+      context.godRayPivot = pivot;
+    }
+    context.caustics.finish();
   }
-  const GLuint irradiance = physical ? context.irradiance.texture() : 0;
-  context.caustics.bindState(frame, textures, irradiance);
-  if (physical) {
-    // Before the floor and the caustics: both sample its result. Draws into its own
-    // framebuffer, then the caustics pass's state is set again.
-    DebugGroup irradianceGroup("postfx.caustics_irradiance");
-    if (floor) glFinish();
-    context.timers.begin(context.irradiancePass);
-    context.irradiance.draw(frame, textures);
-    context.timers.end(context.irradiancePass);
-    context.caustics.bindState(frame, textures, context.irradiance.texture());
-  }
-  // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass. Tile-based
-  // and software rasterizers (llvmpipe) otherwise run both draws interleaved per tile and no
-  // query pair can separate them. This is the one place the plugin waits, and normal frames
-  // never get here.
-  if (floor) {
-    DebugGroup floorGroup("postfx.floor");
-    glFinish();
-    context.timers.begin(Context::kFloorPass);
-    context.caustics.drawFloor();
-    context.timers.end(Context::kFloorPass);
-  }
-  if (caustics) {
-    DebugGroup causticsGroup("postfx.caustics");
-    if (floor) glFinish();
-    context.timers.begin(Context::kCausticsPass);
-    context.caustics.drawCaustics();
-    context.timers.end(Context::kCausticsPass);
-  }
-  if (godRays) {
-    DebugGroup godRaysGroup("postfx.god_rays");
-    if (floor) glFinish();
-    context.timers.begin(context.godRaysPass);
-    context.godRays.draw(frame, textures.width, textures.height);
-    context.timers.end(context.godRaysPass);
-    context.godRays.finish();
-  }
-  context.caustics.finish();
-  r = objects ? runObjectCaustics(context, frame, textures.width, textures.height) : Result::Ok;
+  if (objects) drawObjectCaustics(context, frame, width, height);
   context.timers.endFrame();
-  return r;
+  return Result::Ok;
 }
 
 }  // namespace

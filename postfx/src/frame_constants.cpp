@@ -6,6 +6,7 @@
 #include <gbuffer/codec.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "block_check.h"
 #include "irradiance_layout.h"
 
 namespace postfx::detail {
@@ -98,8 +99,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
 
   const bool shadow = hasFeature(create.features, Feature::ShadowMask);
   if (shadow) {
-    b.shadowMatrix =
-        glm::mat4(frame.shadow.worldToLightClip * glm::translate(glm::dmat4(1.0), camera.position));
+    b.shadowMatrix = saturatedFloat(frame.shadow.worldToLightClip *
+                                    glm::translate(glm::dmat4(1.0), camera.position));
   }
   // Reverse-Z stores larger depths nearer the light, so "toward the light" is +bias there.
   const float bias = frame.shadow.depthConvention == 0 ? frame.shadow.bias : -frame.shadow.bias;

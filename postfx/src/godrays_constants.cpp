@@ -25,10 +25,29 @@ double godRayGridPhase(double value, double spacing) {
 
 const glm::dvec3& GodRayGridPivot::follow(const GodRayGrid& grid, double spacing,
                                           const glm::dvec3& camera) {
-  const glm::dvec3 d = camera - pivot_;
-  pivot_ += std::round(glm::dot(d, grid.x) / spacing) * spacing * grid.x +
-            std::round(glm::dot(d, grid.z) / spacing) * spacing * grid.z +
-            glm::dot(d, grid.y) * grid.y;
+  const bool sameSpacing = spacing_ > 0.0 && spacing == spacing_;
+  // The same sun through a different length (or rounding) gives axes a few ulps apart: the same
+  // grid, whose lattice still passes through the anchor.
+  const bool sameGrid = sameSpacing && glm::length(grid.x - grid_.x) <= kSameGrid &&
+                        glm::length(grid.y - grid_.y) <= kSameGrid;
+  if (sameGrid) {
+    grid_ = grid;
+  } else {
+    const double cosTurn = std::cos(kMaxContinuousTurn);
+    const bool continuous =
+        sameSpacing && glm::dot(grid.x, grid_.x) >= cosTurn && glm::dot(grid.y, grid_.y) >= cosTurn;
+    // Near the origin, turning about the origin moves nearby planes as little as turning about
+    // the camera would: the anchor stays there, as in a fresh context, until the camera is far.
+    const bool atOrigin =
+        anchor_ == glm::dvec3(0.0) && glm::length(pivot_) <= kOriginReach * spacing;
+    anchor_ = continuous && !atOrigin ? pivot_ : glm::dvec3(0.0);
+    grid_ = grid;
+    spacing_ = spacing;
+  }
+  const glm::dvec3 d = camera - anchor_;
+  pivot_ = anchor_ + std::round(glm::dot(d, grid.x) / spacing) * spacing * grid.x +
+           std::round(glm::dot(d, grid.z) / spacing) * spacing * grid.z +
+           glm::dot(d, grid.y) * grid.y;
   return pivot_;
 }
 

@@ -80,8 +80,16 @@ void GodRaysPass::ensureReduced(int w, int h) {
 Result GodRaysPass::prepare(const FrameDesc& frame, int width, int height,
                             const shared::GodRaysBlock& block, std::string& error) {
   const GodRayResolution resolution = frame.godRays.resolution;
-  if (resolution != GodRayResolution::Full)
+  if (resolution != GodRayResolution::Full) {
     ensureReduced(godRayReducedSize(width, resolution), godRayReducedSize(height, resolution));
+    // An allocation the driver refused leaves the march framebuffer incomplete: found here,
+    // before anything is drawn.
+    if (glCheckNamedFramebufferStatus(reducedFramebuffer_, GL_DRAW_FRAMEBUFFER) !=
+        GL_FRAMEBUFFER_COMPLETE) {
+      error = "godRays: the reduced-resolution march texture could not be allocated";
+      return Result::OutOfMemory;
+    }
+  }
   if (!attachHostTarget(framebuffer_, frame.target.texture, "god-ray", error)) {
     finish();
     return Result::GlError;

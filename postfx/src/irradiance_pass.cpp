@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "block_check.h"
 #include "frame_constants.h"
 #include "shader_library.h"
 #include "shared_math.h"
@@ -114,10 +115,26 @@ double IrradiancePass::pollClampCounts() {
   return newest;
 }
 
-void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   layout_ = irradianceLayout(frame);
+  ensureTexture(layout_.resolution, layout_.layers);
+  ensureGridPoints(layout_.cells + 1);
+  // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer
+  // without bytes: found here, before anything is drawn.
+  GLint width = 0;
+  glGetTextureLevelParameteriv(texture_, 0, GL_TEXTURE_WIDTH, &width);
+  GLint64 bytes = 0;
+  glGetNamedBufferParameteri64v(gridPoints_, GL_BUFFER_SIZE, &bytes);
+  if (width != layout_.resolution || bytes <= 0) {
+    error = "caustics: the driver could not allocate the irradiance layers (gridResolution " +
+            std::to_string(layout_.resolution) + ")";
+    return Result::OutOfMemory;
+  }
+  return Result::Ok;
+}
+
+void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
   const IrradianceLayout& l = layout_;
-  ensureTexture(l.resolution, l.layers);
   const float zero = 0.0f;
   glClearTexImage(texture_, 0, GL_RED, GL_FLOAT, &zero);
 
@@ -131,7 +148,6 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   glNamedBufferSubData(slot.buffer, 0, sizeof(zeros), zeros);
 
   const int pointsPerSide = l.cells + 1;
-  ensureGridPoints(pointsPerSide);
   const WaterSurface& water = frame.water;
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
   const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
@@ -144,7 +160,7 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   glProgramUniform1i(compute, 4, water.cascadeCount);
   glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),
                      static_cast<float>(sun.z), water.ior);
-  glProgramUniform4f(compute, 7, static_cast<float>(flatT > 0.0 ? 1.0 / flatT : 0.0),
+  glProgramUniform4f(compute, 7, saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
                      static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
   glProgramUniform1i(compute, 9, pointsPerSide);
   for (GLuint program : {triangles_.id(), points_.id()}) {

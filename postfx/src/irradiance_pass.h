@@ -43,6 +43,9 @@ class IrradiancePass {
   // Reads every clamp count that has completed, oldest first. Returns the newest fraction
   // read, or a negative value when none completed.
   double pollClampCounts();
+  // Allocates this frame's irradiance layers and grid points (before any pass adds light);
+  // OutOfMemory with a message when the driver could not.
+  Result reserve(const FrameDesc& frame, std::string& error);
   // Records the pass: clears and fills every layer. Expects the caustics pass's fixed-function
   // state (blend ONE, ONE on draw buffer 0, no cull/scissor) and the water texture bound on
   // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO binding 0,

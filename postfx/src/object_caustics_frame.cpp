@@ -6,6 +6,7 @@
 
 #include <gbuffer/codec.h>
 
+#include "block_check.h"
 #include "frame_constants.h"
 
 namespace postfx::detail {
@@ -44,6 +45,29 @@ void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::
       hi = glm::max(hi, p);
     }
   }
+}
+
+glm::mat4 casterModelToAnchor(const ObjectLightFrame& light, const CasterMesh& mesh) {
+  glm::dmat4 fromWorld(1.0);
+  fromWorld[3] = glm::dvec4(-light.anchor, 1.0);
+  return saturatedFloat(fromWorld * mesh.modelToWorld);
+}
+
+glm::mat4 casterNormalToWorld(const CasterMesh& mesh) {
+  return glm::mat4(saturatedFloat(glm::transpose(glm::inverse(glm::dmat3(mesh.modelToWorld)))));
+}
+
+bool casterMatricesFinite(const FrameDesc& frame, const ObjectLightFrame& light) {
+  const ObjectCausticsFrame& objects = frame.objectCaustics;
+  for (int c = 0; c < objects.casterCount; ++c) {
+    const glm::mat4 matrices[2] = {casterModelToAnchor(light, objects.casters[c]),
+                                   casterNormalToWorld(objects.casters[c])};
+    for (const glm::mat4& m : matrices)
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          if (!std::isfinite(m[i][j])) return false;
+  }
+  return true;
 }
 
 bool castersInReceiverView(const ObjectCausticsFrame& objects) {
@@ -122,8 +146,8 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   glm::dmat4 toAnchor(1.0);
   toAnchor[3] = glm::dvec4(f.anchor, 1.0);
   const glm::dmat4 receiverClip = objects.receivers.worldToLightClip * toAnchor;
-  b.receiverClip = glm::mat4(receiverClip);
-  b.receiverClipInverse = glm::mat4(glm::inverse(receiverClip));
+  b.receiverClip = saturatedFloat(receiverClip);
+  b.receiverClipInverse = saturatedFloat(glm::inverse(receiverClip));
   b.viewToWorld = glm::mat4(glm::mat3(viewToWorldRotation(frame.camera.view)));
 
   b.lightDir = glm::vec4(glm::vec3(f.direction), float(s.iterations));

@@ -29,6 +29,14 @@ struct ObjectLightFrame {
 // to the ray grid's cell, so the rays stay put while the casters move less than a cell.
 ObjectLightFrame fitObjectLightFrame(const FrameDesc& frame);
 
+// The per-caster matrices the caster maps are drawn with, in float: model -> anchor-relative
+// world, and the normal matrix (model -> world).
+glm::mat4 casterModelToAnchor(const ObjectLightFrame& light, const CasterMesh& mesh);
+glm::mat4 casterNormalToWorld(const CasterMesh& mesh);
+// Whether every caster's two matrices are finite in float (a finite double transform with
+// entries past 3.4e38, or a tiny scale whose inverse is, would reach the GPU as Inf).
+bool casterMatricesFinite(const FrameDesc& frame, const ObjectLightFrame& light);
+
 // World bounds (min, max) of every caster's model bounds under its transform.
 void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::dvec3& hi);
 

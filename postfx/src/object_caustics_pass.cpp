@@ -159,10 +159,24 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
   ensureGrid(s.gridSize);
   ensureMap(s.mapSize);
+  // Storage the driver refused (GL_OUT_OF_MEMORY) leaves a map without levels and its
+  // framebuffer incomplete: found here, before any pass adds light.
+  for (GLuint history : history_) {
+    GLint width = 0;
+    glGetTextureLevelParameteriv(history, 0, GL_TEXTURE_WIDTH, &width);
+    if (width != s.mapSize) {
+      error = "objectCaustics: the driver could not allocate the caustic map (mapSize " +
+              std::to_string(s.mapSize) + ")";
+      return Result::OutOfMemory;
+    }
+  }
   for (GLuint fbo : {frontFbo_, backFbo_, splatFbo_}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      error = "objectCaustics: an internal framebuffer is incomplete";
-      return Result::GlError;
+      error =
+          "objectCaustics: an internal framebuffer is incomplete (could the driver not "
+          "allocate the maps? mapSize " +
+          std::to_string(s.mapSize) + ", gridSize " + std::to_string(s.gridSize) + ")";
+      return Result::OutOfMemory;
     }
   }
   if (!attachHostTarget(compositeFbo_, frame.target.texture, "object caustics", error)) {
@@ -176,9 +190,7 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
         placement.axisV == placement_.axisV && placement.size == placement_.size))
     historyValid_ = false;
   placement_ = placement;
-  glm::dmat4 toAnchor(1.0);
-  toAnchor[3] = glm::dvec4(-light.anchor, 1.0);
-  anchorFromWorld_ = toAnchor;
+  light_ = light;
   return Result::Ok;
 }
 
@@ -204,9 +216,8 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
     glProgramUniform1i(program, kBackFaces, back ? 1 : 0);
     for (int c = 0; c < objects.casterCount; ++c) {
       const CasterMesh& m = objects.casters[c];
-      const glm::mat4 modelToAnchor(anchorFromWorld_ * m.modelToWorld);
-      const glm::mat4 normalToWorld(
-          glm::mat3(glm::transpose(glm::inverse(glm::dmat3(m.modelToWorld)))));
+      const glm::mat4 modelToAnchor = casterModelToAnchor(light_, m);
+      const glm::mat4 normalToWorld = casterNormalToWorld(m);
       glProgramUniformMatrix4fv(program, kModelToAnchor, 1, GL_FALSE,
                                 glm::value_ptr(modelToAnchor));
       glProgramUniformMatrix4fv(program, kNormalToWorld, 1, GL_FALSE,

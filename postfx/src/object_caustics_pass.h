@@ -62,7 +62,7 @@ class ObjectCausticsPass {
   bool historyValid_ = false;
   ObjectCausticMap map_;        // what the last frame published
   ObjectCausticMap placement_;  // this frame's placement (texture filled by draw)
-  glm::dmat4 anchorFromWorld_{1.0};
+  ObjectLightFrame light_;  // this frame's light-space fit (the casters are drawn relative to it)
 };
 
 }  // namespace postfx::detail

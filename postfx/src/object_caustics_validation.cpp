@@ -2,8 +2,12 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
+#include "object_caustics_frame.h"
 #include "validation.h"
 
 namespace postfx::detail {
@@ -42,34 +46,52 @@ int indexBytes(GLenum type) {
   }
 }
 
+// Whether `count` records of `stride` bytes, the last one read up to `tail` bytes into it,
+// starting `offset` bytes into a buffer of `bytes`, fit inside it. Every operand is
+// non-negative and every step a subtraction or a division that cannot overflow, whatever the
+// host passed (INT64_MAX counts and offsets included): the product count * stride is never
+// formed.
+bool fitsInBuffer(std::int64_t bytes, std::int64_t offset, std::int64_t count, std::int64_t stride,
+                  std::int64_t tail) {
+  if (offset > bytes || tail > bytes - offset) return false;
+  return count - 1 <= (bytes - offset - tail) / stride;
+}
+
 Result checkCaster(int index, const CasterMesh& m, std::string& error) {
   const std::string field = "objectCaustics.casters[" + std::to_string(index) + "]";
   auto fail = [&](const std::string& message, Result r = Result::InvalidArgument) {
     error = field + message;
     return r;
   };
+  // Draw counts are GLsizei (int32): more cannot be drawn in one call.
+  constexpr std::int64_t kMaxCount = std::numeric_limits<std::int32_t>::max();
   const bool indexed = m.indexBuffer != 0;
   const std::int64_t drawn = indexed ? m.indexCount : m.vertexCount;
   if (drawn < 3)
     return fail(
         indexed ? ".indexCount must be >= 3 (no triangles), got " + std::to_string(m.indexCount)
                 : ".vertexCount must be >= 3 (no triangles), got " + std::to_string(m.vertexCount));
-  if (m.vertexCount < 1) return fail(".vertexCount must be >= 1");
+  if (m.vertexCount < 1 || m.vertexCount > kMaxCount)
+    return fail(".vertexCount must be in [1, 2^31 - 1], got " + std::to_string(m.vertexCount));
+  if (indexed && m.indexCount > kMaxCount)
+    return fail(".indexCount must be <= 2^31 - 1, got " + std::to_string(m.indexCount));
   if (m.stride < 12 || m.stride > 2048)
     return fail(".stride must be in [12, 2048] bytes, got " + std::to_string(m.stride));
-  if (m.positionOffset < 0 || m.positionOffset + 12 > m.stride)
+  if (m.positionOffset < 0 || m.positionOffset > m.stride - 12)
     return fail(".positionOffset must leave 12 bytes inside the stride");
-  if (m.normalOffset >= 0 && m.normalOffset + 12 > m.stride)
+  if (m.normalOffset >= 0 && m.normalOffset > m.stride - 12)
     return fail(".normalOffset must leave 12 bytes inside the stride (or be < 0: none)");
   if (m.baseOffset < 0 || m.indexOffset < 0) return fail(": byte offsets must be >= 0");
   const GLint64 vertexBytes = bufferSize(m.vertexBuffer);
   if (vertexBytes < 0)
     return fail(".vertexBuffer " + std::to_string(m.vertexBuffer) + " is not a buffer name",
                 Result::MissingTexture);
-  if (m.baseOffset + (m.vertexCount - 1) * std::int64_t(m.stride) + m.positionOffset + 12 >
-      vertexBytes)
+  // The last vertex is read up to the end of its position or of its normal, whichever is later.
+  const std::int64_t tail = std::max(m.positionOffset, m.normalOffset) + 12;
+  if (!fitsInBuffer(vertexBytes, m.baseOffset, m.vertexCount, m.stride, tail))
     return fail(".vertexBuffer holds " + std::to_string(vertexBytes) + " bytes, too few for " +
-                    std::to_string(m.vertexCount) + " vertices",
+                    std::to_string(m.vertexCount) + " vertices of " + std::to_string(m.stride) +
+                    " bytes from byte " + std::to_string(m.baseOffset),
                 Result::SizeMismatch);
   if (indexed) {
     const int bytes = indexBytes(m.indexType);
@@ -80,9 +102,10 @@ Result checkCaster(int index, const CasterMesh& m, std::string& error) {
       return fail(".indexBuffer " + std::to_string(m.indexBuffer) + " is not a buffer name",
                   Result::MissingTexture);
     if (m.indexOffset % bytes != 0) return fail(".indexOffset must be aligned to the index size");
-    if (m.indexOffset + m.indexCount * bytes > indexBufferBytes)
+    if (!fitsInBuffer(indexBufferBytes, m.indexOffset, m.indexCount, bytes, bytes))
       return fail(".indexBuffer holds " + std::to_string(indexBufferBytes) +
-                      " bytes, too few for " + std::to_string(m.indexCount) + " indices",
+                      " bytes, too few for " + std::to_string(m.indexCount) +
+                      " indices from byte " + std::to_string(m.indexOffset),
                   Result::SizeMismatch);
   }
   if (!finite(m.modelToWorld)) return fail(".modelToWorld is not finite (NaN or Inf)");
@@ -143,6 +166,17 @@ Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
     const Result r = checkCaster(i, o.casters[i], error);
     if (r != Result::Ok) return r;
   }
+  // The pass works relative to the casters' centre: their world bounds (after the transforms)
+  // must stay inside the extent every other position is held to.
+  glm::dvec3 lo, hi;
+  casterWorldBounds(o, lo, hi);
+  for (int a = 0; a < 3; ++a)
+    if (!inRange(lo[a], -kMaxWorldCoordinate, kMaxWorldCoordinate) ||
+        !inRange(hi[a], -kMaxWorldCoordinate, kMaxWorldCoordinate))
+      return fail(
+          "objectCaustics.casters: the world bounds (boundsMin/boundsMax under "
+          "modelToWorld) must lie within +-" +
+          worldExtentText() + " m");
   const SunShadowMap& rec = o.receivers;
   if (!finite(rec.worldToLightClip))
     return fail("objectCaustics.receivers.worldToLightClip is not finite");

@@ -11,6 +11,10 @@ namespace {
 bool finite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+bool withinWorld(const glm::dvec3& p) {
+  return std::abs(p.x) <= kMaxWorldCoordinate && std::abs(p.y) <= kMaxWorldCoordinate &&
+         std::abs(p.z) <= kMaxWorldCoordinate;
+}
 bool finite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
@@ -42,15 +46,24 @@ struct TextureFacts {
   GLint target = 0, format = 0, width = 0, height = 0, layers = 0;
 };
 
-// Every query here is valid for any texture name, so none can raise a GL error.
+// Every query here is valid for any texture name of any kind, so none can raise a GL error in
+// the host's context. The target is the one fact that needs care: glGetTextureParameteriv
+// refuses buffer textures (GL_INVALID_OPERATION in Mesa), while level-0 queries accept every
+// kind. So the level is read first: a buffer texture names its buffer there, and one without a
+// buffer has no width; only a texture that is neither is asked for its target.
 bool queryTexture(GLuint texture, TextureFacts& facts) {
   if (texture == 0 || glIsTexture(texture) != GL_TRUE) return false;
-  glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &facts.target);
-  if (facts.target == GL_TEXTURE_BUFFER) return true;  // has no levels to query
+  GLint buffer = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_BUFFER_DATA_STORE_BINDING, &buffer);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &facts.format);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &facts.width);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &facts.height);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &facts.layers);
+  if (buffer != 0) {
+    facts.target = GL_TEXTURE_BUFFER;
+  } else if (facts.width > 0) {
+    glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &facts.target);
+  }  // else no storage (or a buffer texture without a buffer): target left 0, reported below
   return true;
 }
 
@@ -62,15 +75,15 @@ Result checkTexture(const char* field, const TextureRef& ref, std::initializer_l
             " is not a texture name (required)";
     return Result::MissingTexture;
   }
+  if (facts.width <= 0 || facts.height <= 0) {
+    error = std::string(field) + ": texture level 0 has no storage";
+    return Result::MissingTexture;
+  }
   if (std::find(targets.begin(), targets.end(), static_cast<GLenum>(facts.target)) ==
       targets.end()) {
     error = std::string(field) + ": texture target " + formatName(facts.target) +
             " is not accepted here";
     return Result::UnsupportedFormat;
-  }
-  if (facts.width <= 0 || facts.height <= 0) {
-    error = std::string(field) + ": texture level 0 has no storage";
-    return Result::MissingTexture;
   }
   if (ref.format != 0 && ref.format != static_cast<GLenum>(facts.format)) {
     error = std::string(field) + ": declared format " + formatName(ref.format) +
@@ -204,6 +217,11 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
             "], got " + std::to_string(desc.maxWaterCascades);
     return Result::InvalidArgument;
   }
+  if (desc.memoryBudgetMiB < 1 || desc.memoryBudgetMiB > (1 << 20)) {
+    error = "CreateDesc.memoryBudgetMiB must be in [1, 1048576], got " +
+            std::to_string(desc.memoryBudgetMiB);
+    return Result::InvalidArgument;
+  }
   return Result::Ok;
 }
 
@@ -214,6 +232,8 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   };
   const Camera& camera = frame.camera;
   if (!finite(camera.position)) return fail("camera.position is not finite");
+  if (!withinWorld(camera.position))
+    return fail("camera.position must lie within +-" + worldExtentText() + " m of the origin");
   if (!finite(camera.view)) return fail("camera.view is not finite");
   if (!finite(camera.projection)) return fail("camera.projection is not finite");
   const glm::dmat3 rotation = glm::dmat3(glm::mat3(camera.view));
@@ -223,19 +243,34 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
       if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-3)
         return fail("camera.view: the upper 3x3 is not a rotation (orthonormal)");
   const glm::dmat4& p = camera.projection;
+  // Bounded so that the floats made from it (and 2 / (P[1][1] * height)) stay finite.
+  for (const double entry : {p[0][0], p[1][1], p[2][0], p[2][1], p[2][2], p[3][2]})
+    if (!(std::abs(entry) <= 1e30)) return fail("camera.projection: entries must be within +-1e30");
+  if (!(std::abs(p[0][0]) >= 1e-30 && std::abs(p[1][1]) >= 1e-30))
+    return fail("camera.projection: P[0][0] and P[1][1] must be at least 1e-30 in magnitude");
   if (p[0][0] == 0.0 || p[1][1] == 0.0 || std::abs(p[2][3] + 1.0) > 1e-5 ||
       std::abs(p[3][3]) > 1e-5 || p[3][2] == 0.0)
     return fail("camera.projection is not a perspective projection (P[2][3] = -1, P[3][3] = 0)");
 
+  // The length is formed from components already bounded, so its square cannot overflow (a
+  // sun of (0, 1e300, 0) once had an infinite length and was normalised to zero).
   const Sun& sun = frame.sun;
-  if (!finite(sun.direction) || !(glm::length(sun.direction) > 1e-6))
-    return fail("sun.direction must be a finite non-zero vector");
+  if (!inRange(sun.direction.x, -kMaxSunLength, kMaxSunLength) ||
+      !inRange(sun.direction.y, -kMaxSunLength, kMaxSunLength) ||
+      !inRange(sun.direction.z, -kMaxSunLength, kMaxSunLength) ||
+      !inRange(glm::length(sun.direction), kMinSunLength, kMaxSunLength))
+    return fail("sun.direction must be finite with a length in [1e-6, 1e6] (it is normalised)");
   if (!inRange(sun.irradiance, 0.0, 1e9)) return fail("sun.irradiance must be in [0, 1e9]");
 
   const WaterSurface& water = frame.water;
   if (!std::isfinite(water.level)) return fail("water.level is not finite");
+  if (!inRange(water.level, -kMaxWorldCoordinate, kMaxWorldCoordinate))
+    return fail("water.level must lie within +-" + worldExtentText() + " m");
   if (!std::isfinite(water.origin.x) || !std::isfinite(water.origin.y))
     return fail("water.origin is not finite");
+  if (!inRange(water.origin.x, -kMaxWorldCoordinate, kMaxWorldCoordinate) ||
+      !inRange(water.origin.y, -kMaxWorldCoordinate, kMaxWorldCoordinate))
+    return fail("water.origin must lie within +-" + worldExtentText() + " m");
   const int maxCascades = waterCascadeSlots(create);
   if (water.cascadeCount < 1 || water.cascadeCount > maxCascades)
     return fail("water.cascadeCount must be in [1, " + std::to_string(maxCascades) +

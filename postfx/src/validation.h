@@ -11,6 +11,17 @@
 
 namespace postfx::detail {
 
+// World coordinates the plugin accepts (camera, water level and origin, caster bounds), in
+// metres: every camera- or anchor-relative distance then stays below 2e9 m, so that it, its
+// square and its product with the largest coefficient (absorption / cos, <= 1e9 per metre)
+// are finite in the GPU's float. Past it a frame is refused rather than drawn with Inf or NaN.
+inline constexpr double kMaxWorldCoordinate = 1e9;
+inline std::string worldExtentText() {
+  return "1e9";
+}
+// Sun::direction is normalised by the plugin; lengths outside this range are refused.
+inline constexpr double kMinSunLength = 1e-6, kMaxSunLength = 1e6;
+
 Result validateCreateDesc(const CreateDesc& desc, std::string& error);
 
 // How many water cascades the context's shaders are written for (a valid desc's).

@@ -48,6 +48,11 @@ bool writeFlipped(const std::string& path, int width, int height, const T* pixel
 
 bool checkOutputPath(const std::string& path, std::string& error) {
   const std::string extension = extensionOf(path);
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (extension.empty() && (name == ".png" || name == ".exr")) {
+    error = "output '" + path + "' has no file name before its extension";
+    return false;
+  }
   if (extension != ".png" && extension != ".exr") {
     error = "output '" + path + "' must end in .png or .exr";
     return false;
@@ -63,7 +68,7 @@ bool checkOutputPath(const std::string& path, std::string& error) {
     error = "output '" + path + "' is a directory";
     return false;
   }
-  return true;
+  return probeWritable(path, error);
 }
 
 bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,

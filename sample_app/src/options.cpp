@@ -1,5 +1,6 @@
 #include "options.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -13,11 +14,24 @@ bool parseInt(std::string_view text, int& value) {
   return result.ec == std::errc() && result.ptr == text.data() + text.size();
 }
 
+// A number strtod reads whole and without leaving double's range: 1e-400 (which it rounds to 0)
+// and 1e400 are refused rather than silently changed.
 bool parseDouble(std::string_view text, double& value) {
   const std::string copy(text);
   char* end = nullptr;
+  errno = 0;
   value = std::strtod(copy.c_str(), &end);
-  return !copy.empty() && end == copy.c_str() + copy.size();
+  return !copy.empty() && end == copy.c_str() + copy.size() && errno != ERANGE;
+}
+
+// Options that take a value; anything else that starts with "--" is unknown, value or not.
+bool takesValue(std::string_view flag) {
+  for (std::string_view known :
+       {"--preset", "--width", "--height", "--time", "--tau", "--caustics-model", "--caustics-grid",
+        "--god-rays-resolution", "--model", "--out", "--json", "--only", "--frames",
+        "--water-resolution"})
+    if (flag == known) return true;
+  return false;
 }
 
 }  // namespace
@@ -28,7 +42,8 @@ std::string usage() {
 usage:
   ocean_sample render [--preset NAME] [--width W] [--height H] [--time T] [--model FILE]...
                       [--out FILE] [--no-caustics] [--no-god-rays] [--no-object-caustics]
-                      [--tau T] [--water-resolution N] [--caustics-model ray-deviation|physical]
+                      [--tau T] [--water-resolution 16..512]
+                      [--caustics-model ray-deviation|physical]
                       [--caustics-grid N] [--god-rays-resolution full|half|quarter]
                       [--triplanar-walls]
       Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped)
@@ -111,9 +126,23 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
       options.triplanarWalls = true;
       continue;
     }
+    if (!takesValue(flag)) {
+      error = "unknown option '" + std::string(flag) + "' (try --help)";
+      return false;
+    }
     if (i + 1 >= argc) {
       error = "option " + std::string(flag) + " needs a value";
       return false;
+    }
+    // Every option but --model (one per glTF file) is given at most once: a second one would
+    // otherwise silently win.
+    if (flag != "--model") {
+      for (int j = 2; j < i; ++j) {
+        if (argv[j] == flag) {
+          error = "option " + std::string(flag) + " is given twice";
+          return false;
+        }
+      }
     }
     const std::string_view value = argv[++i];
     auto needPositiveSize = [&](int& target, const char* what) {
@@ -181,11 +210,13 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
       }
     } else if (flag == "--water-resolution") {
       const int n = options.waterResolution;
-      if (!parseInt(value, options.waterResolution) || options.waterResolution < 8 ||
+      // 16 at least: the scene's cascades (250, 37 and 5.3 m tiles) hand over between bands
+      // only where the finer tile is more than 2/N of the coarser one (the water module's rule).
+      if (!parseInt(value, options.waterResolution) || options.waterResolution < 16 ||
           options.waterResolution > 512 ||
           (options.waterResolution & (options.waterResolution - 1)) != 0) {
         options.waterResolution = n;
-        error = "--water-resolution must be a power of two in [8, 512], got '" +
+        error = "--water-resolution must be a power of two in [16, 512], got '" +
                 std::string(value) + "'";
         return false;
       }

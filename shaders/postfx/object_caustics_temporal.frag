@@ -21,5 +21,7 @@ void main() {
     }
   }
   vec4 history = clamp(texelFetch(historyMap, texel, 0), lo, hi);
-  outMap = mix(current, history, historyWeight);
+  // No history (weight 0) must give exactly this frame: mix() would still multiply the
+  // history by 0, and a NaN left in it by an earlier frame would survive that.
+  outMap = historyWeight > 0.0 ? mix(current, history, historyWeight) : current;
 }

@@ -37,12 +37,12 @@ inline GlSnapshot snapshotGlState() {
   ints("draw_framebuffer", GL_DRAW_FRAMEBUFFER_BINDING, 1);
   ints("read_framebuffer", GL_READ_FRAMEBUFFER_BINDING, 1);
   ints("renderbuffer", GL_RENDERBUFFER_BINDING, 1);
-  for (GLuint i = 0; i < 4; ++i) {
+  for (GLuint i = 0; i < 16; ++i) {
     indexed("viewport", GL_VIEWPORT, i, 4);
     indexed("scissor_box", GL_SCISSOR_BOX, i, 4);
     s[indexedName("scissor_test", i)] = {glIsEnabledi(GL_SCISSOR_TEST, i)};
   }
-  for (GLuint i = 0; i < 4; ++i) {
+  for (GLuint i = 0; i < 8; ++i) {
     s[indexedName("blend", i)] = {glIsEnabledi(GL_BLEND, i)};
     indexed("blend_src_rgb", GL_BLEND_SRC_RGB, i, 1);
     indexed("blend_dst_rgb", GL_BLEND_DST_RGB, i, 1);
@@ -54,10 +54,53 @@ inline GlSnapshot snapshotGlState() {
     glGetBooleani_v(GL_COLOR_WRITEMASK, i, mask);
     s[indexedName("color_mask", i)] = {mask[0], mask[1], mask[2], mask[3]};
   }
-  GLfloat blendColor[4] = {};
-  glGetFloatv(GL_BLEND_COLOR, blendColor);
-  s["blend_color"] = {static_cast<long long>(blendColor[0] * 1000),
-                      static_cast<long long>(blendColor[3] * 1000)};
+  auto floats = [&s](const char* name, GLenum pname, int count) {
+    std::vector<GLfloat> v(static_cast<size_t>(count) + 4, 0.0f);
+    glGetFloatv(pname, v.data());
+    std::vector<long long> scaled;
+    for (int i = 0; i < count; ++i) scaled.push_back(static_cast<long long>(double(v[i]) * 1e6));
+    s[name] = scaled;
+  };
+  floats("blend_color", GL_BLEND_COLOR, 4);
+  // Fixed-function state that changes what a draw writes (issue 15's list).
+  enabled("color_logic_op", GL_COLOR_LOGIC_OP);
+  ints("logic_op_mode", GL_LOGIC_OP_MODE, 1);
+  enabled("sample_alpha_to_coverage", GL_SAMPLE_ALPHA_TO_COVERAGE);
+  enabled("sample_alpha_to_one", GL_SAMPLE_ALPHA_TO_ONE);
+  enabled("sample_coverage", GL_SAMPLE_COVERAGE);
+  floats("sample_coverage_value", GL_SAMPLE_COVERAGE_VALUE, 1);
+  ints("sample_coverage_invert", GL_SAMPLE_COVERAGE_INVERT, 1);
+  enabled("sample_mask", GL_SAMPLE_MASK);
+  indexed("sample_mask_value", GL_SAMPLE_MASK_VALUE, 0, 1);
+  enabled("sample_shading", GL_SAMPLE_SHADING);
+  floats("min_sample_shading", GL_MIN_SAMPLE_SHADING_VALUE, 1);
+  enabled("polygon_offset_fill", GL_POLYGON_OFFSET_FILL);
+  enabled("polygon_offset_line", GL_POLYGON_OFFSET_LINE);
+  enabled("polygon_offset_point", GL_POLYGON_OFFSET_POINT);
+  floats("polygon_offset_factor", GL_POLYGON_OFFSET_FACTOR, 1);
+  floats("polygon_offset_units", GL_POLYGON_OFFSET_UNITS, 1);
+  enabled("primitive_restart_fixed_index", GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  ints("primitive_restart_index", GL_PRIMITIVE_RESTART_INDEX, 1);
+  ints("provoking_vertex", GL_PROVOKING_VERTEX, 1);
+  enabled("dither", GL_DITHER);
+  enabled("line_smooth", GL_LINE_SMOOTH);
+  enabled("polygon_smooth", GL_POLYGON_SMOOTH);
+  enabled("program_point_size", GL_PROGRAM_POINT_SIZE);
+  floats("point_size", GL_POINT_SIZE, 1);
+  ints("point_sprite_coord_origin", GL_POINT_SPRITE_COORD_ORIGIN, 1);
+  floats("line_width", GL_LINE_WIDTH, 1);
+  for (GLuint i = 0; i < 8; ++i)
+    s[indexedName("clip_distance", i)] = {glIsEnabled(GL_CLIP_DISTANCE0 + i)};
+  for (GLuint i = 0; i < 4; ++i) {
+    GLdouble range[2] = {};
+    glGetDoublei_v(GL_DEPTH_RANGE, i, range);
+    s[indexedName("depth_range", i)] = {static_cast<long long>(range[0] * 1e6),
+                                        static_cast<long long>(range[1] * 1e6)};
+  }
+  ints("stencil_back_func", GL_STENCIL_BACK_FUNC, 1);
+  ints("stencil_back_ref", GL_STENCIL_BACK_REF, 1);
+  ints("stencil_back_fail", GL_STENCIL_BACK_FAIL, 1);
+  ints("stencil_pass_depth_fail", GL_STENCIL_PASS_DEPTH_FAIL, 1);
   enabled("depth_test", GL_DEPTH_TEST);
   ints("depth_func", GL_DEPTH_FUNC, 1);
   ints("depth_mask", GL_DEPTH_WRITEMASK, 1);

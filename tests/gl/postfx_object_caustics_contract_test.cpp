@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <limits>
@@ -136,6 +137,65 @@ TEST_F(PostfxObjectCausticsContractTest, BadInputFailsCleanly) {
        [notBuffer](postfx::CasterMesh& m, postfx::FrameDesc&) { m.vertexBuffer = notBuffer; }},
       {"buffer too small", Result::SizeMismatch, "vertexBuffer",
        [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.vertexCount *= 4; }},
+      // Sizes and offsets that overflow 64-bit arithmetic if multiplied or added naively: the
+      // first drew 1.4e9 vertices from an 864-byte buffer, INT64_MAX counts raised GL errors
+      // after Ok, and a huge base offset dropped the caster silently (issue 15).
+      {"vertex count whose byte size wraps", Result::InvalidArgument, "vertexCount",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.vertexCount = 384307168202282566; }},
+      {"vertex count INT64_MAX", Result::InvalidArgument, "vertexCount",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.vertexCount = std::numeric_limits<std::int64_t>::max();
+       }},
+      {"vertex count just past GLsizei", Result::InvalidArgument, "vertexCount",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.vertexCount = (1ll << 31); }},
+      {"non-indexed, 2^31 - 1 vertices", Result::SizeMismatch, "vertexBuffer",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.indexBuffer = 0;
+         m.vertexCount = (1ll << 31) - 1;
+         m.stride = 2048;
+       }},
+      {"index count INT64_MAX", Result::InvalidArgument, "indexCount",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.indexCount = std::numeric_limits<std::int64_t>::max();
+       }},
+      {"index count 2^62", Result::InvalidArgument, "indexCount",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.indexCount = 1ll << 62; }},
+      {"base offset INT64_MAX", Result::SizeMismatch, "vertexBuffer",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.baseOffset = std::numeric_limits<std::int64_t>::max();
+       }},
+      {"base offset that wraps the end negative", Result::SizeMismatch, "vertexBuffer",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.baseOffset = std::numeric_limits<std::int64_t>::max() - 100;
+       }},
+      {"base offset one vertex past the end", Result::SizeMismatch, "vertexBuffer",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.baseOffset = m.stride; }},
+      {"index offset INT64_MAX - 3", Result::SizeMismatch, "indexBuffer",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.indexOffset = std::numeric_limits<std::int64_t>::max() - 3;
+       }},
+      {"normal read past the buffer's end", Result::SizeMismatch, "vertexBuffer",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         // Positions at the end of each record, normals first: the normal of the last vertex
+         // fits only if the buffer is read from 12 bytes further on.
+         m.baseOffset = 12;
+         m.positionOffset = 0;
+         m.normalOffset = 12;
+       }},
+      // Positions and transforms whose floats would overflow: the composite once wrote NaN
+      // into 1320 target values with water.level 1e300 and no absorption.
+      {"water level 1e300", Result::InvalidArgument, "water.level",
+       [](postfx::CasterMesh&, postfx::FrameDesc& f) {
+         f.water.level = 1e300;
+         f.water.absorption = glm::vec3(0.0f);
+       }},
+      {"caster 1e12 m out", Result::InvalidArgument, "world bounds",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.modelToWorld[3][0] = 1e12; }},
+      {"caster scaled by 1e300 around empty bounds", Result::InvalidArgument, "modelToWorld",
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.boundsMin = m.boundsMax = glm::vec3(0.0f);
+         m.modelToWorld[0][0] = m.modelToWorld[1][1] = m.modelToWorld[2][2] = 1e300;
+       }},
       {"index type", Result::InvalidArgument, "indexType",
        [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.indexType = GL_FLOAT; }},
       {"stride too small", Result::InvalidArgument, "stride",
@@ -181,6 +241,56 @@ TEST_F(PostfxObjectCausticsContractTest, BadInputFailsCleanly) {
     ASSERT_EQ(v, glm::vec4(0.5f)) << "nothing drawn";
   EXPECT_EQ(postfx::objectCausticMap(*fx).texture, 0u);
   glDeleteBuffers(1, &notBuffer);
+}
+
+// A map the budget cannot hold is refused before any pass adds light: mapSize 16384 (documented
+// valid) once ran out of memory after the seabed caustics and god rays had been added, and 8192
+// took 30 s and 9.6 GB before returning Ok.
+TEST_F(PostfxObjectCausticsContractTest, SettingsOverTheMemoryBudgetAreRefusedUpFront) {
+  ObjectHost host(sunAt(20.0, 30.0));
+  const GlMesh mesh = makeSphereMesh(1.0, 32, 16);
+  const postfx::CasterMesh caster = mesh.caster(translation({0.0, 1.5, 0.0}), glass());
+  auto fx = makeContext(postfx::Feature::ObjectCaustics | postfx::Feature::Caustics |
+                        postfx::Feature::GodRays);
+  postfx::FrameDesc frame = host.frame(&caster, 1, postfx::ObjectCausticsSettings{});
+  frame.water.level = 10.0;  // everything under water: every pass has work
+  const int w = host.scene.spec().width, h = host.scene.spec().height;
+  const glm::vec4 marker(0.25f);
+  host.scene.clearTarget(marker);
+  ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
+  const postfx::FrameStats& stats = postfx::stats(*fx);
+  for (int p = 0; p < stats.passCount; ++p)
+    EXPECT_FALSE(stats.passes[p].skipped) << stats.passes[p].name << ": every pass ran";
+  int changed = 0;
+  for (const glm::vec4& v : readRgba(host.scene.target, w, h)) changed += v != marker ? 1 : 0;
+  EXPECT_GT(changed, 100) << "the frame within budget adds light (the test can tell)";
+
+  for (int mapSize : {8192, 16384}) {
+    SCOPED_TRACE(mapSize);
+    frame.objectCaustics.settings.mapSize = mapSize;
+    host.scene.clearTarget(marker);
+    EXPECT_EQ(postfx::dispatch(*fx, frame), Result::OutOfMemory);
+    const std::string message = postfx::lastError(fx.get());
+    EXPECT_NE(message.find("mapSize"), std::string::npos) << message;
+    EXPECT_NE(message.find("memoryBudgetMiB"), std::string::npos) << message;
+    for (const glm::vec4& v : readRgba(host.scene.target, w, h))
+      ASSERT_EQ(v, marker) << "nothing added before the refusal";
+  }
+
+  // The budget is the host's: the default map (12 MiB) and caster maps (3.3 MiB) do not fit 8.
+  postfx::CreateDesc desc;
+  desc.features = postfx::Feature::ObjectCaustics;
+  desc.memoryBudgetMiB = 8;
+  postfx::Context* raw = nullptr;
+  ASSERT_EQ(postfx::create(desc, raw), Result::Ok) << postfx::lastError(nullptr);
+  ContextPtr small(raw);
+  frame = host.frame(&caster, 1, postfx::ObjectCausticsSettings{});
+  EXPECT_EQ(postfx::dispatch(*small, frame), Result::OutOfMemory);
+  frame.objectCaustics.settings.mapSize = 256;  // 3 MiB + 3.3 MiB
+  EXPECT_EQ(postfx::dispatch(*small, frame), Result::Ok) << postfx::lastError(small.get());
+  desc.memoryBudgetMiB = 0;
+  EXPECT_EQ(postfx::create(desc, raw), Result::InvalidArgument);
+  EXPECT_NE(std::string(postfx::lastError(nullptr)).find("memoryBudgetMiB"), std::string::npos);
 }
 
 TEST_F(PostfxObjectCausticsContractTest, HostStateSurvivesThePass) {

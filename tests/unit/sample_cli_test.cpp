@@ -121,6 +121,44 @@ TEST_F(SampleCli, UnknownExtension) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// Issue 15: each of these once failed late (after the whole render, naming an internal file),
+// or misleadingly, or not at all. Each is now one up-front line naming the option.
+TEST_F(SampleCli, WaterResolutionTheSceneCannotUse) {
+  const RunResult result = runSample("render --width 64 --height 36 --water-resolution 8", dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_NE(result.stderrText.find("--water-resolution must be a power of two in [16, 512]"),
+            std::string::npos)
+      << result.stderrText;
+}
+TEST_F(SampleCli, TrailingUnknownFlagIsUnknownNotMissingAValue) {
+  const RunResult result = runSample("render --width 64 --bogus", dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_NE(result.stderrText.find("unknown option '--bogus'"), std::string::npos)
+      << result.stderrText;
+}
+TEST_F(SampleCli, TauThatUnderflowsIsRefused) {
+  expectRejected("--tau 1e-400", "--tau");
+}
+TEST_F(SampleCli, DuplicatedOptionIsRefused) {
+  expectRejected("--width 32", "--width is given twice");
+}
+TEST_F(SampleCli, OutputWithoutAFileName) {
+  const RunResult result =
+      runSample("render --width 64 --height 36 --out " + (dir_ / ".png").string(), dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_NE(result.stderrText.find("no file name"), std::string::npos) << result.stderrText;
+  EXPECT_FALSE(fs::exists(dir_ / ".png"));
+}
+TEST_F(SampleCli, OutputDirectoryThatRefusesFilesFailsUpFront) {
+  // /proc takes no new files, even from root (for whom access(W_OK) says yes).
+  const RunResult result = runSample("render --width 64 --height 36 --out /proc/o.exr", dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_NE(result.stderrText.find("cannot create '/proc/o.exr'"), std::string::npos)
+      << result.stderrText;
+  EXPECT_EQ(result.stderrText.find("partial"), std::string::npos)
+      << "names the internal temporary: " << result.stderrText;
+}
+
 TEST_F(SampleCli, RenderWritesAReadablePng) {
   const fs::path out = dir_ / "ok.png";
   const RunResult result =

@@ -52,13 +52,16 @@ struct CasterMesh {
   std::uint32_t vertexBuffer = 0;    // GL buffer name (required)
   std::uint32_t indexBuffer = 0;     // GL buffer name, 0 = non-indexed (vertexCount vertices)
   std::uint32_t indexType = 0x1405;  // GL_UNSIGNED_INT, GL_UNSIGNED_SHORT or GL_UNSIGNED_BYTE
-  std::int64_t vertexCount = 0;      // vertices in the buffer from baseOffset on, >= 3
-  std::int64_t indexCount = 0;       // indices (indexed draws), >= 3, multiple of 3 not required
-  std::int64_t baseOffset = 0;       // byte offset of vertex 0 in vertexBuffer, >= 0
-  std::int64_t indexOffset = 0;      // byte offset of index 0 in indexBuffer, >= 0
-  int positionOffset = 0;            // bytes, >= 0, position + 12 <= stride
-  int normalOffset = 12;             // bytes, < 0 = none, normal + 12 <= stride
-  int stride = 24;                   // bytes, [12, 2048]
+  // Counts are at most 2^31 - 1 (one GL draw). The buffers must hold every vertex (position
+  // and normal of the last one included) and index from the offsets on; checked without
+  // overflow for any value, else SizeMismatch.
+  std::int64_t vertexCount = 0;  // vertices in the buffer from baseOffset on, >= 3
+  std::int64_t indexCount = 0;   // indices (indexed draws), >= 3, multiple of 3 not required
+  std::int64_t baseOffset = 0;   // byte offset of vertex 0 in vertexBuffer, >= 0
+  std::int64_t indexOffset = 0;  // byte offset of index 0 in indexBuffer, >= 0
+  int positionOffset = 0;        // bytes, >= 0, position + 12 <= stride
+  int normalOffset = 12;         // bytes, < 0 = none, normal + 12 <= stride
+  int stride = 24;               // bytes, [12, 2048]
   // Model-space bounding box of the vertices: the plugin fits the sun's view to it without
   // reading the buffers back. min <= max, finite.
   glm::vec3 boundsMin{-1.0f}, boundsMax{1.0f};
@@ -72,7 +75,9 @@ struct CasterMesh {
 struct ObjectCausticsSettings {
   bool enabled = true;  // off: the pass is skipped (0 ms)
   // Caustic map texels per side, [16, GL_MAX_TEXTURE_SIZE]. The map covers the casters' sun
-  // footprint times footprintScale.
+  // footprint times footprintScale. It and its temporal history take 48 bytes per texel
+  // (RGBA32F x 3): 12 MiB at 512, 3 GiB at 8192; a frame over CreateDesc::memoryBudgetMiB is
+  // refused with OutOfMemory before anything is drawn.
   int mapSize = 512;
   // Light rays per side of the regular grid over the casters' sun footprint, [16, 2048]; also
   // the resolution of the caster position/normal maps. Cost is linear in gridSize^2.

@@ -27,7 +27,10 @@ struct TextureRef {
 
 struct Camera {
   // Camera position in world space (m). The GPU works relative to it, so it may be ~1e6 m away
-  // from the origin without loss.
+  // from the origin without loss. Every world coordinate (this, WaterSurface::level and origin,
+  // the casters' world bounds) must lie within +-1e9 m: past it a camera-relative distance, its
+  // square or its product with the absorption would overflow the GPU's float, and the frame is
+  // refused (InvalidArgument).
   glm::dvec3 position{0.0};
   // World-to-view matrix (camera looks down -Z, +Y up in view space). Only its rotation (upper
   // 3x3, orthonormal) is read; the translation is ignored, so a full view matrix or one with
@@ -41,8 +44,10 @@ struct Camera {
 };
 
 struct Sun {
-  // Unit vector TOWARD the sun, world space. direction.y <= 0 (at or below the horizon) means
-  // no caustics this frame: the pass is skipped.
+  // Vector TOWARD the sun, world space. Need not be unit: the plugin normalises it (in double;
+  // a scaled vector gives the same image), but its length must be in [1e-6, 1e6] (finite, its
+  // square too), else InvalidArgument. direction.y <= 0 (at or below the horizon) means no
+  // caustics this frame: the pass is skipped.
   glm::dvec3 direction{0.0, 1.0, 0.0};
   // Sun irradiance at the water surface in the host's HDR units, linear RGB, >= 0.
   glm::vec3 irradiance{1.0f};

@@ -12,8 +12,15 @@
 // Threading and GL: every call needs the host's GL 4.5 context current on the calling thread.
 // create() and destroy() make GL objects with DSA only: no binding changes. dispatch() records GL
 // work, saves every piece of GL state it changes and restores it before returning; it never
-// reads back or waits on the GPU. Do not call dispatch() with transform feedback active or
-// inside conditional rendering. The library never prints, aborts or throws.
+// reads back or waits on the GPU. Any host state gives the same image: every fixed-function
+// state that changes what a draw writes (logic op, multisample and sample coverage/mask,
+// rasterizer discard, polygon mode and offset, clip distances and clip control, depth and
+// stencil, depth clamp, framebuffer sRGB, primitive restart, provoking vertex, blend colour,
+// dither, smoothing, per-draw-buffer blend and colour masks, scissor per viewport, point sprite
+// origin) is set for the plugin's own draws and restored. Active (unpaused) transform feedback
+// is refused (InvalidArgument). Conditional rendering cannot be queried in GL 4.5: inside it
+// the plugin's draws are subject to the host's query, so do not call dispatch() there.
+// The library never prints, aborts or throws.
 #include <postfx/frame_desc.h>
 #include <postfx/result.h>
 #include <postfx/settings.h>
@@ -66,6 +73,13 @@ struct CreateDesc {  // fixed for the context's life
   // a rasteriser that runs both arms of a branch (CPU, e.g. llvmpipe) pays for unused slots, a
   // GPU does not.
   int maxWaterCascades = kMaxCascades;
+  // GPU memory (MiB) the context may allocate for a frame, [1, 1048576]: the textures and
+  // buffers sized by the frame (raw output, god-ray march texture, irradiance layers, caster
+  // maps, the object caustic map and its history). A frame whose settings need more is refused
+  // with Result::OutOfMemory before anything is allocated or drawn. The default holds every
+  // default setting many times over (the object caustics' default map 512 needs 12 MiB); a
+  // caustic map of 4096 needs 768 MiB, 8192 needs 3 GiB, 16384 needs 12 GiB.
+  int memoryBudgetMiB = 1024;
 };
 
 struct Context;  // opaque

@@ -12,7 +12,8 @@ enum class Result {
   NotImplemented,       // a feature reserved for a later version (none at present)
   ShaderCompileFailed,  // create() could not build a program; the message has the driver log
   GlError,              // the driver refused a GL object (framebuffer incomplete, ...)
-  OutOfMemory,          // allocation failed inside the library
+  OutOfMemory,          // the frame needs more GPU memory than CreateDesc::memoryBudgetMiB
+                        // (refused before anything is allocated), or an allocation failed
   NoContext,            // no GL context is current on the calling thread
 };
 

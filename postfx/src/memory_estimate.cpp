@@ -1,0 +1,77 @@
+#include "memory_estimate.h"
+
+#include "godrays_constants.h"
+
+namespace postfx::detail {
+namespace {
+
+std::uint64_t square(int side) {
+  return static_cast<std::uint64_t>(side) * static_cast<std::uint64_t>(side);
+}
+
+// Each term with the field that sets it, for the message.
+struct Terms {
+  std::uint64_t raw = 0, godRays = 0, irradiance = 0, casterMaps = 0, causticMap = 0;
+};
+
+Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int height,
+            const FramePasses& passes) {
+  Terms t;
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * std::uint64_t(height);
+  if (hasFeature(create.features, Feature::RawCausticOutput)) t.raw = pixels * 2;  // R16F
+  if (passes.godRays && frame.godRays.resolution != GodRayResolution::Full)
+    t.godRays = static_cast<std::uint64_t>(godRayReducedSize(width, frame.godRays.resolution)) *
+                std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) * 8;  // RGBA16F
+  if (passes.physical) {
+    // R32F layers plus two vec4 per grid point ((resolution + 2)^2 points).
+    const int resolution = frame.caustics.gridResolution;
+    t.irradiance = square(resolution) * 4 * std::uint64_t(frame.caustics.depthLayers) +
+                   square(resolution + 2) * 32;
+  }
+  if (passes.objects) {
+    const ObjectCausticsSettings& s = frame.objectCaustics.settings;
+    // Front/back positions RGBA32F, normals RGBA16F, one D32F depth.
+    t.casterMaps = square(s.gridSize) * (16 + 8 + 16 + 8 + 4);
+    // Splats and the two temporal histories, RGBA32F.
+    t.causticMap = square(s.mapSize) * 16 * 3;
+  }
+  return t;
+}
+
+std::string mib(std::uint64_t bytes) {
+  return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
+}
+
+}  // namespace
+
+std::uint64_t frameMemoryBytes(const CreateDesc& create, const FrameDesc& frame, int width,
+                               int height, const FramePasses& passes) {
+  const Terms t = terms(create, frame, width, height, passes);
+  return t.raw + t.godRays + t.irradiance + t.casterMaps + t.causticMap;
+}
+
+Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int width, int height,
+                        const FramePasses& passes, std::string& error) {
+  const Terms t = terms(create, frame, width, height, passes);
+  const std::uint64_t total = t.raw + t.godRays + t.irradiance + t.casterMaps + t.causticMap;
+  const std::uint64_t budget = static_cast<std::uint64_t>(create.memoryBudgetMiB) << 20;
+  if (total <= budget) return Result::Ok;
+  const char* largest = "the raw caustic output (target size)";
+  std::uint64_t most = t.raw;
+  const std::pair<std::uint64_t, const char*> others[] = {
+      {t.godRays, "the god-ray march texture (target size, godRays.resolution)"},
+      {t.irradiance, "the irradiance layers (caustics.gridResolution, depthLayers)"},
+      {t.casterMaps, "the caster maps (objectCaustics.settings.gridSize)"},
+      {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"}};
+  for (const auto& [bytes, name] : others)
+    if (bytes > most) {
+      most = bytes;
+      largest = name;
+    }
+  error = "frame needs " + mib(total) + " of GPU memory, over CreateDesc.memoryBudgetMiB = " +
+          std::to_string(create.memoryBudgetMiB) + " MiB; most of it (" + mib(most) + ") for " +
+          largest;
+  return Result::OutOfMemory;
+}
+
+}  // namespace postfx::detail
