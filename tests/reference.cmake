@@ -23,3 +23,9 @@ postfx_add_test(postfx_slope_lookup_tests GL
 postfx_add_test(report_sloped_plane_tests
   SOURCES unit/report_sloped_plane_test.cpp
   LIBS ocean_report)
+
+# The traced frame reference (photon tracing against Embree triangles, density estimation per
+# pixel) on scenes with known answers; CPU only.
+postfx_add_test(reference_frame_tests
+  SOURCES unit/reference_frame_test.cpp
+  LIBS ocean_reference)
