@@ -27,5 +27,5 @@ postfx_add_test(report_sloped_plane_tests
 # The traced frame reference (photon tracing against Embree triangles, density estimation per
 # pixel) on scenes with known answers; CPU only.
 postfx_add_test(reference_frame_tests
-  SOURCES unit/reference_frame_test.cpp
+  SOURCES unit/reference_frame_test.cpp unit/reference_compare_test.cpp
   LIBS ocean_reference)

@@ -91,14 +91,18 @@ struct Frame {
 void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cellX, int cellZ,
                Accumulator& acc) {
   const size_t cell = static_cast<size_t>(cellZ) * plan.columns + cellX;
-  const int n = plan.photonsPerSide[cell];
-  if (n <= 0) return;
+  const double need = plan.need[cell];
+  if (!(need > 0.0)) return;
   water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
                                (static_cast<std::uint64_t>(batch) << 40) ^
                                (cell * 0xD1B54A32D192ED03ull));
   random.nextBits();
+  // n x n strata, or one photon with probability `need` (weight 1 / need) where less than one
+  // is needed.
+  const int n = need >= 1.0 ? static_cast<int>(std::ceil(std::sqrt(need))) : 1;
+  if (need < 1.0 && random.nextUniform() > need) return;
   const double step = plan.cellSize / n;
-  const double cellWeight = step * step;
+  const double cellWeight = need >= 1.0 ? step * step : step * step / need;
   const glm::dvec2 corner = plan.origin + glm::dvec2(cellX, cellZ) * plan.cellSize;
   const FrameReceivers& r = f.receivers;
   const double levelRelative = r.level - r.camera.y;
@@ -211,10 +215,17 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     const glm::dvec2 world(q.x + receivers.camera.x, q.z + receivers.camera.z);
     // Light can land anywhere on the kernel disc, which spans r horizontally and r in depth.
     const double kernelReach = radius * (1.0 + glm::length(drift) + slopeDrift);
+    double density =
+        kernelPhotons / (kPi * radius * radius * std::max(result.flatIrradiance[i], kNoiseFloor));
+    // Where that is under one photon per cell, the cell launches single photons at random:
+    // plain Poisson counting, without the several-fold gain of stratification. Such kernels
+    // (large, far away) get more photons, up to one per cell, so that they converge with the
+    // stratified ones instead of setting the number of batches.
+    const double cellArea = desc.cellSize * desc.cellSize;
+    if (density * cellArea < 1.0) density = std::min(density * desc.sparseBoost, 1.0 / cellArea);
     needs.push_back({world - drift * depth,
                      slopeDrift * (depth + water.maxHeight()) + heightDrift + kernelReach + 1e-3,
-                     kernelPhotons / (kPi * radius * radius *
-                                      std::max(result.flatIrradiance[i], kNoiseFloor))});
+                     density});
   }
   f.window = searchWindows(reach, receivers.width, receivers.height);
   std::vector<double> litNoise;
@@ -232,14 +243,11 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   for (size_t i = 0; i < count; ++i) result.litPixels += result.lit[i];
 
   PhotonLaunchPlan plan = planPhotonLaunch(needs, desc.cellSize);
-  std::uint64_t perBatch = plan.photons();
-  if (perBatch > desc.maxPhotonsPerBatch) {
-    const double thin =
-        std::sqrt(static_cast<double>(desc.maxPhotonsPerBatch) / static_cast<double>(perBatch));
-    for (int& n : plan.photonsPerSide)
-      if (n > 0) n = std::max(1, static_cast<int>(std::floor(n * thin)));
-    perBatch = plan.photons();
+  if (plan.photons() > static_cast<double>(desc.maxPhotonsPerBatch)) {
+    const double thin = static_cast<double>(desc.maxPhotonsPerBatch) / plan.photons();
+    for (double& n : plan.need) n *= thin;
   }
+  const auto perBatch = static_cast<std::uint64_t>(std::llround(plan.photons()));
   result.photonsPerBatch = perBatch;
 
   const int threadCount = std::max(1, desc.threads);

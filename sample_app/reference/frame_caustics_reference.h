@@ -28,7 +28,8 @@
 //     least minBatches, until the `noiseQuantile` of that noise over lit pixels is below
 //     `targetNoise`, or maxBatches.
 //   * Launch density: cells of the water plane get the photon density that the receivers their
-//     light can reach need for kernelPhotonsPerBatch photons per kernel per batch (a pixel's
+//     light can reach need for kernelPhotonsPerBatch photons per kernel per batch (times
+//     sparseBoost for kernels so large that their cells launch single random photons; a pixel's
 //     light enters at most the largest slope drift from where flat water would bring it).
 // Deterministic: each cell's photons come from a hash of (seed, batch, cell); sums are kept in
 // 64-bit fixed point, so the result is bit-identical for any thread count.
@@ -65,8 +66,11 @@ struct FrameTraceDesc {
   int maxBatches = 24;
   // Photons a kernel of a pixel lit as under flat water receives per batch (the launch
   // density is planned for it). Poisson counting alone would give a relative error of
-  // sqrt(4 / (3 N)) per batch (30 % for 16); stratified launching does several times better.
-  double kernelPhotonsPerBatch = 16.0;
+  // sqrt(4 / (3 N)) per batch (33 % for 12); stratified launching does several times better.
+  double kernelPhotonsPerBatch = 12.0;
+  // ... times this where a cell would launch less than one photon per batch (Poisson counting,
+  // no stratification gain).
+  double sparseBoost = 8.0;
   double cellSize = 0.25;  // launch cells on the water plane (m)
   // Photons per batch at most: a plan above it is thinned uniformly (then the target noise
   // may not be reached, which the result says).

@@ -6,10 +6,12 @@
 
 namespace ocean::reference {
 
-std::uint64_t PhotonLaunchPlan::photons() const {
-  std::uint64_t total = 0;
-  for (int n : photonsPerSide)
-    total += static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n);
+double PhotonLaunchPlan::photons() const {
+  double total = 0.0;
+  for (double n : need) {
+    const double side = std::ceil(std::sqrt(n));
+    total += n >= 1.0 ? side * side : n;
+  }
   return total;
 }
 
@@ -59,11 +61,8 @@ PhotonLaunchPlan planPhotonLaunch(const std::vector<LaunchNeed>& needs, double c
       }
     }
   }
-  plan.photonsPerSide.resize(density.size());
-  for (size_t c = 0; c < density.size(); ++c) {
-    plan.photonsPerSide[c] =
-        density[c] > 0.0 ? static_cast<int>(std::ceil(std::sqrt(density[c] * size * size))) : 0;
-  }
+  plan.need.resize(density.size());
+  for (size_t c = 0; c < density.size(); ++c) plan.need[c] = density[c] * size * size;
   return plan;
 }
 

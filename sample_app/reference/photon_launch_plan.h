@@ -18,12 +18,17 @@ struct PhotonLaunchPlan {
   glm::dvec2 origin{0.0};  // world xz of cell (0, 0)'s corner
   double cellSize = 1.0;
   int columns = 0, rows = 0;
-  std::vector<int> photonsPerSide;  // per cell, row-major; 0 = no photons
-  std::uint64_t photons() const;
+  // Per cell, row-major: the photons it needs per batch (max density * cell area; 0 = none).
+  // A cell needing n >= 1 launches ceil(sqrt(n))^2 stratified photons; one needing n < 1
+  // launches a single photon with probability n, of weight 1 / n (unbiased, and the far field
+  // is not oversampled a thousandfold).
+  std::vector<double> need;
+  // Expected photons per batch.
+  double photons() const;
 };
 
 // Cells of `cellSize` (grown when the plan would exceed maxCells) covering every need's reach
-// disc, each with ceil(sqrt(max density * cell area)) photons per side.
+// disc, each needing the largest density among the discs that cover it.
 PhotonLaunchPlan planPhotonLaunch(const std::vector<LaunchNeed>& needs, double cellSize,
                                   size_t maxCells = size_t(1) << 24);
 
