@@ -6,8 +6,8 @@
 // Model:
 //   * A parallel sun beam crosses the mean water plane; photons are stratified over it, so each
 //     stands for an equal share of horizontal beam area within its launch cell. Each meets the
-//     height field y = level + h(x, z) (found by fixed-point iteration along the sun, falling
-//     back to the seabed reference's march), is refracted by Snell's law through the normal
+//     height field y = level + h(x, z) (found by Newton's method along the sun, falling back
+//     to the seabed reference's march), is refracted by Snell's law through the normal
 //     given by the surface's slopes and weighted by the unpolarised Fresnel transmittance
 //     relative to flat water's. Geometry above the water can shade the photon before it enters.
 //   * The refracted photon is traced (Embree) to its first hit on the scene's triangles; a hit
