@@ -28,3 +28,16 @@ postfx_add_test(report_sloped_plane_tests
 postfx_add_test(postfx_streak_tests GL
   SOURCES gl/postfx_streak_test.cpp
   LIBS ocean_report water glm::glm postfx::epoxy)
+
+# The traced frame reference (photon tracing against Embree triangles, density estimation per
+# pixel) on scenes with known answers; CPU only.
+postfx_add_test(reference_frame_tests
+  SOURCES unit/reference_frame_test.cpp unit/reference_compare_test.cpp
+  LIBS ocean_reference)
+
+# The traced frame reference's light against the plugin's own added light (same units).
+postfx_add_test(reference_frame_units_tests GL
+  SOURCES gl/postfx_scene.cpp gl/reference_frame_units_test.cpp
+  LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy)
+target_include_directories(reference_frame_units_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
+  ${POSTFX_SHADER_ROOT})

@@ -3,7 +3,7 @@
 postfx_add_test(water_unit_tests
   SOURCES unit/water_spectrum_test.cpp unit/water_reference_test.cpp
           unit/water_no_context_test.cpp
-  LIBS water glkit)
+  LIBS water glkit)  # glkit: the no-context test asks glkit::hasCurrentContext directly
 postfx_add_test(water_gl_tests
   SOURCES gl/water_ocean_test.cpp gl/water_robustness_test.cpp
   LIBS water GL)

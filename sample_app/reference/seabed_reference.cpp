@@ -93,18 +93,7 @@ LaunchWindow launchWindow(const Surface& surface, const ReferenceDesc& desc,
                           const glm::dvec3& sun) {
   const double maxHeight = surface.maxHeight(), maxSlope = surface.maxSlope();
   const glm::dvec2 flatDrift = lateral(refractSunRay(sun, 0.0, 0.0, desc.ior));
-  // Largest extra drift per metre of depth over normals within maxSlope (sampled densely; the
-  // 5 % and 1e-3 m pads cover what the sampling misses).
-  double slopeDrift = 0.0;
-  for (int r = 1; r <= 8 && maxSlope > 0.0; ++r) {
-    for (int a = 0; a < 64; ++a) {
-      const double angle = 6.283185307179586 * a / 64.0, radius = maxSlope * r / 8.0;
-      const glm::dvec3 t =
-          refractSunRay(sun, radius * std::cos(angle), radius * std::sin(angle), desc.ior);
-      const double drift = t.y < -1e-3 ? glm::length(lateral(t) - flatDrift) : 1e3;
-      slopeDrift = std::max(slopeDrift, std::min(drift, 1e3));
-    }
-  }
+  const double slopeDrift = maxSlopeDrift(sun, desc.ior, maxSlope);
   const glm::dvec2 binMin = desc.bins.origin;
   const glm::dvec2 binMax =
       binMin + desc.bins.size() * glm::dvec2(desc.bins.countX, desc.bins.countZ);
@@ -133,21 +122,7 @@ struct Tracer {
 
   // Where the ray crossing the mean plane at (u, v) first meets the surface; false if never.
   bool hitSurface(double u, double v, glm::dvec3& point, SurfaceSample& at) const {
-    const double horizontal = std::hypot(sun.x, sun.z);
-    if (horizontal * maxHeight < 1e-12 * sun.y) {
-      at = surface.sample(u, v);
-      point = glm::dvec3(u, at.height, v);
-      return true;
-    }
-    // Ray r(t) = (u, 0, v) + sun * t, from above the crests (t > 0) down below the troughs.
-    const double top = (maxHeight + 1e-9) / sun.y;
-    auto above = [&](double t) {
-      return sun.y * t - surface.sample(u + sun.x * t, v + sun.z * t).height;
-    };
-    const double step = 0.25 * surface.featureSize() / horizontal;
-    const double t = firstCrossing(above, top, -top, step, -top);  // f(-top) < 0 always
-    point = glm::dvec3(u + sun.x * t, sun.y * t, v + sun.z * t);
-    at = surface.sample(point.x, point.z);
+    point = sunRayHitsSurface(surface, sun, u, v, at);
     return true;
   }
 
@@ -228,6 +203,41 @@ double fresnelTransmittance(double cosIncident, double ior) {
 glm::dvec3 refractSunRay(const glm::dvec3& towardSun, double slopeX, double slopeZ, double ior) {
   const glm::dvec3 normal = glm::normalize(glm::dvec3(-slopeX, 1.0, -slopeZ));
   return glm::refract(-glm::normalize(towardSun), normal, 1.0 / ior);
+}
+
+glm::dvec3 sunRayHitsSurface(const Surface& surface, const glm::dvec3& sun, double u, double v,
+                             SurfaceSample& at) {
+  const double maxHeight = surface.maxHeight();
+  const double horizontal = std::hypot(sun.x, sun.z);
+  if (horizontal * maxHeight < 1e-12 * sun.y) {
+    at = surface.sample(u, v);
+    return glm::dvec3(u, at.height, v);
+  }
+  // Ray r(t) = (u, 0, v) + sun * t, from above the crests (t > 0) down below the troughs.
+  const double top = (maxHeight + 1e-9) / sun.y;
+  auto above = [&](double t) {
+    return sun.y * t - surface.sample(u + sun.x * t, v + sun.z * t).height;
+  };
+  const double step = 0.25 * surface.featureSize() / horizontal;
+  const double t = firstCrossing(above, top, -top, step, -top);  // f(-top) < 0 always
+  const glm::dvec3 point(u + sun.x * t, sun.y * t, v + sun.z * t);
+  at = surface.sample(point.x, point.z);
+  return point;
+}
+
+double maxSlopeDrift(const glm::dvec3& sun, double ior, double maxSlope) {
+  const glm::dvec2 flatDrift = lateral(refractSunRay(sun, 0.0, 0.0, ior));
+  double slopeDrift = 0.0;
+  for (int r = 1; r <= 8 && maxSlope > 0.0; ++r) {
+    for (int a = 0; a < 64; ++a) {
+      const double angle = 6.283185307179586 * a / 64.0, radius = maxSlope * r / 8.0;
+      const glm::dvec3 t =
+          refractSunRay(sun, radius * std::cos(angle), radius * std::sin(angle), ior);
+      const double drift = t.y < -1e-3 ? glm::length(lateral(t) - flatDrift) : 1e3;
+      slopeDrift = std::max(slopeDrift, std::min(drift, 1e3));
+    }
+  }
+  return slopeDrift;
 }
 
 ReferenceResult traceSeabedCaustics(const Surface& surface, const ReferenceDesc& desc) {

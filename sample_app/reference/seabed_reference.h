@@ -112,6 +112,16 @@ double fresnelTransmittance(double cosIncident, double ior);
 // given slopes; y < 0 except for degenerate (near-vertical) normals.
 glm::dvec3 refractSunRay(const glm::dvec3& towardSun, double slopeX, double slopeZ, double ior);
 
+// Where the sun ray that crosses the mean water plane at world (u, v) first meets the surface
+// (marched from above the crests, refined by regula falsi), and the surface there. `sun` is the
+// unit vector toward the sun, y > 0. Shared by every tracer of the water's own surface.
+glm::dvec3 sunRayHitsSurface(const Surface& surface, const glm::dvec3& sun, double u, double v,
+                             SurfaceSample& at);
+
+// Largest horizontal drift, per metre of descent, that a water normal tilted by at most
+// maxSlope adds to the flat-water refracted sun ray (sampled densely over such normals).
+double maxSlopeDrift(const glm::dvec3& sun, double ior, double maxSlope);
+
 ReferenceResult traceSeabedCaustics(const Surface& surface, const ReferenceDesc& desc);
 
 }  // namespace ocean::reference

@@ -14,5 +14,7 @@ int runRender(const Options& options);
 int runView(const Options& options);
 int runBench(const Options& options);
 int runReport(const Options& options);
+int runReference(const Options& options);
+int runCompare(const Options& options);
 
 }  // namespace ocean

@@ -11,7 +11,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
     error = "unknown preset '" + options.preset + "' (known: " + known + ")";
     return false;
   }
-  ocean_scene::Model scene;
+  ocean_scene::Model& scene = session.scene;
   if (!buildScene(options.models, scene, error)) return false;
   session.context = glcontext::HeadlessContext::create(debug, error);
   if (!session.context) return false;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <glcontext/context.h>
+#include <scene/model.h>
 
 #include "camera.h"
 #include "options.h"
@@ -15,6 +16,7 @@ namespace ocean {
 
 struct HeadlessSession {
   Preset preset;
+  ocean_scene::Model scene;  // what the renderer drew (the traced reference intersects it)
   // Declared in creation order: destroyed plugin first, GL context last.
   std::unique_ptr<glcontext::HeadlessContext> context;
   std::unique_ptr<Renderer> renderer;

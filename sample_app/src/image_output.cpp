@@ -19,7 +19,9 @@ std::string extensionOf(const std::string& path) {
 
 template <typename T>
 bool writeFlipped(const std::string& path, int width, int height, const T* pixels,
-                  OIIO::TypeDesc type, std::string& error) {
+                  OIIO::TypeDesc type, std::string& error,
+                  const std::vector<std::string>* channelNames = nullptr) {
+  const int channels = channelNames ? static_cast<int>(channelNames->size()) : 4;
   auto output = OIIO::ImageOutput::create(path);
   if (!output) {
     error = "cannot write '" + path + "': " + OIIO::geterror();
@@ -28,14 +30,15 @@ bool writeFlipped(const std::string& path, int width, int height, const T* pixel
   return writeThroughTemporary(
       path,
       [&](const std::string& temporary, std::string& why) {
-        OIIO::ImageSpec spec(width, height, 4, type);
+        OIIO::ImageSpec spec(width, height, channels, type);
+        if (channelNames) spec.channelnames = *channelNames;
         if (!output->open(temporary, spec)) {
           why = "cannot write '" + path + "': " + output->geterror();
           return false;
         }
         // GL rows are bottom-up; images are top-down: start at the last row, negative stride.
-        const auto rowBytes = OIIO::stride_t(sizeof(T) * 4 * width);
-        const T* lastRow = pixels + size_t(height - 1) * 4 * width;
+        const auto rowBytes = OIIO::stride_t(sizeof(T) * channels * width);
+        const T* lastRow = pixels + size_t(height - 1) * channels * width;
         const bool written = output->write_image(type, lastRow, OIIO::AutoStride, -rowBytes);
         const bool closed = output->close();
         if (!written || !closed) why = "cannot write '" + path + "': " + output->geterror();
@@ -69,6 +72,23 @@ bool checkOutputPath(const std::string& path, std::string& error) {
     return false;
   }
   return probeWritable(path, error);
+}
+
+bool writeExrChannels(const std::string& path, int width, int height,
+                      const std::vector<std::string>& channelNames,
+                      const std::vector<float>& interleaved, std::string& error) {
+  if (!checkOutputPath(path, error)) return false;
+  if (extensionOf(path) != ".exr") {
+    error = "output '" + path + "' must end in .exr";
+    return false;
+  }
+  if (channelNames.empty() || width <= 0 || height <= 0 ||
+      interleaved.size() != channelNames.size() * size_t(width) * size_t(height)) {
+    error = "cannot write '" + path + "': no pixels or channels";
+    return false;
+  }
+  return writeFlipped(path, width, height, interleaved.data(), OIIO::TypeDesc::FLOAT, error,
+                      &channelNames);
 }
 
 bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,

@@ -12,6 +12,12 @@ namespace ocean {
 bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,
                 const std::vector<float>* linearRgba, std::string& error);
 
+// An EXR of float channels with the given names (e.g. R, G, B, A, then extra ones), pixels
+// interleaved, bottom row first (GL order).
+bool writeExrChannels(const std::string& path, int width, int height,
+                      const std::vector<std::string>& channelNames,
+                      const std::vector<float>& interleaved, std::string& error);
+
 // Checks the output path before any rendering: known extension, writable directory.
 bool checkOutputPath(const std::string& path, std::string& error);
 

@@ -23,6 +23,10 @@ int main(int argc, char** argv) {
       return ocean::runBench(options);
     case ocean::Command::Report:
       return ocean::runReport(options);
+    case ocean::Command::Reference:
+      return ocean::runReference(options);
+    case ocean::Command::Compare:
+      return ocean::runCompare(options);
   }
   return 2;
 }

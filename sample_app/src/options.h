@@ -6,7 +6,7 @@
 
 namespace ocean {
 
-enum class Command { Help, Render, View, Bench, Report };
+enum class Command { Help, Render, View, Bench, Report, Reference, Compare };
 
 struct Options {
   Command command = Command::Help;
@@ -32,6 +32,15 @@ struct Options {
   int godRayResolution = 0;
   int waterResolution = 256;
   bool quick = false;  // report: a smoke run in a few minutes
+  // reference: the traced frame (see frame_caustics_reference.h for each value's meaning)
+  unsigned long long seed = 1;
+  double noise = 0.05;            // target of the lit pixels' 99th-percentile noise
+  double kernelScale = 1.0;       // kernel radius in pixel footprints
+  double minKernelRadius = 0.01;  // m
+  int maxBatches = 24;
+  int threads = 2;
+  // compare: the three frames (EXR) it reads
+  std::string pluginImage, referenceImage, baseImage;
 };
 
 inline constexpr int kMaxImageSide = 16384;

@@ -62,6 +62,7 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   void setPluginPass(PluginPass pass) { plugin_ = std::move(pass); }
+  const PluginPass& pluginPass() const { return plugin_; }
   // Also render the receiver map each frame (for the plugin's object caustics).
   void enableReceiverMap();
   bool render(const FrameInput& input, std::string& error);

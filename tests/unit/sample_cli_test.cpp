@@ -5,10 +5,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
+
+#include "image_output.h"
 
 namespace {
 
@@ -18,13 +22,14 @@ struct RunResult {
   int exitCode = -1;
   bool signalled = false;
   std::string stderrText;
+  std::string stdoutText;
 };
 
 // stderr goes to a file in `scratch`: tests run as parallel processes, each with its own.
 RunResult runSample(const std::string& arguments, const fs::path& scratch) {
-  const fs::path errFile = scratch / "stderr.txt";
-  const std::string command =
-      std::string(OCEAN_SAMPLE_EXE) + " " + arguments + " 2>" + errFile.string() + " >/dev/null";
+  const fs::path errFile = scratch / "stderr.txt", outFile = scratch / "stdout.txt";
+  const std::string command = std::string(OCEAN_SAMPLE_EXE) + " " + arguments + " 2>" +
+                              errFile.string() + " >" + outFile.string();
   const int status = std::system(command.c_str());
   RunResult result;
   result.signalled = WIFSIGNALED(status);
@@ -34,6 +39,11 @@ RunResult runSample(const std::string& arguments, const fs::path& scratch) {
   text << err.rdbuf();
   result.stderrText = text.str();
   fs::remove(errFile);
+  std::ifstream out(outFile);
+  std::ostringstream outText;
+  outText << out.rdbuf();
+  result.stdoutText = outText.str();
+  fs::remove(outFile);
   return result;
 }
 
@@ -47,10 +57,13 @@ class SampleCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Runs a render that must fail, and checks the contract.
-  void expectRejected(const std::string& arguments, const std::string& mentions) {
-    const fs::path out = dir_ / "out.png";
-    const RunResult result = runSample("render --width 64 --height 36 --water-resolution 16 " +
+  // Runs a command that must fail (render unless `command` says otherwise), and checks the
+  // contract.
+  void expectRejected(const std::string& arguments, const std::string& mentions,
+                      const std::string& command = "render",
+                      const std::string& outName = "out.png") {
+    const fs::path out = dir_ / outName;
+    const RunResult result = runSample(command + " --width 64 --height 36 --water-resolution 16 " +
                                            arguments + " --out " + out.string(),
                                        dir_);
     EXPECT_FALSE(result.signalled) << arguments;
@@ -59,7 +72,7 @@ class SampleCli : public ::testing::Test {
         << "expected one line, got: " << result.stderrText;
     EXPECT_NE(result.stderrText.find(mentions), std::string::npos)
         << "message should mention '" << mentions << "': " << result.stderrText;
-    EXPECT_FALSE(fs::exists(out)) << "a failed render left an output file";
+    EXPECT_FALSE(fs::exists(out)) << "a failed " << command << " left an output file";
     for (const auto& entry : fs::directory_iterator(dir_)) {
       if (entry.path().filename().string().find("partial") != std::string::npos) {
         ADD_FAILURE() << "partial file left: " << entry.path();
@@ -170,6 +183,78 @@ TEST_F(SampleCli, RenderWritesAReadablePng) {
   std::array<char, 8> magic{};
   png.read(magic.data(), 8);
   EXPECT_EQ(std::string(magic.data() + 1, 3), "PNG");
+}
+
+// The traced reference and the compare step: the same contract for bad input.
+TEST_F(SampleCli, ReferenceMissingScene) {
+  expectRejected("--model " + (dir_ / "missing.glb").string(), "missing.glb", "reference",
+                 "ref.exr");
+}
+TEST_F(SampleCli, ReferenceZeroSize) {
+  expectRejected("--width 0", "--width", "reference", "ref.exr");
+}
+TEST_F(SampleCli, ReferenceNotANumber) {
+  expectRejected("--noise nan", "--noise", "reference", "ref.exr");
+  expectRejected("--kernel nan", "--kernel", "reference", "ref.exr");
+}
+TEST_F(SampleCli, ReferenceWritesExrOnly) {
+  expectRejected("", ".exr", "reference", "ref.png");
+}
+
+// Small EXRs for the compare step (RGB + caustic.lit), all pixels lit.
+void writeTestExr(const fs::path& path, int width, int height, float value, bool withNaN) {
+  std::vector<float> pixels(size_t(width) * size_t(height) * 5, 1.0f);
+  for (size_t i = 0; i < size_t(width) * size_t(height); ++i)
+    pixels[5 * i] = value + 0.01f * float(i % 7);
+  if (withNaN) pixels[0] = std::nanf("");
+  std::string error;
+  ASSERT_TRUE(ocean::writeExrChannels(path.string(), width, height,
+                                      {"R", "G", "B", "A", "caustic.lit"}, pixels, error))
+      << error;
+}
+
+TEST_F(SampleCli, CompareMissingInput) {
+  writeTestExr(dir_ / "base.exr", 8, 4, 0.5f, false);
+  writeTestExr(dir_ / "ref.exr", 8, 4, 1.0f, false);
+  expectRejected("--plugin " + (dir_ / "missing.exr").string() + " --reference " +
+                     (dir_ / "ref.exr").string() + " --base " + (dir_ / "base.exr").string(),
+                 "missing.exr", "compare", "side.png");
+}
+TEST_F(SampleCli, CompareSizeMismatch) {
+  writeTestExr(dir_ / "base.exr", 8, 4, 0.5f, false);
+  writeTestExr(dir_ / "ref.exr", 8, 4, 1.0f, false);
+  writeTestExr(dir_ / "plugin.exr", 4, 4, 1.0f, false);
+  expectRejected("--plugin " + (dir_ / "plugin.exr").string() + " --reference " +
+                     (dir_ / "ref.exr").string() + " --base " + (dir_ / "base.exr").string(),
+                 "differ in size", "compare", "side.png");
+}
+TEST_F(SampleCli, CompareNotANumber) {
+  writeTestExr(dir_ / "base.exr", 8, 4, 0.5f, false);
+  writeTestExr(dir_ / "ref.exr", 8, 4, 1.0f, false);
+  writeTestExr(dir_ / "plugin.exr", 8, 4, 1.0f, true);
+  expectRejected("--plugin " + (dir_ / "plugin.exr").string() + " --reference " +
+                     (dir_ / "ref.exr").string() + " --base " + (dir_ / "base.exr").string(),
+                 "NaN", "compare", "side.png");
+}
+
+// End to end on a tiny frame: the traced reference of the default preset, then the compare
+// step with the reference as its own plugin frame: correlation 1, error 0, a PNG.
+TEST_F(SampleCli, ReferenceThenCompareWithItself) {
+  const std::string size = " --width 64 --height 36 --water-resolution 16 ";
+  const fs::path base = dir_ / "base.exr", ref = dir_ / "ref.exr", side = dir_ / "side.png";
+  ASSERT_EQ(runSample("render --no-caustics" + size + "--out " + base.string(), dir_).exitCode, 0);
+  const RunResult traced =
+      runSample("reference" + size + "--max-batches 8 --out " + ref.string(), dir_);
+  ASSERT_EQ(traced.exitCode, 0) << traced.stderrText;
+  EXPECT_NE(traced.stdoutText.find("reference: batch 1,"), std::string::npos) << "progress";
+  const RunResult compared =
+      runSample("compare --plugin " + ref.string() + " --reference " + ref.string() + " --base " +
+                    base.string() + " --out " + side.string(),
+                dir_);
+  ASSERT_EQ(compared.exitCode, 0) << compared.stderrText;
+  EXPECT_NE(compared.stdoutText.find("relative RMSE 0.0000, correlation 1.0000"), std::string::npos)
+      << compared.stdoutText;
+  EXPECT_TRUE(fs::exists(side));
 }
 
 }  // namespace

@@ -1,0 +1,31 @@
+#include "caustic_light_units.h"
+
+#include <algorithm>
+
+#include "seabed_reference.h"
+#include "shared_math.h"  // the plugin's own attenuation functions (shaders/shared)
+
+namespace ocean::reference {
+
+CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame) {
+  CausticLightUnits units;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const glm::dvec3 up = -refractSunRay(sun, 0.0, 0.0, frame.water.ior);
+  // The same floor as the plugin's frame constants (frame_constants.cpp).
+  units.upY = std::max(up.y, 1e-6);
+  units.lightScale = frame.sun.irradiance * frame.caustics.intensity;
+  units.absorptionPerDepth = glm::vec3(glm::dvec3(frame.water.absorption) / units.upY);
+  units.fadeDepth = frame.caustics.surfaceFadeDepth;
+  return units;
+}
+
+glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                double depthBelow, double tracedIrradiance) {
+  const float depth = static_cast<float>(depthBelow);
+  const float bracket = static_cast<float>(tracedIrradiance * units.upY);
+  return postfx::shared::sanitizeAlbedo(albedo) * units.lightScale *
+         postfx::shared::causticTransmittance(units.absorptionPerDepth, depth) *
+         (bracket * postfx::shared::causticSurfaceFade(depth, units.fadeDepth));
+}
+
+}  // namespace ocean::reference

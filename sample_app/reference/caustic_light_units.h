@@ -1,0 +1,34 @@
+#pragma once
+// The light the plugin's seabed-caustics pass adds to a pixel, in its own units, with its
+// caustic factor replaced by traced irradiance. The plugin (shaders/postfx/caustics.frag) adds
+//     albedo * E_sun * intensity * exp(-absorption d / u.y) * fade(d) * [omega * (n.u) * vis]
+// for a receiver d metres under the level, u the unperturbed refracted sun reversed, n the
+// G-buffer normal, vis its shadow-map visibility and omega its caustic factor (1 for flat
+// water). The bracket is the caustic irradiance relative to flat water's on a horizontal
+// receiver at normal incidence of the refracted beam. The reference puts in its place
+// the traced ratio R = E / E_flat times the same (n.u):
+//     [R (n.u)] = E u.y,   E_flat = (n.u) / u.y,
+// E the traced irradiance (flat water on a horizontal receiver = 1; occlusion traced, so no
+// shadow-map visibility), keeping every other factor (albedo, sun, intensity, the plugin's
+// absorption along the unperturbed path, surface fade) exactly as the plugin computes it: with
+// flat water and no occluder the two agree exactly, and (reference - frame without caustics)
+// compares pixel by pixel with (plugin frame - frame without caustics).
+#include <postfx/postfx.h>
+#include <glm/glm.hpp>
+
+namespace ocean::reference {
+
+struct CausticLightUnits {
+  glm::vec3 lightScale{1.0f};          // E_sun * intensity
+  glm::vec3 absorptionPerDepth{0.0f};  // absorption / u.y (1/m)
+  float fadeDepth = 0.0f;              // CausticsSettings::surfaceFadeDepth
+  double upY = 1.0;                    // u.y
+};
+
+CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame);
+
+// What the plugin would add with its caustic factor replaced by `tracedIrradiance` E.
+glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                double depthBelow, double tracedIrradiance);
+
+}  // namespace ocean::reference

@@ -1,0 +1,311 @@
+#include "frame_caustics_reference.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include <postfx/water/random.h>
+
+#include "photon_launch_plan.h"
+
+namespace ocean::reference {
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+// Fixed-point scale of the per-pixel sums: integer sums do not depend on the order photons
+// arrive in, so any split over threads gives the same bits. A contribution w K is at most
+// ~1e4 (a whole-cell photon on a 1 mm kernel), so a batch's sum stays far below 2^63.
+constexpr double kSumScale = 4294967296.0;  // 2^32
+// Noise is stated relative to at least this irradiance (a fifth of flat water's on a
+// horizontal receiver): a surface almost edge-on to the light gets little of it either way.
+constexpr double kNoiseFloor = 0.2;
+// A photon counts for a pixel only on a surface turned within 60 degrees of the pixel's.
+constexpr double kMinNormalAgreement = 0.5;
+
+struct Accumulator {
+  std::vector<std::int64_t> sum;
+  void reset(size_t n) { sum.assign(n, 0); }
+};
+
+// Where the sun ray through the mean plane at world (u, v) meets the surface: the root of
+// g(p) = p - (u, v) - s h(p), s = sun.xz / sun.y, by Newton's method with the surface's own
+// slopes as the Jacobian (two or three steps for any slope along the sun below 1 / |s|); the
+// seabed reference's march from above the crests where it does not converge.
+glm::dvec3 entryPoint(const Surface& water, const glm::dvec3& sun, double u, double v,
+                      SurfaceSample& at) {
+  const glm::dvec2 start(u, v), shift(sun.x / sun.y, sun.z / sun.y);
+  glm::dvec2 p = start;
+  for (int k = 0; k < 12; ++k) {
+    at = water.sample(p.x, p.y);
+    const glm::dvec2 g = p - start - shift * at.height;
+    if (glm::length(g) < 1e-7) return glm::dvec3(p.x, at.height, p.y);
+    // J = I - shift (dh/dx, dh/dz)^T; its inverse by Sherman-Morrison.
+    const glm::dvec2 slope(at.slopeX, at.slopeZ);
+    const double denominator = 1.0 - glm::dot(slope, shift);
+    if (!(std::abs(denominator) > 1e-3)) break;
+    p -= g + shift * (glm::dot(slope, g) / denominator);
+  }
+  return sunRayHitsSurface(water, sun, u, v, at);
+}
+
+// For every pixel, a search radius (pixels) that covers every kernel reaching it: the largest
+// per-pixel reach within the largest reach (a separable sliding maximum; conservative).
+std::vector<int> searchWindows(const std::vector<int>& reach, int width, int height) {
+  const int radius = reach.empty() ? 0 : *std::max_element(reach.begin(), reach.end());
+  std::vector<int> rows(reach.size(), 0), out(reach.size(), 0);
+  auto at = [width](int x, int y) { return static_cast<size_t>(y) * width + x; };
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int k = std::max(x - radius, 0); k <= std::min(x + radius, width - 1); ++k)
+        rows[at(x, y)] = std::max(rows[at(x, y)], reach[at(k, y)]);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int k = std::max(y - radius, 0); k <= std::min(y + radius, height - 1); ++k)
+        out[at(x, y)] = std::max(out[at(x, y)], rows[at(x, k)]);
+  return out;
+}
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  const size_t k = std::min(values.size() - 1,
+                            static_cast<size_t>(q * static_cast<double>(values.size() - 1) + 0.5));
+  std::nth_element(values.begin(), values.begin() + static_cast<long>(k), values.end());
+  return values[k];
+}
+
+struct Frame {
+  const Surface& water;
+  const EmbreeScene& scene;
+  const FrameReceivers& receivers;
+  const FrameTraceDesc& desc;
+  glm::dvec3 sun;
+  glm::dvec3 up;  // unperturbed refracted sun reversed (receiver -> surface)
+  double flatTransmittance = 1.0;
+  std::vector<double> radiusSquared;  // per pixel, 0 = not a receiver
+  // Per pixel: how many pixels around a photon projected there can hold it in their kernel.
+  std::vector<int> window;
+};
+
+// One cell's photons of one batch, splatted into `acc`.
+void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cellX, int cellZ,
+               Accumulator& acc) {
+  const size_t cell = static_cast<size_t>(cellZ) * plan.columns + cellX;
+  const double need = plan.need[cell];
+  if (!(need > 0.0)) return;
+  water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
+                               (static_cast<std::uint64_t>(batch) << 40) ^
+                               (cell * 0xD1B54A32D192ED03ull));
+  random.nextBits();
+  // n x n strata, or one photon with probability `need` (weight 1 / need) where less than one
+  // is needed.
+  const int n = need >= 1.0 ? static_cast<int>(std::ceil(std::sqrt(need))) : 1;
+  if (need < 1.0 && random.nextUniform() > need) return;
+  const double step = plan.cellSize / n;
+  const double cellWeight = need >= 1.0 ? step * step : step * step / need;
+  const glm::dvec2 corner = plan.origin + glm::dvec2(cellX, cellZ) * plan.cellSize;
+  const FrameReceivers& r = f.receivers;
+  const double levelRelative = r.level - r.camera.y;
+  for (int a = 0; a < n; ++a) {
+    for (int b = 0; b < n; ++b) {
+      const double u = corner.x + (a + random.nextUniform()) * step;
+      const double v = corner.y + (b + random.nextUniform()) * step;
+      SurfaceSample at;
+      const glm::dvec3 entry = entryPoint(f.water, f.sun, u, v, at);
+      const glm::dvec3 normal = glm::normalize(glm::dvec3(-at.slopeX, 1.0, -at.slopeZ));
+      const double cosIncident = glm::dot(f.sun, normal);
+      if (!(cosIncident > 0.0)) continue;  // the back of a wave: no light enters here
+      const glm::dvec3 dir = refractSunRay(f.sun, at.slopeX, at.slopeZ, f.desc.ior);
+      if (!(dir.y < 0.0)) continue;
+      const double w =
+          cellWeight * fresnelTransmittance(cosIncident, f.desc.ior) / f.flatTransmittance;
+      const glm::dvec3 from(entry.x - r.camera.x, levelRelative + entry.y, entry.z - r.camera.z);
+      if (f.scene.boundsMax().y > from.y && f.scene.occluded(from, f.sun, 0.0, 1e30)) continue;
+      RayHit hit;
+      if (!f.scene.intersect(from, dir, 0.0, 1e30, hit)) continue;
+      if (!(glm::dot(dir, hit.normal) < 0.0)) continue;  // a face turned away absorbs it
+      const glm::dvec3 x = from + dir * hit.t;
+      glm::dvec2 pixel;
+      if (!r.project(x, pixel)) continue;
+      const int cx = static_cast<int>(std::floor(pixel.x)),
+                cy = static_cast<int>(std::floor(pixel.y));
+      if (cx < -64 || cy < -64 || cx >= r.width + 64 || cy >= r.height + 64) continue;
+      const int w0 = f.window[static_cast<size_t>(std::clamp(cy, 0, r.height - 1)) * r.width +
+                              std::clamp(cx, 0, r.width - 1)];
+      const int x0 = std::max(cx - w0, 0), x1 = std::min(cx + w0, r.width - 1);
+      const int y0 = std::max(cy - w0, 0), y1 = std::min(cy + w0, r.height - 1);
+      for (int py = y0; py <= y1; ++py) {
+        for (int px = x0; px <= x1; ++px) {
+          const size_t i = static_cast<size_t>(py) * r.width + px;
+          const double r2 = f.radiusSquared[i];
+          if (!(r2 > 0.0)) continue;
+          const glm::dvec3 d = x - r.position[i];
+          const double d2 = glm::dot(d, d);
+          if (!(d2 < r2) || glm::dot(hit.normal, r.normal[i]) < kMinNormalAgreement) continue;
+          const double c = w * (2.0 / (kPi * r2)) * (1.0 - d2 / r2);
+          acc.sum[i] += std::llround(c * kSumScale);
+        }
+      }
+    }
+  }
+}
+
+// Flat-water sunlight reaches receiver i: nothing on the unperturbed refracted ray up to the
+// water plane, nor above the water toward the sun.
+bool litByFlatWater(const Frame& f, size_t i) {
+  const FrameReceivers& r = f.receivers;
+  const glm::dvec3& q = r.position[i];
+  const glm::dvec3& n = r.normal[i];
+  if (!(glm::dot(n, f.up) > 0.0)) return false;
+  const double offset = std::max(1e-3, 1e-4 * glm::length(q));
+  const glm::dvec3 from = q + n * offset;
+  const double toSurface = (r.level - r.camera.y - from.y) / f.up.y;
+  if (toSurface > 0.0 && f.scene.occluded(from, f.up, 0.0, toSurface)) return false;
+  const glm::dvec3 atSurface = from + f.up * std::max(toSurface, 0.0);
+  return !(f.scene.boundsMax().y > atSurface.y && f.scene.occluded(atSurface, f.sun, 0.0, 1e30));
+}
+
+}  // namespace
+
+FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& scene,
+                                    const FrameReceivers& receivers, const FrameTraceDesc& desc) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameTraceResult result;
+  const size_t count = receivers.size();
+  result.irradiance.assign(count, 0.0);
+  result.flatIrradiance.assign(count, 0.0);
+  result.standardError.assign(count, 0.0);
+  result.noise.assign(count, 0.0);
+  result.kernelRadius.assign(count, 0.0);
+  result.lit.assign(count, 0);
+  const glm::dvec3 sun = glm::normalize(desc.towardSun);
+  if (!(sun.y > 0.0) || count == 0 || receivers.position.size() != count) return result;
+
+  Frame f{water, scene, receivers, desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior), 1.0, {}, {}};
+  f.flatTransmittance = fresnelTransmittance(sun.y, desc.ior);
+  f.radiusSquared.assign(count, 0.0);
+
+  // Kernels, flat irradiance, lit mask and what each receiver needs from the launch.
+  const double rpp = receivers.radiansPerPixel();
+  const double kernelPhotons = desc.kernelPhotonsPerBatch;
+  const glm::dvec3 flatDown = -f.up;
+  const glm::dvec2 drift(flatDown.x / -flatDown.y, flatDown.z / -flatDown.y);
+  const double slopeDrift = maxSlopeDrift(sun, desc.ior, water.maxSlope());
+  const double heightDrift =
+      (std::hypot(sun.x, sun.z) / sun.y + glm::length(drift)) * water.maxHeight();
+  std::vector<LaunchNeed> needs;
+  std::vector<int> reach(count, 0);
+  for (size_t i = 0; i < count; ++i) {
+    if (!receivers.valid[i]) continue;
+    const glm::dvec3& q = receivers.position[i];
+    const glm::dvec3& n = receivers.normal[i];
+    const double distance = glm::length(q);
+    const double facing = distance > 0.0 ? std::abs(glm::dot(n, q)) / distance : 1.0;
+    const double radius =
+        std::max(desc.kernelScale * distance * rpp / std::sqrt(std::max(facing, 1.0 / 16.0)),
+                 desc.minKernelRadius);
+    result.kernelRadius[i] = radius;
+    f.radiusSquared[i] = radius * radius;
+    // A photon within r_i of q_i projects at most r_i / (|q_i| rpp) pixels (+1 for the pixel
+    // centre) from pixel i; the area-matched radius keeps that below 4 kernelScale.
+    reach[i] =
+        static_cast<int>(std::ceil(std::min(radius / std::max(distance * rpp, 1e-12), 64.0))) + 1;
+    result.flatIrradiance[i] = std::max(glm::dot(n, f.up), 0.0) / f.up.y;
+    const double depth = receivers.depthBelow(i);
+    const glm::dvec2 world(q.x + receivers.camera.x, q.z + receivers.camera.z);
+    // Light can land anywhere on the kernel disc, which spans r horizontally and r in depth.
+    const double kernelReach = radius * (1.0 + glm::length(drift) + slopeDrift);
+    double density =
+        kernelPhotons / (kPi * radius * radius * std::max(result.flatIrradiance[i], kNoiseFloor));
+    // Where that is under one photon per cell, the cell launches single photons at random:
+    // plain Poisson counting, without the several-fold gain of stratification. Such kernels
+    // (large, far away) get more photons, up to one per cell, so that they converge with the
+    // stratified ones instead of setting the number of batches.
+    const double cellArea = desc.cellSize * desc.cellSize;
+    if (density * cellArea < 1.0) density = std::min(density * desc.sparseBoost, 1.0 / cellArea);
+    needs.push_back({world - drift * depth,
+                     slopeDrift * (depth + water.maxHeight()) + heightDrift + kernelReach + 1e-3,
+                     density});
+  }
+  f.window = searchWindows(reach, receivers.width, receivers.height);
+  std::vector<double> litNoise;
+  {
+    std::vector<std::thread> threads;
+    const int threadCount = std::max(1, desc.threads);
+    for (int t = 0; t < threadCount; ++t) {
+      threads.emplace_back([&, t] {
+        for (size_t i = static_cast<size_t>(t); i < count; i += static_cast<size_t>(threadCount))
+          if (receivers.valid[i]) result.lit[i] = litByFlatWater(f, i) ? 1 : 0;
+      });
+    }
+    for (std::thread& thread : threads) thread.join();
+  }
+  for (size_t i = 0; i < count; ++i) result.litPixels += result.lit[i];
+
+  PhotonLaunchPlan plan = planPhotonLaunch(needs, desc.cellSize);
+  if (plan.photons() > static_cast<double>(desc.maxPhotonsPerBatch)) {
+    const double thin = static_cast<double>(desc.maxPhotonsPerBatch) / plan.photons();
+    for (double& n : plan.need) n *= thin;
+  }
+  const auto perBatch = static_cast<std::uint64_t>(std::llround(plan.photons()));
+  result.photonsPerBatch = perBatch;
+
+  const int threadCount = std::max(1, desc.threads);
+  // Per pixel, over batches: the sum of the batch estimates and of their squares (summed in
+  // batch order from the integer batch sums: deterministic).
+  std::vector<double> sum(count, 0.0), squares(count, 0.0);
+  Accumulator batchTotal;
+  std::vector<Accumulator> partial(static_cast<size_t>(threadCount));
+  for (int batch = 0; batch < std::max(desc.maxBatches, 1); ++batch) {
+    std::vector<std::thread> threads;
+    for (int t = 0; t < threadCount; ++t) {
+      partial[static_cast<size_t>(t)].reset(count);
+      threads.emplace_back([&, t] {
+        for (int row = t; row < plan.rows; row += threadCount)
+          for (int column = 0; column < plan.columns; ++column)
+            traceCell(f, plan, batch, column, row, partial[static_cast<size_t>(t)]);
+      });
+    }
+    for (std::thread& thread : threads) thread.join();
+    batchTotal.reset(count);
+    for (const Accumulator& p : partial)
+      for (size_t i = 0; i < count; ++i) batchTotal.sum[i] += p.sum[i];
+    for (size_t i = 0; i < count; ++i) {
+      const double estimate = static_cast<double>(batchTotal.sum[i]) / kSumScale;
+      sum[i] += estimate;
+      squares[i] += estimate * estimate;
+    }
+    result.batches = batch + 1;
+    result.photons += perBatch;
+    const double batches = result.batches;
+    litNoise.clear();
+    for (size_t i = 0; i < count; ++i) {
+      if (!receivers.valid[i]) continue;
+      const double e = sum[i] / batches;
+      // Standard error of the mean of independent batch estimates, from their scatter.
+      const double variance =
+          batches > 1.0 ? std::max(squares[i] - batches * e * e, 0.0) / (batches - 1.0) : 0.0;
+      const double se = std::sqrt(variance / batches);
+      result.irradiance[i] = e;
+      result.standardError[i] = se;
+      result.noise[i] = se / std::max({e, result.flatIrradiance[i], kNoiseFloor});
+      if (result.lit[i]) litNoise.push_back(result.noise[i]);
+    }
+    result.noiseMedian = quantile(litNoise, 0.5);
+    result.noiseQuantile = quantile(litNoise, desc.noiseQuantile);
+    result.noiseMax = litNoise.empty() ? 0.0 : *std::max_element(litNoise.begin(), litNoise.end());
+    result.converged =
+        result.batches >= std::max(desc.minBatches, 2) && result.noiseQuantile < desc.targetNoise;
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const bool done = result.converged || result.batches >= desc.maxBatches;
+    if (desc.progress) {
+      desc.progress({result.batches, result.photons, result.noiseMedian, result.noiseQuantile,
+                     result.noiseMax, result.seconds, done, result.converged});
+    }
+    if (done) break;
+  }
+  return result;
+}
+
+}  // namespace ocean::reference

@@ -1,0 +1,107 @@
+#pragma once
+// Traced reference of a frame's seabed caustics: the irradiance that sunlight refracted by the
+// frame's own water surface delivers to every surface point the camera sees, by photon tracing
+// against the scene's real triangles (Embree) and density estimation at each pixel.
+//
+// Model:
+//   * A parallel sun beam crosses the mean water plane; photons are stratified over it, so each
+//     stands for an equal share of horizontal beam area within its launch cell. Each meets the
+//     height field y = level + h(x, z) (found by Newton's method along the sun, falling back
+//     to the seabed reference's march), is refracted by Snell's law through the normal
+//     given by the surface's slopes and weighted by the unpolarised Fresnel transmittance
+//     relative to flat water's. Geometry above the water can shade the photon before it enters.
+//   * The refracted photon is traced (Embree) to its first hit on the scene's triangles; a hit
+//     on a face turned away from it (its interpolated normal) absorbs it.
+//   * Irradiance at pixel i's surface point q_i (normal n_i) is the kernel density estimate
+//         E_i = sum_photons w K(|x - q_i|),  K(d) = 2 / (pi r_i^2) (1 - d^2 / r_i^2),  d < r_i,
+//     an Epanechnikov kernel on a disc of radius r_i = max(kernelScale * |q_i| * (radians per
+//     pixel) / sqrt(max(|cos(view, n_i)|, 1/16)), minKernelRadius) (the disc has the area of
+//     about pi pixel footprints), over photons whose surface normal is within 60 degrees of n_i.
+//     Units: flux per unit surface area with flat water giving 1 on a horizontal receiver; no
+//     absorption. Under flat water and no occluders a surface of normal n receives max(n.u, 0) /
+//     u.y, u the unperturbed refracted sun reversed (the "flat irradiance").
+//   * Noise: E_i is the mean of independent batches (each a complete stratified launch with its
+//     own jitter); its standard error is estimated from the batches' scatter, sqrt(var / B),
+//     and stated relative to max(E_i, flat irradiance, 0.2): relative where the caustic is
+//     bright, relative to the unperturbed light where it is dark (and to a fifth of a
+//     horizontal receiver's for surfaces nearly edge-on to the light). Batches are added, at
+//     least minBatches, until the `noiseQuantile` of that noise over lit pixels is below
+//     `targetNoise`, or maxBatches.
+//   * Launch density: cells of the water plane get the photon density that the receivers their
+//     light can reach need for kernelPhotonsPerBatch photons per kernel per batch (times
+//     sparseBoost for kernels so large that their cells launch single random photons; a pixel's
+//     light enters at most the largest slope drift from where flat water would bring it).
+// Deterministic: each cell's photons come from a hash of (seed, batch, cell); sums are kept in
+// 64-bit fixed point, so the result is bit-identical for any thread count.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "embree_scene.h"
+#include "frame_receivers.h"
+#include "seabed_reference.h"
+
+namespace ocean::reference {
+
+struct FrameTraceProgress {
+  int batch = 0;
+  std::uint64_t photons = 0;
+  double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;  // over lit pixels
+  double seconds = 0.0;
+  bool done = false, converged = false;
+};
+
+struct FrameTraceDesc {
+  glm::dvec3 towardSun{0.0, 1.0, 0.0};  // unit vector toward the sun, y > 0
+  double ior = 1.333;
+  double kernelScale = 1.0;  // kernel radius in (area-matched) pixel footprints, > 0
+  // Smallest kernel radius (m): near the camera a pixel-sized kernel would need photon
+  // densities beyond any budget; caustic features are larger than this.
+  double minKernelRadius = 0.01;
+  double targetNoise = 0.05;
+  double noiseQuantile = 0.99;  // of lit pixels' noise that must reach targetNoise
+  int minBatches = 8;           // the noise is measured from the scatter of batches: enough of them
+  int maxBatches = 24;
+  // Photons a kernel of a pixel lit as under flat water receives per batch (the launch
+  // density is planned for it). Poisson counting alone would give a relative error of
+  // sqrt(4 / (3 N)) per batch (33 % for 12); stratified launching does several times better.
+  double kernelPhotonsPerBatch = 12.0;
+  // ... times this where a cell would launch less than one photon per batch (Poisson counting,
+  // no stratification gain).
+  double sparseBoost = 8.0;
+  double cellSize = 0.25;  // launch cells on the water plane (m)
+  // Photons per batch at most: a plan above it is thinned uniformly (then the target noise
+  // may not be reached, which the result says).
+  std::uint64_t maxPhotonsPerBatch = 200'000'000;
+  std::uint64_t seed = 1;
+  int threads = 2;
+  std::function<void(const FrameTraceProgress&)> progress;  // after every batch
+};
+
+struct FrameTraceResult {
+  // Per pixel (FrameReceivers order); 0 where the pixel is no valid receiver.
+  std::vector<double> irradiance;      // traced, flat water on a horizontal receiver = 1
+  std::vector<double> flatIrradiance;  // max(n.u, 0) / u.y: flat water, no occluders
+  std::vector<double> standardError;   // of irradiance
+  std::vector<double> noise;           // standardError / max(irradiance, flatIrradiance)
+  std::vector<double> kernelRadius;    // m
+  // 1 where flat-water sunlight reaches the point: valid, facing the refracted sun, and no
+  // triangle on the unperturbed refracted ray up to the water nor above it toward the sun.
+  std::vector<std::uint8_t> lit;
+  size_t litPixels = 0;
+  double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;  // over lit pixels
+  std::uint64_t photons = 0;
+  std::uint64_t photonsPerBatch = 0;
+  int batches = 0;
+  bool converged = false;
+  double seconds = 0.0;
+};
+
+// `scene` must be built relative to receivers.camera (EmbreeScene::create's origin). `water`
+// is sampled at world x, z and gives heights relative to receivers.level.
+FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& scene,
+                                    const FrameReceivers& receivers, const FrameTraceDesc& desc);
+
+}  // namespace ocean::reference

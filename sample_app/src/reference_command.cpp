@@ -1,0 +1,95 @@
+// ocean_sample reference: the frame `render` draws, with the plugin's seabed caustic light
+// replaced by traced caustic light in the same units (see TracedCausticsPass and --help).
+#include <cstdio>
+#include <filesystem>
+
+#include <glcontext/context.h>
+
+#include "commands.h"
+#include "headless_session.h"
+#include "image_output.h"
+#include "traced_caustics_pass.h"
+
+namespace ocean {
+namespace {
+
+reference::FrameTraceDesc traceDesc(const Options& options) {
+  reference::FrameTraceDesc desc;
+  desc.seed = options.seed;
+  desc.targetNoise = options.noise;
+  desc.kernelScale = options.kernelScale;
+  desc.minKernelRadius = options.minKernelRadius;
+  desc.maxBatches = options.maxBatches;
+  desc.threads = options.threads;
+  desc.progress = [](const reference::FrameTraceProgress& p) {
+    std::printf(
+        "reference: batch %d, %.3g photons, lit-pixel noise median %.2f %%, p99 %.2f %%, max "
+        "%.2f %%, %.1f s%s\n",
+        p.batch, static_cast<double>(p.photons), 100.0 * p.noiseMedian, 100.0 * p.noiseQuantile,
+        100.0 * p.noiseMax, p.seconds,
+        p.done ? (p.converged ? ", converged" : ", BATCH CAP REACHED (not converged)") : "");
+    std::fflush(stdout);
+  };
+  return desc;
+}
+
+}  // namespace
+
+int runReference(const Options& options) {
+  std::string error;
+  if (!checkOutputPath(options.out, error)) return commandFailed(error);
+  if (std::filesystem::path(options.out).extension() != ".exr")
+    return commandFailed("reference writes linear radiance: --out must end in .exr, got '" +
+                         options.out + "'");
+  // The plugin runs with its own caustics off; the traced light takes their place.
+  Options frameOptions = options;
+  frameOptions.caustics = false;
+  HeadlessSession session;
+  if (!openHeadlessSession(frameOptions, /*debug=*/true, /*benchmarkFloor=*/false, session,
+                           error)) {
+    return commandFailed(error);
+  }
+  Renderer& renderer = *session.renderer;
+  const FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
+  auto traced = TracedCausticsPass::create(*session.plugin, session.scene, input.camera.position,
+                                           traceDesc(options), error);
+  if (!traced) return commandFailed(error);
+  std::printf("reference: %zu triangles in Embree, %dx%d pixels\n", traced->triangleCount(),
+              options.width, options.height);
+  const PluginPass plugin = renderer.pluginPass();
+  TracedCausticsPass* pass = traced.get();
+  renderer.setPluginPass([plugin, pass](const HostFrame& frame, std::string& message) {
+    return plugin(frame, message) && pass->run(frame, message);
+  });
+  if (!renderer.render(input, error)) return commandFailed(error);
+  for (const auto& message : session.context->debugLog().take()) {
+    if (message.type == GL_DEBUG_TYPE_ERROR)
+      return commandFailed(glcontext::debugMessageString(message));
+  }
+  const reference::FrameTraceResult& result = pass->result();
+  const std::vector<float> radiance = renderer.readRadiance();
+  const size_t n = static_cast<size_t>(options.width) * static_cast<size_t>(options.height);
+  const std::vector<std::string> channels = {
+      "R", "G", "B", "A", "caustic.E", "caustic.noise", "caustic.lit"};
+  std::vector<float> pixels(n * channels.size(), 0.0f);
+  for (size_t i = 0; i < n; ++i) {
+    float* out = &pixels[i * channels.size()];
+    for (int c = 0; c < 4; ++c) out[c] = radiance[4 * i + static_cast<size_t>(c)];
+    if (i < result.irradiance.size()) {
+      out[4] = static_cast<float>(result.irradiance[i]);
+      out[5] = static_cast<float>(result.noise[i]);
+      out[6] = result.lit[i] ? 1.0f : 0.0f;
+    }
+  }
+  if (!writeExrChannels(options.out, options.width, options.height, channels, pixels, error))
+    return commandFailed(error);
+  std::printf(
+      "reference: %s: %zu lit underwater pixels, %.3g photons in %d batches, noise median "
+      "%.2f %% p99 %.2f %% max %.2f %%, %s, trace %.1f s\n",
+      options.out.c_str(), result.litPixels, static_cast<double>(result.photons), result.batches,
+      100.0 * result.noiseMedian, 100.0 * result.noiseQuantile, 100.0 * result.noiseMax,
+      result.converged ? "converged" : "NOT converged", result.seconds);
+  return 0;
+}
+
+}  // namespace ocean

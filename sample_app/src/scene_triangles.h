@@ -1,0 +1,14 @@
+#pragma once
+// The scene's triangles in world space, placed exactly as GpuScene draws them (instance
+// transform, normals by its inverse transpose), for the traced reference's ray queries.
+#include <vector>
+
+#include <scene/model.h>
+
+#include "embree_scene.h"
+
+namespace ocean {
+
+std::vector<reference::TriangleMesh> sceneTriangles(const ocean_scene::Model& model);
+
+}  // namespace ocean

@@ -1,0 +1,66 @@
+#include "traced_caustics_pass.h"
+
+#include <epoxy/gl.h>
+
+#include "caustic_light_units.h"
+#include "gbuffer_readback.h"
+#include "scene_triangles.h"
+#include "water_readback.h"
+
+namespace ocean {
+
+std::unique_ptr<TracedCausticsPass> TracedCausticsPass::create(
+    const PluginSetup& plugin, const ocean_scene::Model& scene, const glm::dvec3& cameraPosition,
+    const reference::FrameTraceDesc& trace, std::string& error) {
+  std::unique_ptr<TracedCausticsPass> pass(new TracedCausticsPass());
+  pass->plugin_ = &plugin;
+  pass->trace_ = trace;
+  pass->sceneOrigin_ = cameraPosition;
+  pass->scene_ = reference::EmbreeScene::create(sceneTriangles(scene), cameraPosition, error);
+  if (!pass->scene_) return nullptr;
+  return pass;
+}
+
+bool TracedCausticsPass::run(const HostFrame& frame, std::string& error) {
+  const postfx::FrameDesc& desc = plugin_->lastFrame();
+  const postfx::CreateDesc& create = plugin_->createDesc();
+  if (desc.camera.position != sceneOrigin_) {
+    error = "traced caustics: the scene was built around another camera position";
+    return false;
+  }
+  reference::GBufferCopy gbuffer;
+  if (!reference::readGBuffer(create, desc, gbuffer, error)) return false;
+  reference::WaterTextureSurface water;
+  if (!water.read(desc.water, error)) return false;
+  const glm::dmat3 worldToView(glm::mat3(desc.camera.view));
+  const glm::dvec4 projection(desc.camera.projection[0][0], desc.camera.projection[1][1],
+                              desc.camera.projection[2][0], desc.camera.projection[2][1]);
+  receivers_ = reference::makeFrameReceivers(gbuffer.width, gbuffer.height, desc.camera.position,
+                                             worldToView, projection, desc.water.level,
+                                             gbuffer.viewPosition, gbuffer.normal, gbuffer.sky);
+  reference::FrameTraceDesc trace = trace_;
+  trace.towardSun = glm::normalize(desc.sun.direction);
+  trace.ior = desc.water.ior;
+  result_ = {};
+  if (trace.towardSun.y > 0.0)
+    result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);
+
+  // Add the traced light into the host's HDR target, where the plugin would have added its own.
+  const GLuint target = frame.targets.hdr();
+  const size_t n = receivers_.size();
+  std::vector<glm::vec4> radiance(n);
+  glGetTextureImage(target, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)),
+                    radiance.data());
+  const reference::CausticLightUnits units = reference::causticLightUnits(desc);
+  for (size_t i = 0; i < n && !result_.irradiance.empty(); ++i) {
+    if (!receivers_.valid[i] || !(result_.irradiance[i] > 0.0)) continue;
+    const glm::vec3 light = reference::referenceCausticLight(
+        units, gbuffer.albedo[i], receivers_.depthBelow(i), result_.irradiance[i]);
+    radiance[i] += glm::vec4(light, 0.0f);
+  }
+  glTextureSubImage2D(target, 0, 0, 0, receivers_.width, receivers_.height, GL_RGBA, GL_FLOAT,
+                      radiance.data());
+  return true;
+}
+
+}  // namespace ocean

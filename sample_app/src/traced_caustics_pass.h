@@ -1,0 +1,49 @@
+#pragma once
+// The pass that replaces the plugin's seabed caustics by traced light in a frame: it runs after
+// the plugin (whose own caustics are off), reads back the frame's G-buffer and water texture,
+// traces the sun through that water against the scene's triangles
+// (reference::traceFrameCaustics) and adds, at every pixel under the water, the light the
+// plugin's caustics pass would add there with its caustic factor replaced by the traced
+// irradiance (reference::referenceCausticLight: the same units). The rest of the frame (fog,
+// water surface, tone mapping) then runs unchanged.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <scene/model.h>
+
+#include "frame_caustics_reference.h"
+#include "plugin_setup.h"
+#include "renderer.h"
+
+namespace ocean {
+
+class TracedCausticsPass {
+ public:
+  // `trace` without sun and IOR (taken from the frame). Builds the Embree scene of `scene`
+  // around `cameraPosition` (the frame's camera).
+  static std::unique_ptr<TracedCausticsPass> create(const PluginSetup& plugin,
+                                                    const ocean_scene::Model& scene,
+                                                    const glm::dvec3& cameraPosition,
+                                                    const reference::FrameTraceDesc& trace,
+                                                    std::string& error);
+
+  // Call right after the plugin's own pass, inside the frame.
+  bool run(const HostFrame& frame, std::string& error);
+
+  // After run(): the trace and the receivers it was gathered on.
+  const reference::FrameTraceResult& result() const { return result_; }
+  const reference::FrameReceivers& receivers() const { return receivers_; }
+  size_t triangleCount() const { return scene_->triangleCount(); }
+
+ private:
+  TracedCausticsPass() = default;
+  const PluginSetup* plugin_ = nullptr;
+  std::unique_ptr<reference::EmbreeScene> scene_;
+  glm::dvec3 sceneOrigin_{0.0};
+  reference::FrameTraceDesc trace_;
+  reference::FrameReceivers receivers_;
+  reference::FrameTraceResult result_;
+};
+
+}  // namespace ocean
