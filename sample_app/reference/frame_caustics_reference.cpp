@@ -93,7 +93,7 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
   const size_t cell = static_cast<size_t>(cellZ) * plan.columns + cellX;
   const double need = plan.need[cell];
   if (!(need > 0.0)) return;
-  water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
+  postfx::water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
                                (static_cast<std::uint64_t>(batch) << 40) ^
                                (cell * 0xD1B54A32D192ED03ull));
   random.nextBits();
