@@ -26,10 +26,18 @@ bool parseDouble(std::string_view text, double& value) {
 
 // Options that take a value; anything else that starts with "--" is unknown, value or not.
 bool takesValue(std::string_view flag) {
-  for (std::string_view known :
-       {"--preset", "--width", "--height", "--time", "--tau", "--caustics-model", "--caustics-grid",
-        "--god-rays-resolution", "--model", "--out", "--json", "--only", "--frames",
-        "--water-resolution"})
+  for (std::string_view known : {"--preset",        "--width",
+                                 "--height",        "--time",
+                                 "--tau",           "--caustics-model",
+                                 "--caustics-grid", "--god-rays-resolution",
+                                 "--model",         "--out",
+                                 "--json",          "--only",
+                                 "--frames",        "--water-resolution",
+                                 "--seed",          "--noise",
+                                 "--kernel",        "--min-kernel",
+                                 "--max-batches",   "--threads",
+                                 "--plugin",        "--reference",
+                                 "--base"})
     if (flag == known) return true;
   return false;
 }
