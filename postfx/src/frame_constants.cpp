@@ -55,7 +55,7 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
       glm::vec4(params.z, static_cast<float>(levelRelative), static_cast<float>(radiansPerPixel));
 
   b.towardSun = glm::vec4(glm::vec3(sun), settings.tau);
-  b.reflection = glm::vec4(settings.reflectionWeight, 0.0f, 0.0f, 0.0f);
+  b.reference = glm::vec4(glm::vec3(incidencePlaneNormal(sun)), settings.reflectionWeight);
   const glm::dvec3 up = -refractedSunDown(sun, surface.ior);
   b.refractedUp = glm::vec4(glm::vec3(up), settings.surfaceFadeDepth);
   const bool dispersion = hasFeature(create.features, Feature::Dispersion);

@@ -104,7 +104,7 @@ void main() {
   float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
 
   float tau = u.towardSun.w;
-  float reflectionWeight = u.reflection.x;
+  float reflectionWeight = u.reference.w;
   float physicalWeight = 0.0;
 #if POSTFX_PHYSICAL
   // One irradiance for all channels: the mesh is refracted with the mean IOR.

@@ -43,8 +43,8 @@ vec3 sunSource(vec3 p, float t) {
   // Looked up where this point's light entered the water, as the caustics pass does.
   vec3 waterNormal =
       waterNormalFromSlopes(cascadeSlopes(lightEntryCoord(p), 1, logFootprint, cascades));
-  float omega = causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, u.towardSun.w,
-                              u.reflection.x);
+  float omega = causticFactorAcrossIncidence(u.towardSun.xyz, waterNormal, u.eta.g,
+                                             u.reference.xyz, u.towardSun.w, u.reference.w);
   return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);
 }
 

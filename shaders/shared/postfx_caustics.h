@@ -82,6 +82,31 @@ SHARED_FN vec3 causticFactorRgb(vec3 towardSun, vec3 waterNormal, vec3 eta, floa
   return mix(omegaT, vec3(reflectedOmega(incident, waterNormal, c, tau)), reflectionWeight);
 }
 
+// The seed's own form, kept for the god rays: a is the cosine between the ray and `across`, the
+// unit vector perpendicular to the plane of incidence, i.e. only the deviation across that
+// plane. Along a view ray through the water it gives shafts as sheets along the sun's azimuth;
+// the god-ray tests, reference (sample_app/reference/godray_reference.cpp) and report rows are
+// calibrated against it. With I the incident sun, N the water normal, c = N.I and
+// k = 1 - eta^2 (1 - c^2): across.refract = eta (I.across) - (eta c + sqrt(k)) (N.across) (0 when
+// k < 0), across.reflect = I.across - 2 c (N.across): dot products only, as it runs per sample.
+SHARED_FN float causticOmegaOfCosine(float a, float tau) {
+  float c = clamp(a, -1.0f, 1.0f);
+  return exp(-tau * (c * c));
+}
+
+SHARED_FN float causticFactorAcrossIncidence(vec3 towardSun, vec3 waterNormal, float eta,
+                                             vec3 across, float tau, float reflectionWeight) {
+  vec3 incident = -towardSun;
+  float c = dot(waterNormal, incident);
+  float incidentDotAcross = dot(incident, across), normalDotAcross = dot(waterNormal, across);
+  float k = 1.0f - eta * eta * (1.0f - c * c);
+  float refracted =
+      k < 0.0f ? 0.0f : eta * incidentDotAcross - (eta * c + sqrt(max(k, 0.0f))) * normalDotAcross;
+  float omegaT = causticOmegaOfCosine(refracted, tau);
+  float omegaR = causticOmegaOfCosine(incidentDotAcross - 2.0f * c * normalDotAcross, tau);
+  return mix(omegaT, omegaR, reflectionWeight);
+}
+
 // Beer-Lambert transmittance along the refracted sun path to a receiver `depthBelow` metres
 // under the level: `absorptionPerDepth` is sigma / cos(theta_t), folded on the CPU.
 SHARED_FN vec3 causticTransmittance(vec3 absorptionPerDepth, float depthBelow) {

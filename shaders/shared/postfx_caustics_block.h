@@ -21,7 +21,8 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
   vec4 projection;          // P[0][0], P[1][1], P[2][0], P[2][1]
   vec4 depthAndWater;       // P[2][2], P[3][2], water level - camera y (m), radians per pixel
   vec4 towardSun;           // xyz: unit vector toward the sun; w: tau
-  vec4 reflection;          // x: reflection weight; yzw: unused
+  vec4 reference;           // xyz: unit vector perpendicular to the plane of incidence (the god
+                            // rays' factor); w: reflection weight
   vec4 refractedUp;         // xyz: unperturbed refracted sun ray reversed (receiver -> surface)
                             // w: surface fade depth (m)
   vec4 eta;                 // 1 / IOR for R, G, B; w: tri-planar sharpness

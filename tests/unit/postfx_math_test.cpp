@@ -125,6 +125,38 @@ TEST(PostfxCausticMath, FactorIsIsotropicForAZenithSun) {
   EXPECT_LT(ratio, 2.0);
 }
 
+// The god rays' factor (the seed's: only the deviation across the plane of incidence) is written
+// with dot products; it must equal refract()/reflect() dotted with that plane's normal.
+TEST(PostfxCausticMath, AcrossIncidenceFactorEqualsRefractAndReflect) {
+  double worst = 0.0;
+  for (double elevation : {89.9, 60.0, 20.0, 3.0}) {
+    const double e = glm::radians(elevation);
+    const glm::dvec3 sun(std::cos(e) * 0.6, std::sin(e), std::cos(e) * 0.8);
+    const glm::vec3 across(postfx::detail::incidencePlaneNormal(sun));
+    for (float eta : {1.0f / 1.333f, 1.0f, 1.5f}) {
+      for (float sx = -3.0f; sx <= 3.0f; sx += 0.37f) {
+        for (float sz = -3.0f; sz <= 3.0f; sz += 0.41f) {
+          const glm::vec3 n = sh::waterNormalFromSlopes(glm::vec2(sx, sz));
+          const glm::vec3 refracted = glm::refract(-glm::vec3(sun), n, eta);
+          const glm::vec3 reflected = glm::reflect(-glm::vec3(sun), n);
+          const float t = sh::causticOmegaOfCosine(glm::dot(refracted, across), 800.0f);
+          const float r = sh::causticOmegaOfCosine(glm::dot(reflected, across), 800.0f);
+          const float got =
+              sh::causticFactorAcrossIncidence(glm::vec3(sun), n, eta, across, 800.0f, 0.25f);
+          worst = std::max(worst, std::abs(static_cast<double>(got - (t + (r - t) * 0.25f))));
+        }
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-5);  // float rounding of the cosines times |d omega / da| <= 24
+  // Tilting the water along the plane of incidence leaves it at 1: why the seabed uses the
+  // whole deviation instead (FactorIsIsotropicForAZenithSun).
+  const glm::vec3 zenith(0.0f, 1.0f, 0.0f);
+  EXPECT_FLOAT_EQ(sh::causticFactorAcrossIncidence(zenith, sh::waterNormalFromSlopes({0.0f, 0.1f}),
+                                                   0.75f, glm::vec3(1, 0, 0), 800.0f, 0.0f),
+                  1.0f);
+}
+
 TEST(PostfxCausticMath, DispersedFactorIsThePerChannelFactor) {
   const glm::vec3 sun = glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f));
   const glm::vec3 eta(1.0f / 1.331f, 1.0f / 1.337f, 1.0f / 1.343f);
