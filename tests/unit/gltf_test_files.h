@@ -1,0 +1,112 @@
+#pragma once
+// Small glTF files written by the tests themselves (no committed blobs): a one-triangle model
+// as .gltf JSON text with an external or embedded buffer, or wrapped into a .glb container.
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace gltf_test_files {
+
+// Three float positions (0,0,0) (1,0,0) (0,0,-1): 36 bytes.
+inline std::vector<unsigned char> trianglePositions() {
+  const float p[9] = {0, 0, 0, 1, 0, 0, 0, 0, -1};
+  std::vector<unsigned char> bytes(sizeof p);
+  std::memcpy(bytes.data(), p, sizeof p);
+  return bytes;
+}
+
+// base64 of trianglePositions(), for a data: URI.
+inline std::string trianglePositionsBase64() {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const auto bytes = trianglePositions();
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::uint32_t n = (std::uint32_t(bytes[i]) << 16) |
+                            (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0) |
+                            (i + 2 < bytes.size() ? std::uint32_t(bytes[i + 2]) : 0);
+    out += table[(n >> 18) & 63];
+    out += table[(n >> 12) & 63];
+    out += i + 1 < bytes.size() ? table[(n >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? table[n & 63] : '=';
+  }
+  return out;
+}
+
+// The parts of a one-triangle glTF that tests vary. `buffer` is the buffers[0] object's
+// members besides byteLength ("" for a GLB's BIN chunk).
+struct TriangleJson {
+  std::string buffer =
+      "\"uri\": \"data:application/octet-stream;base64," + trianglePositionsBase64() + "\"";
+  std::string accessor = "\"min\": [0, 0, -1], \"max\": [1, 0, 0]";  // extra accessor members
+  std::string nodes = "{\"mesh\": 0}";
+  std::string sceneNodes = "0";
+  std::string primitive = "";  // extra primitive members, e.g. "\"mode\": 5"
+  std::string top = "";        // extra top-level members, with a trailing comma
+  int count = 3;
+
+  std::string text() const {
+    return "{" + top + "\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{" + buffer +
+           (buffer.empty() ? "" : ", ") +
+           "\"byteLength\": 36}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}], "
+           "\"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": " +
+           std::to_string(count) + ", \"type\": \"VEC3\"" + (accessor.empty() ? "" : ", ") +
+           accessor +
+           "}], \"meshes\": [{\"name\": \"tri\", \"primitives\": [{\"attributes\": "
+           "{\"POSITION\": 0}" +
+           (primitive.empty() ? "" : ", ") + primitive + "}]}], \"nodes\": [" + nodes +
+           "], \"scenes\": [{\"nodes\": [" + sceneNodes + "]}], \"scene\": 0}";
+  }
+};
+
+// A GLB container: JSON chunk padded with spaces, BIN chunk (if any) padded with zeros.
+inline std::vector<unsigned char> glb(std::string json, std::vector<unsigned char> bin) {
+  while (json.size() % 4 != 0) json += ' ';
+  while (bin.size() % 4 != 0) bin.push_back(0);
+  std::vector<unsigned char> out;
+  auto u32 = [&out](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+  };
+  const std::uint32_t total =
+      12 + 8 + std::uint32_t(json.size()) + (bin.empty() ? 0 : 8 + std::uint32_t(bin.size()));
+  u32(0x46546C67u);  // "glTF"
+  u32(2);
+  u32(total);
+  u32(std::uint32_t(json.size()));
+  u32(0x4E4F534Au);
+  out.insert(out.end(), json.begin(), json.end());
+  if (!bin.empty()) {
+    u32(std::uint32_t(bin.size()));
+    u32(0x004E4942u);
+    out.insert(out.end(), bin.begin(), bin.end());
+  }
+  return out;
+}
+
+// The triangle as a .glb with its positions in the BIN chunk.
+inline std::vector<unsigned char> triangleGlb(TriangleJson json = {}) {
+  json.buffer = "";
+  return glb(json.text(), trianglePositions());
+}
+
+inline void writeFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+}
+
+inline void writeFile(const std::filesystem::path& path, const std::vector<unsigned char>& bytes) {
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  file.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// A fresh empty directory under the test temp dir.
+inline std::filesystem::path freshDir(const std::filesystem::path& root, const std::string& name) {
+  const auto dir = root / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace gltf_test_files
