@@ -19,10 +19,15 @@ inline std::vector<unsigned char> trianglePositions() {
   return bytes;
 }
 
-// base64 of trianglePositions(), for a data: URI.
-inline std::string trianglePositionsBase64() {
+inline std::vector<unsigned char> bytesOf(const std::vector<float>& values) {
+  std::vector<unsigned char> bytes(values.size() * sizeof(float));
+  std::memcpy(bytes.data(), values.data(), bytes.size());
+  return bytes;
+}
+
+// base64, for a data: URI.
+inline std::string base64(const std::vector<unsigned char>& bytes) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  const auto bytes = trianglePositions();
   std::string out;
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
     const std::uint32_t n = (std::uint32_t(bytes[i]) << 16) |
@@ -36,25 +41,32 @@ inline std::string trianglePositionsBase64() {
   return out;
 }
 
-// The parts of a one-triangle glTF that tests vary. `buffer` is the buffers[0] object's
-// members besides byteLength ("" for a GLB's BIN chunk).
+// The parts of a one-triangle glTF that tests vary.
 struct TriangleJson {
-  std::string buffer =
-      "\"uri\": \"data:application/octet-stream;base64," + trianglePositionsBase64() + "\"";
+  std::vector<unsigned char> data = trianglePositions();  // the buffer's bytes
+  std::string buffer = "";  // "" = data as a data: URI; else the members besides byteLength
+  bool binChunk = false;    // the buffer is a GLB's BIN chunk (no uri)
   std::string accessor = "\"min\": [0, 0, -1], \"max\": [1, 0, 0]";  // extra accessor members
   std::string nodes = "{\"mesh\": 0}";
   std::string sceneNodes = "0";
   std::string primitive = "";  // extra primitive members, e.g. "\"mode\": 5"
   std::string top = "";        // extra top-level members, with a trailing comma
   int count = 3;
+  int componentType = 5126;  // FLOAT
 
   std::string text() const {
-    return "{" + top + "\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{" + buffer +
-           (buffer.empty() ? "" : ", ") +
-           "\"byteLength\": 36}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}], "
-           "\"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": " +
-           std::to_string(count) + ", \"type\": \"VEC3\"" + (accessor.empty() ? "" : ", ") +
-           accessor +
+    const std::string length = std::to_string(data.size());
+    const std::string members =
+        binChunk ? ""
+        : buffer.empty()
+            ? "\"uri\": \"data:application/octet-stream;base64," + base64(data) + "\", "
+            : buffer + ", ";
+    return "{" + top + "\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{" + members +
+           "\"byteLength\": " + length +
+           "}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": " + length +
+           "}], \"accessors\": [{\"bufferView\": 0, \"componentType\": " +
+           std::to_string(componentType) + ", \"count\": " + std::to_string(count) +
+           ", \"type\": \"VEC3\"" + (accessor.empty() ? "" : ", ") + accessor +
            "}], \"meshes\": [{\"name\": \"tri\", \"primitives\": [{\"attributes\": "
            "{\"POSITION\": 0}" +
            (primitive.empty() ? "" : ", ") + primitive + "}]}], \"nodes\": [" + nodes +
@@ -88,8 +100,8 @@ inline std::vector<unsigned char> glb(std::string json, std::vector<unsigned cha
 
 // The triangle as a .glb with its positions in the BIN chunk.
 inline std::vector<unsigned char> triangleGlb(TriangleJson json = {}) {
-  json.buffer = "";
-  return glb(json.text(), trianglePositions());
+  json.binChunk = true;
+  return glb(json.text(), json.data);
 }
 
 inline void writeFile(const std::filesystem::path& path, const std::string& text) {
