@@ -279,7 +279,7 @@ bool flattenNodes(const tinygltf::Model& model,
           error = nodeLabel(nodeIndex, node) + ": " + problem;
           return false;
         }
-        out.instances.push_back(Instance{mesh, glm::mat4(world), node.name});
+        out.instances.push_back(Instance{mesh, glm::mat4(world), gltf::safeOneLine(node.name)});
       }
     }
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
@@ -301,6 +301,7 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     Material material;
     if (!gltf::readMaterial(model.materials[i], material, error)) return false;
+    material.name = gltf::safeOneLine(material.name);  // printed in the sample's warnings
     out.materials.push_back(std::move(material));
   }
   // Primitives without a material get the glTF default material, added once at the end.
@@ -311,8 +312,8 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = source.primitives[p];
       Mesh mesh;
-      mesh.name =
-          source.primitives.size() == 1 ? source.name : source.name + "#" + std::to_string(p);
+      mesh.name = gltf::safeOneLine(
+          source.primitives.size() == 1 ? source.name : source.name + "#" + std::to_string(p));
       if (!gltf::readPrimitive(model, primitive, mesh, error, notes)) {
         error = "mesh " + std::to_string(m) + " '" + source.name + "' primitive " +
                 std::to_string(p) + ": " + error;
