@@ -116,6 +116,35 @@ TEST(SceneGltfFeatures, SparseAccessorsApplied) {
   EXPECT_NE(refusal(d / "unordered.gltf").find("not increasing"), std::string::npos);
 }
 
+// EXT_mesh_gpu_instancing: one node, one instance per TRANSLATION element.
+TEST(SceneGltfFeatures, GpuInstancingGivesOneInstancePerCopy) {
+  const fs::path d = dir("instancing");
+  std::vector<unsigned char> data = gltf_test_files::trianglePositions();
+  const auto offsets = gltf_test_files::bytesOf({0, 0, 0, 5, 0, 0, 0, 3, 0});
+  data.insert(data.end(), offsets.begin(), offsets.end());
+  const auto file = [&](const std::string& extra) {
+    return "{" + extra +
+           "\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": "
+           "\"data:application/octet-stream;base64," +
+           gltf_test_files::base64(data) +
+           "\", \"byteLength\": 72}], \"bufferViews\": "
+           "[{\"buffer\": 0, \"byteLength\": 36}, {\"buffer\": 0, \"byteOffset\": 36, "
+           "\"byteLength\": 36}], \"accessors\": [{\"bufferView\": 0, \"componentType\": "
+           "5126, \"count\": 3, \"type\": \"VEC3\", \"min\": [0, 0, -1], \"max\": [1, 0, 0]}, "
+           "{\"bufferView\": 1, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\"}], "
+           "\"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}}]}], "
+           "\"nodes\": [{\"mesh\": 0, \"translation\": [0, 10, 0], \"extensions\": "
+           "{\"EXT_mesh_gpu_instancing\": {\"attributes\": {\"TRANSLATION\": 1}}}}], "
+           "\"scenes\": [{\"nodes\": [0]}], \"scene\": 0}";
+  };
+  writeFile(d / "i.gltf", file("\"extensionsUsed\": [\"EXT_mesh_gpu_instancing\"], "));
+  const Model model = load(d / "i.gltf");
+  ASSERT_EQ(model.instances.size(), 3u);
+  EXPECT_EQ(glm::vec3(model.instances[0].transform[3]), glm::vec3(0, 10, 0));
+  EXPECT_EQ(glm::vec3(model.instances[1].transform[3]), glm::vec3(5, 10, 0));
+  EXPECT_EQ(glm::vec3(model.instances[2].transform[3]), glm::vec3(0, 13, 0));
+}
+
 // Scale 0 is a common way to hide a node: it is left out with a note naming it, and the rest
 // of the file loads.
 TEST(SceneGltfFeatures, HiddenNodeLeftOutWithANote) {

@@ -298,8 +298,8 @@ bool isQuantizedType(int componentType) {
 
 }  // namespace
 
-bool readVec3(const tinygltf::Model& model, int accessorIndex, const std::string& what,
-              bool quantizationAllowed, std::vector<glm::vec3>& out, std::string& error) {
+bool readFloats(const tinygltf::Model& model, int accessorIndex, const std::string& what, int type,
+                bool quantizationAllowed, std::vector<float>& out, std::string& error) {
   if (accessorIndex < 0 || static_cast<std::size_t>(accessorIndex) >= model.accessors.size()) {
     error = accessorName(accessorIndex, what) + " does not exist";
     return false;
@@ -307,9 +307,8 @@ bool readVec3(const tinygltf::Model& model, int accessorIndex, const std::string
   const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(accessorIndex)];
   const bool isFloat =
       accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized;
-  if (accessor.type != TINYGLTF_TYPE_VEC3 ||
-      !(isFloat || isQuantizedType(accessor.componentType))) {
-    error = accessorName(accessorIndex, what) + " must be VEC3 FLOAT, found " +
+  if (accessor.type != type || !(isFloat || isQuantizedType(accessor.componentType))) {
+    error = accessorName(accessorIndex, what) + " must be " + typeName(type) + " FLOAT, found " +
             typeName(accessor.type) + " component type " + std::to_string(accessor.componentType);
     return false;
   }
@@ -321,14 +320,24 @@ bool readVec3(const tinygltf::Model& model, int accessorIndex, const std::string
   }
   std::vector<double> raw;
   if (!readRaw(model, accessorIndex, what, raw, error)) return false;
-  out.resize(raw.size() / 3);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const double v = raw[i * 3 + static_cast<std::size_t>(c)];
-      out[i][c] =
-          static_cast<float>(accessor.normalized ? normalise(v, accessor.componentType) : v);
-    }
+  out.resize(raw.size());
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    out[i] = static_cast<float>(accessor.normalized ? normalise(raw[i], accessor.componentType)
+                                                    : raw[i]);
   }
+  return true;
+}
+
+bool readVec3(const tinygltf::Model& model, int accessorIndex, const std::string& what,
+              bool quantizationAllowed, std::vector<glm::vec3>& out, std::string& error) {
+  std::vector<float> values;
+  if (!readFloats(model, accessorIndex, what, TINYGLTF_TYPE_VEC3, quantizationAllowed, values,
+                  error)) {
+    return false;
+  }
+  out.resize(values.size() / 3);
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vec3 must be packed");
+  std::memcpy(out.data(), values.data(), out.size() * sizeof(glm::vec3));
   return true;
 }
 

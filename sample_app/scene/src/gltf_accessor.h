@@ -16,6 +16,11 @@ namespace ocean_scene::gltf {
 bool readVec3(const tinygltf::Model& model, int accessorIndex, const std::string& what,
               bool quantizationAllowed, std::vector<glm::vec3>& out, std::string& error);
 
+// Any float vector accessor of glTF type `type` (TINYGLTF_TYPE_VEC4, ...), flattened; the same
+// rules as readVec3.
+bool readFloats(const tinygltf::Model& model, int accessorIndex, const std::string& what, int type,
+                bool quantizationAllowed, std::vector<float>& out, std::string& error);
+
 // A scalar u8/u16/u32 index accessor, widened to u32.
 bool readIndices(const tinygltf::Model& model, int accessorIndex, std::vector<std::uint32_t>& out,
                  std::string& error);

@@ -12,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf_file.h"
+#include "gltf_instancing.h"
 #include "gltf_material.h"
 #include "gltf_preflight.h"
 #include "gltf_primitive.h"
@@ -265,21 +266,31 @@ bool flattenNodes(const tinygltf::Model& model,
         error = "node '" + node.name + "' refers to missing mesh " + std::to_string(node.mesh);
         return false;
       }
-      for (std::uint32_t mesh : meshMap[static_cast<std::size_t>(node.mesh)]) {
-        bool hidden = false;
-        const std::string problem =
-            composedProblem(world, bounds[mesh].lo, bounds[mesh].hi, hidden);
-        if (hidden) {
-          // Left out with a note: drawing it would show nothing, and the plugin refuses it.
-          if (++hiddenCount <= 4)
-            notes += nodeLabel(nodeIndex, node) + " left out: " + problem + "; ";
-          break;
+      std::vector<glm::dmat4> copies;
+      if (!gltf::readGpuInstances(model, node, copies, error)) {
+        error = nodeLabel(nodeIndex, node) + ": " + error;
+        return false;
+      }
+      if (copies.empty()) copies.push_back(glm::dmat4(1.0));
+      for (const glm::dmat4& copy : copies) {
+        const glm::dmat4 placed = world * copy;
+        for (std::uint32_t mesh : meshMap[static_cast<std::size_t>(node.mesh)]) {
+          bool hidden = false;
+          const std::string problem =
+              composedProblem(placed, bounds[mesh].lo, bounds[mesh].hi, hidden);
+          if (hidden) {
+            // Left out with a note: drawing it would show nothing, and the plugin refuses it.
+            if (++hiddenCount <= 4) {
+              notes += nodeLabel(nodeIndex, node) + " left out: " + problem + "; ";
+            }
+            break;
+          }
+          if (!problem.empty()) {
+            error = nodeLabel(nodeIndex, node) + ": " + problem;
+            return false;
+          }
+          out.instances.push_back(Instance{mesh, glm::mat4(placed), gltf::safeOneLine(node.name)});
         }
-        if (!problem.empty()) {
-          error = nodeLabel(nodeIndex, node) + ": " + problem;
-          return false;
-        }
-        out.instances.push_back(Instance{mesh, glm::mat4(world), gltf::safeOneLine(node.name)});
       }
     }
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {

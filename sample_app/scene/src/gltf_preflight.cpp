@@ -96,7 +96,8 @@ std::string describeExtension(const std::string& name) {
 // Extensions this loader honours (or, for geometry-only ones, makes no difference to).
 bool supportedExtension(const std::string& name) {
   return name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
-         name == "KHR_materials_volume" || name == "KHR_mesh_quantization";
+         name == "KHR_materials_volume" || name == "KHR_mesh_quantization" ||
+         name == "EXT_mesh_gpu_instancing";
 }
 
 bool checkExtensions(const Json& root, Preflight& out, std::string& error) {
