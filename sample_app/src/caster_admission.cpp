@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 #include "gpu_scene.h"
 
@@ -51,6 +52,7 @@ std::string casterRefusal(const ocean_scene::Material& material, const glm::mat4
 void admitCasters(ocean_scene::Model& scene, std::vector<std::string>& warnings) {
   int admitted = 0;
   int overBudget = 0;
+  std::set<std::uint32_t> clampWarned;
   std::string firstOverBudget;
   for (ocean_scene::Instance& instance : scene.instances) {
     if (!instance.castsCaustics || instance.mesh >= scene.meshes.size()) continue;
@@ -63,6 +65,14 @@ void admitCasters(ocean_scene::Model& scene, std::vector<std::string>& warnings)
       instance.castsCaustics = false;
       warnings.push_back(instance.name + ": casts no caustics, " + refusal);
       continue;
+    }
+    // casterMaterial clamps the IOR to the plugin's [1, 3]; say so once per material.
+    if (material.isRefractive() && material.ior > 3.0f &&
+        clampWarned.insert(materialIndex).second) {
+      char ior[32];
+      std::snprintf(ior, sizeof ior, "%.3g", double(material.ior));
+      warnings.push_back(instance.name + ": material '" + material.name + "' ior " + ior +
+                         " is clamped to 3, the plugin's limit");
     }
     if (admitted == postfx::kMaxCasters) {
       instance.castsCaustics = false;

@@ -142,6 +142,19 @@ TEST(SampleCasterAdmission, ExtremeAttenuationLeftOutWithAWarning) {
   EXPECT_NE(casterRefusal(glass(), glm::mat4(0.0f)).find("not invertible"), std::string::npos);
 }
 
+TEST(SampleCasterAdmission, IorAboveThreeClampedWithAWarning) {
+  ocean_scene::Material diamondish = glass();
+  diamondish.ior = 4.2f;
+  ocean_scene::Model scene = casterScene(2, diamondish);
+  std::vector<std::string> warnings;
+  admitCasters(scene, warnings);
+  EXPECT_TRUE(scene.instances[0].castsCaustics && scene.instances[1].castsCaustics);
+  ASSERT_EQ(warnings.size(), 1u);  // once per material, not per instance
+  EXPECT_NE(warnings[0].find("material 'glass' ior 4.2 is clamped to 3"), std::string::npos)
+      << warnings[0];
+  EXPECT_EQ(casterMaterial(diamondish).ior, 3.0f);
+}
+
 // More glass and metal than the plugin takes: the first kMaxCasters cast, the rest are drawn
 // without caustics, and one warning says how many and from which on.
 TEST(SampleCasterAdmission, CasterBudgetIsNeverSilent) {
