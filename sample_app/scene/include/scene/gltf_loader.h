@@ -17,7 +17,8 @@ namespace ocean_scene {
 // `out`: one Mesh per primitive (mesh space), one Instance per node that has a mesh, with the
 // node hierarchy's transforms flattened into Instance::transform. Missing normals are
 // generated. Triangle lists, strips and fans are accepted (strips and fans become lists);
-// sparse accessors and KHR_mesh_quantization are read. Draco, meshopt and other unsupported
+// sparse accessors, KHR_mesh_quantization and EXT_mesh_gpu_instancing (one Instance per copy)
+// are read. Draco, meshopt and other unsupported
 // extensionsRequired are refused by name. Materials include KHR_materials_ior,
 // KHR_materials_transmission and KHR_materials_volume; textures are ignored. A node whose
 // composed transform is not invertible (scale 0: hidden) is left out with a note.
