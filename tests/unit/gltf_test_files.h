@@ -104,6 +104,41 @@ inline std::vector<unsigned char> triangleGlb(TriangleJson json = {}) {
   return glb(json.text(), json.data);
 }
 
+// A quad as a triangle strip using most of what the loader reads beyond plain floats: sparse
+// positions, KHR_mesh_quantization normals (normalised bytes) and EXT_mesh_gpu_instancing
+// (two copies). As a .glb when `binary`, else a .gltf with a data: URI.
+inline std::vector<unsigned char> featureRichModel(bool binary) {
+  std::vector<unsigned char> data = bytesOf({0, 0, 0, 1, 0, 0, 0, 0, -1, 1, 0, -1});  // 0..48
+  for (int v = 0; v < 4; ++v) data.insert(data.end(), {0, 127, 0, 0});                // 48..64
+  data.insert(data.end(), {1, 0, 0, 0});                                              // 64..68
+  const auto sparseValue = bytesOf({1, 0, 0});                                        // 68..80
+  data.insert(data.end(), sparseValue.begin(), sparseValue.end());
+  const auto offsets = bytesOf({0, 0, 0, 2, 0, 0});  // 80..104
+  data.insert(data.end(), offsets.begin(), offsets.end());
+  const std::string buffer =
+      binary ? "" : "\"uri\": \"data:application/octet-stream;base64," + base64(data) + "\", ";
+  const std::string json =
+      "{\"asset\": {\"version\": \"2.0\"}, \"extensionsUsed\": [\"KHR_mesh_quantization\", "
+      "\"EXT_mesh_gpu_instancing\"], \"extensionsRequired\": [\"KHR_mesh_quantization\"], "
+      "\"buffers\": [{" +
+      buffer +
+      "\"byteLength\": 104}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 48}, "
+      "{\"buffer\": 0, \"byteOffset\": 48, \"byteLength\": 16, \"byteStride\": 4}, "
+      "{\"buffer\": 0, \"byteOffset\": 64, \"byteLength\": 1}, {\"buffer\": 0, "
+      "\"byteOffset\": 68, \"byteLength\": 12}, {\"buffer\": 0, \"byteOffset\": 80, "
+      "\"byteLength\": 24}], \"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, "
+      "\"count\": 4, \"type\": \"VEC3\", \"min\": [0, 0, -1], \"max\": [1, 0, 0], "
+      "\"sparse\": {\"count\": 1, \"indices\": {\"bufferView\": 2, \"componentType\": 5121}, "
+      "\"values\": {\"bufferView\": 3}}}, {\"bufferView\": 1, \"componentType\": 5120, "
+      "\"normalized\": true, \"count\": 4, \"type\": \"VEC3\"}, {\"bufferView\": 4, "
+      "\"componentType\": 5126, \"count\": 2, \"type\": \"VEC3\"}], \"meshes\": "
+      "[{\"primitives\": [{\"mode\": 5, \"attributes\": {\"POSITION\": 0, \"NORMAL\": 1}}]}], "
+      "\"nodes\": [{\"mesh\": 0, \"extensions\": {\"EXT_mesh_gpu_instancing\": "
+      "{\"attributes\": {\"TRANSLATION\": 2}}}}], \"scenes\": [{\"nodes\": [0]}], "
+      "\"scene\": 0}";
+  return binary ? glb(json, data) : std::vector<unsigned char>(json.begin(), json.end());
+}
+
 inline void writeFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
 }

@@ -145,6 +145,23 @@ TEST(SceneGltfFeatures, GpuInstancingGivesOneInstancePerCopy) {
   EXPECT_EQ(glm::vec3(model.instances[2].transform[3]), glm::vec3(0, 13, 0));
 }
 
+// Everything at once, as the fuzz test's richest seed: sparse positions, normalised-byte normals,
+// a strip and two instanced copies.
+TEST(SceneGltfFeatures, FeatureRichModelLoadsAsTextAndBinary) {
+  const fs::path d = dir("rich");
+  for (bool binary : {false, true}) {
+    const fs::path path = d / (binary ? "rich.glb" : "rich.gltf");
+    writeFile(path, gltf_test_files::featureRichModel(binary));
+    const Model model = load(path);
+    ASSERT_EQ(model.instances.size(), 2u);
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.meshes[0].indices.size(), 6u);
+    EXPECT_EQ(model.meshes[0].positions.at(1), glm::vec3(1, 0, 0));
+    EXPECT_EQ(model.meshes[0].normals.at(0), glm::vec3(0, 1, 0));
+    EXPECT_EQ(model.instances[1].transform[3].x, 2.0f);
+  }
+}
+
 // Scale 0 is a common way to hide a node: it is left out with a note naming it, and the rest
 // of the file loads.
 TEST(SceneGltfFeatures, HiddenNodeLeftOutWithANote) {

@@ -27,8 +27,9 @@ Bytes bytesOf(const std::string& text) {
   return Bytes(text.begin(), text.end());
 }
 
-// Valid seeds covering the loader's paths: text and binary, indexed by default, strips,
-// sparse-free quantized-free floats, nodes with transforms, materials with glass extensions.
+// Valid seeds covering the loader's paths, each as text and binary: a plain triangle; a strip
+// under a node hierarchy with glass materials; sparse positions, quantized normals and GPU
+// instancing.
 std::vector<Bytes> corpus() {
   std::vector<Bytes> seeds;
   TriangleJson plain;
@@ -50,6 +51,8 @@ std::vector<Bytes> corpus() {
       "{\"mesh\": 0, \"scale\": [2, 2, 2]}";
   seeds.push_back(bytesOf(strip.text()));
   seeds.push_back(gltf_test_files::triangleGlb(strip));
+  seeds.push_back(gltf_test_files::featureRichModel(false));
+  seeds.push_back(gltf_test_files::featureRichModel(true));
   return seeds;
 }
 
