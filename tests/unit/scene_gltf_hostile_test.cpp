@@ -230,7 +230,14 @@ TEST(SceneGltfHostile, PositionsOutsideMinMaxRefused) {
   EXPECT_MENTIONS(refused(d / "spike.gltf"), "outside the accessor's min/max");
   json.accessor = "\"min\": [0, 0, -1.000001], \"max\": [1.000001, 0, 0]";  // decimal rounding
   writeFile(d / "rounded.gltf", json.text());
-  EXPECT_EQ(loaded(d / "rounded.gltf").instances.size(), 1u);
+  std::string warnings;
+  EXPECT_EQ(loaded(d / "rounded.gltf", &warnings).instances.size(), 1u);
+  EXPECT_EQ(warnings.find("min/max"), std::string::npos) << warnings;
+  // Bounds are required by the spec; a file without them loads with a note saying so.
+  json.accessor = "";
+  writeFile(d / "unbounded.gltf", json.text());
+  EXPECT_EQ(loaded(d / "unbounded.gltf", &warnings).instances.size(), 1u);
+  EXPECT_MENTIONS(warnings, "POSITION accessor 0 has no min/max");
 }
 
 TEST(SceneGltfHostile, RequiredExtensionsRefusedByName) {

@@ -90,6 +90,13 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
     return false;
   }
   const std::size_t vertexCount = out.positions.size();
+  // glTF 2.0 requires POSITION bounds; without them nothing checks the values against the
+  // exporter's intent, so the user is told.
+  const tinygltf::Accessor& positions = model.accessors[static_cast<std::size_t>(positionAccessor)];
+  if (positions.minValues.size() != 3 || positions.maxValues.size() != 3) {
+    notes += "mesh '" + out.name + "': POSITION accessor " + std::to_string(positionAccessor) +
+             " has no min/max (required by glTF 2.0), values not checked against them; ";
+  }
 
   if (primitive.indices >= 0) {
     if (!readIndices(model, primitive.indices, out.indices, error)) return false;
