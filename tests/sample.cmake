@@ -8,3 +8,6 @@ target_compile_definitions(sample_cli_tests PRIVATE
   OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>"
   OCEAN_ASSETS="${CMAKE_BINARY_DIR}/assets")
 add_dependencies(sample_cli_tests ocean_sample)
+postfx_add_test(sample_model_tests
+  SOURCES unit/sample_model_placement_test.cpp
+  LIBS ocean_host)

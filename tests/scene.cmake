@@ -4,5 +4,7 @@ if(TARGET ocean_scene)
   postfx_add_test(scene_unit_tests
     SOURCES unit/scene_procedural_test.cpp unit/scene_gltf_roundtrip_test.cpp
             unit/scene_gltf_errors_test.cpp
+            unit/scene_gltf_hostile_test.cpp unit/scene_gltf_features_test.cpp
+            unit/scene_gltf_fuzz_test.cpp
     LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF)
 endif()

@@ -58,7 +58,8 @@ void GpuScene::upload(const ocean_scene::Model& model) {
     const ocean_scene::Mesh& mesh = model.meshes[instance.mesh];
     const bool known = mesh.material < model.materials.size();
     const glm::vec3 albedo = known ? model.materials[mesh.material].baseColor : glm::vec3(0.5f);
-    const bool caster = known && isCausticCaster(model.materials[mesh.material]) &&
+    const bool caster = instance.castsCaustics && known &&
+                        isCausticCaster(model.materials[mesh.material]) &&
                         meshes_[instance.mesh].indexCount >= 3;
     instances_.push_back({instance.mesh, glm::dmat4(instance.transform), albedo, caster});
     if (caster) {

@@ -114,6 +114,11 @@ irradiance from the wavefront area ratio, seed 004; --caustics-grid 64..1024, de
 Every surface looks the water up where its light entered, along the refracted sun; with
 --triplanar-walls steep surfaces blend in seed 002's world-axis projections instead.
 
+--model FILE[@x,y,z][:fit=M|none]: a glTF (.glb/.gltf) added as glass or metal casters. By
+default its bounding box is scaled to 1.5 m and set on the sand in a row before the camera;
+@x,y,z puts the box's centre at x, z with its bottom y metres above the sand; :fit=M scales its
+largest side to M metres (0.01..100), :fit=none keeps the file's size.
+
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
 the sun), above (above the water looking down), waterline (camera 3 cm above the water).
 )";

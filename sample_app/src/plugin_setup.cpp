@@ -1,5 +1,7 @@
 #include "plugin_setup.h"
 
+#include "caster_admission.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -67,29 +69,6 @@ PluginSetup::~PluginSetup() {
   postfx::destroy(context_);
 }
 
-namespace {
-
-// glTF material -> the plugin's: transmission means glass (KHR_materials_ior, and
-// KHR_materials_volume's attenuation as Beer-Lambert absorption), otherwise metal whose base
-// colour is its reflectance at normal incidence (glTF metallic-roughness).
-postfx::CasterMaterial casterMaterial(const ocean_scene::Material& m) {
-  postfx::CasterMaterial out;
-  if (!m.isRefractive()) {
-    out.type = postfx::CasterMaterialType::Reflective;
-    out.reflectance = glm::clamp(m.baseColor, glm::vec3(0.0f), glm::vec3(1.0f));
-    return out;
-  }
-  out.type = postfx::CasterMaterialType::Refractive;
-  out.ior = std::clamp(m.ior, 1.0f, 3.0f);
-  if (std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f) {
-    const glm::vec3 colour = glm::clamp(m.attenuationColor, glm::vec3(1e-4f), glm::vec3(1.0f));
-    out.absorption = -glm::log(colour) / m.attenuationDistance;
-  }
-  return out;
-}
-
-}  // namespace
-
 bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   const gbuffer::Targets& targets = frame.targets;
   const postfx::water::Ocean& ocean = frame.ocean;
@@ -130,6 +109,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   // block; the plugin adds back what passes through or reflects off them.
   casters_.clear();
   for (const CasterInstance& c : frame.casters) {
+    // buildScene's admitCasters already kept the casters within budget (with a warning).
     if (int(casters_.size()) == postfx::kMaxCasters) break;
     postfx::CasterMesh mesh;
     mesh.vertexBuffer = c.vertices;

@@ -1,10 +1,16 @@
 #include "scene_setup.h"
 
+#include "caster_admission.h"
+#include "model_spec.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include <scene/default_scene.h>
+#include <scene/gltf_loader.h>
 #include <scene/seabed.h>
 
 namespace ocean {
@@ -21,25 +27,56 @@ std::string assetDirectory() {
   return OCEAN_ASSET_DIR;
 }
 
+// The scene-space bounding box of the model's instances.
+void modelBounds(const ocean_scene::Model& model, glm::dvec3& lo, glm::dvec3& hi) {
+  lo = glm::dvec3(std::numeric_limits<double>::infinity());
+  hi = -lo;
+  for (const ocean_scene::Instance& instance : model.instances) {
+    const glm::dmat4 m(instance.transform);
+    for (const glm::vec3& p : model.meshes[instance.mesh].positions) {
+      const glm::dvec3 q(m * glm::dvec4(glm::dvec3(p), 1.0));
+      lo = glm::min(lo, q);
+      hi = glm::max(hi, q);
+    }
+  }
+}
+
 }  // namespace
 
 bool buildScene(const std::vector<std::string>& userModels, ocean_scene::Model& scene,
                 std::string& error) {
   ocean_scene::DefaultSceneParams params;
+  std::vector<std::string> warnings;
   if (!ocean_scene::buildDefaultSceneWithModels(params, assetDirectory(), scene, error)) {
     return false;
   }
-  // User models stand on the sand in a row in front of the seabed preset's camera.
-  std::vector<ocean_scene::ModelPlacement> placements;
   for (size_t i = 0; i < userModels.size(); ++i) {
-    const double x = 3.0 * double(i) - 1.5 * double(userModels.size() - 1);
-    const double z = 5.0;
-    const double y = ocean_scene::seabedHeight(x, z) + 1.0;
-    placements.push_back({"user" + std::to_string(i), userModels[i],
-                          glm::translate(glm::mat4(1.0f), glm::vec3(x, y, z))});
+    ModelSpec spec;
+    if (!parseModelSpec(userModels[i], spec, error)) return false;
+    ocean_scene::Model model;
+    std::string notes;
+    if (!ocean_scene::loadGlb(spec.path, model, error, &notes)) return false;
+    if (!notes.empty()) warnings.push_back(spec.path + ": " + notes);
+    // Without a position, user models stand in a row in front of the seabed preset's camera.
+    const glm::dvec2 rowXZ(3.0 * double(i) - 1.5 * double(userModels.size() - 1), 5.0);
+    glm::dvec3 lo, hi;
+    modelBounds(model, lo, hi);
+    glm::dmat4 place;
+    if (!placementTransform(spec, lo, hi, rowXZ, &ocean_scene::seabedHeight, place, error)) {
+      error = spec.path + ": " + error;
+      return false;
+    }
+    // Instance names carry the file, so a warning about one names both file and node.
+    for (ocean_scene::Instance& instance : model.instances) {
+      instance.name = spec.path + (instance.name.empty() ? "" : " node '" + instance.name + "'");
+    }
+    ocean_scene::appendModel(scene, model, glm::mat4(place));
   }
-  // Absolute or relative to the working directory: addModels joins with "" harmlessly.
-  return placements.empty() || ocean_scene::addModels(scene, "", placements, error);
+  admitCasters(scene, warnings);
+  for (const std::string& warning : warnings) {
+    std::fprintf(stderr, "ocean_sample: warning: %s\n", warning.c_str());
+  }
+  return true;
 }
 
 }  // namespace ocean

@@ -8,6 +8,9 @@
 
 namespace ocean {
 
+// userModels are --model arguments, FILE[@x,y,z][:fit=metres|none] (model_spec.h). Loader
+// notes and casters left out of the object caustics are printed to stderr as warnings; the
+// first error returns false with a one-line message.
 bool buildScene(const std::vector<std::string>& userModels, ocean_scene::Model& scene,
                 std::string& error);
 

@@ -2,6 +2,7 @@
 // crash, no output file.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
@@ -14,6 +15,8 @@
 #include <vector>
 
 #include "image_output.h"
+
+#include "gltf_test_files.h"
 
 namespace {
 
@@ -121,6 +124,56 @@ TEST_F(SampleCli, TruncatedModel) {
   bytes.resize(bytes.size() / 2);
   expectRejected("--model " + writeFile("truncated.glb", bytes).string(), "truncated.glb");
 }
+// Issue 17: a directory, a FIFO and a device as --model are named for what they are; the FIFO
+// is never waited on (a hang trips the alarm and fails the test).
+TEST_F(SampleCli, ModelThatIsNotARegularFile) {
+  ::alarm(60);
+  expectRejected("--model " + dir_.string(), "is a directory");
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.glb").c_str(), 0600), 0);
+  expectRejected("--model " + (dir_ / "pipe.glb").string(), "FIFO");
+  expectRejected("--model /dev/zero", "is a device");
+  ::alarm(0);
+}
+TEST_F(SampleCli, MalformedModelPlacement) {
+  expectRejected("--model a.glb@1,2", "position must be @x,y,z");
+  expectRejected("--model a.glb:fit=0", "fit must be a size in metres");
+}
+
+// Issue 17, item 2: a valid file with a node hidden by scale 0 and a glass node whose
+// attenuation the plugin refuses still renders; each left-out node is a warning naming the
+// file and the node.
+TEST_F(SampleCli, ModelWithNodesThePluginCannotUseStillRenders) {
+  gltf_test_files::TriangleJson json;
+  // Mesh 0 is the dense glass inserted below, mesh 1 the plain (metal by glTF default) one.
+  json.nodes = R"({"mesh": 1, "name": "plate"}, {"mesh": 1, "name": "lid", "scale": [0, 0, 0]},
+      {"mesh": 0, "name": "ink", "translation": [0, 0.5, 0]})";
+  json.sceneNodes = "0, 1, 2";
+  json.top = R"("materials": [{"name": "dense", "extensions": {"KHR_materials_transmission":
+      {"transmissionFactor": 1}, "KHR_materials_volume": {"attenuationDistance": 1e-6,
+      "attenuationColor": [0.01, 0.01, 0.01]}}}], )";
+  std::string text = json.text();
+  // A first mesh: the same triangle in the dense glass.
+  const std::string meshes = "\"meshes\": [";
+  text.insert(text.find(meshes) + meshes.size(),
+              "{\"name\": \"glass\", \"primitives\": [{\"attributes\": {\"POSITION\": 0}, "
+              "\"material\": 0}]}, ");
+  const fs::path model = writeFile("odd.gltf", text);
+  const fs::path out = dir_ / "odd.png";
+  const RunResult result =
+      runSample("render --width 64 --height 36 --water-resolution 16 --model " + model.string() +
+                    " --out " + out.string(),
+                dir_);
+  EXPECT_EQ(result.exitCode, 0) << result.stderrText;
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_NE(result.stderrText.find("warning: " + model.string() + ": node 1 'lid' left out"),
+            std::string::npos)
+      << result.stderrText;
+  EXPECT_NE(result.stderrText.find(model.string() +
+                                   " node 'ink': casts no caustics, material 'dense' absorbs"),
+            std::string::npos)
+      << result.stderrText;
+}
+
 TEST_F(SampleCli, UnwritableOutputDirectory) {
   const RunResult result =
       runSample("render --width 64 --height 36 --out /nonexistent-dir/ocean.png", dir_);

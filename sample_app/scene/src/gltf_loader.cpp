@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
-#include <fstream>
 #include <limits>
 #include <vector>
 
@@ -12,56 +11,56 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gltf_file.h"
+#include "gltf_instancing.h"
 #include "gltf_material.h"
+#include "gltf_preflight.h"
 #include "gltf_primitive.h"
+#include "gltf_text.h"
 
 namespace ocean_scene {
 
 namespace {
 
-// tinygltf messages can span lines; callers log one line per failure.
-std::string oneLine(std::string text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '\n' || c == '\r') {
-      if (!out.empty() && out.back() != ' ') out += "; ";
-    } else {
-      out += c;
-    }
-  }
-  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
-  return out;
-}
+// Models and their buffers above this are refused before they are read (tinygltf takes a
+// 32-bit length; a sample scene's caster is a few MB).
+constexpr std::uint64_t kMaxFileBytes = 1ull << 30;
 
 std::string directoryOf(const std::string& path) {
   const auto slash = path.find_last_of("/\\");
   return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
 }
 
-bool readFile(const std::string& path, std::vector<unsigned char>& bytes, std::string& error) {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file) {
-    error = "cannot open file";
-    return false;
+// tinygltf's file access, limited to the buffer files the preflight resolved inside the
+// model's folder: nothing else is found (images, the working directory), nothing is expanded
+// (tinygltf's default runs wordexp on the path) and nothing is written.
+struct GuardedFiles {
+  const gltf::Preflight* preflight = nullptr;
+};
+
+bool guardedExists(const std::string& path, void* user) {
+  return static_cast<GuardedFiles*>(user)->preflight->bufferFiles.count(path) > 0;
+}
+
+std::string guardedExpand(const std::string& path, void*) {
+  return path;
+}
+
+bool guardedRead(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                 void* user) {
+  const auto& files = static_cast<GuardedFiles*>(user)->preflight->bufferFiles;
+  const auto it = files.find(path);
+  std::string problem = "not a buffer file of this model";
+  if (it != files.end() && gltf::readRegularFile(it->second, kMaxFileBytes, *out, problem)) {
+    return true;
   }
-  const std::streamoff size = file.tellg();
-  if (size <= 0) {
-    error = size == 0 ? "file is empty" : "cannot read file size";
-    return false;
-  }
-  // tinygltf takes the length as unsigned int.
-  if (static_cast<unsigned long long>(size) > std::numeric_limits<unsigned int>::max()) {
-    error = "file is larger than 4 GiB";
-    return false;
-  }
-  bytes.resize(static_cast<std::size_t>(size));
-  file.seekg(0);
-  file.read(reinterpret_cast<char*>(bytes.data()), size);
-  if (!file) {
-    error = "read failed";
-    return false;
-  }
-  return true;
+  if (err != nullptr) *err = problem;
+  return false;
+}
+
+bool guardedWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err != nullptr) *err = "the loader never writes";
+  return false;
 }
 
 // Textures are ignored by this loader; skipping decode also keeps image parsers off the path.
@@ -70,26 +69,53 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
+// tinygltf's warnings, less the ones about image files this loader deliberately never opens.
+std::string usefulWarnings(const std::string& warn, const gltf::Preflight& preflight) {
+  std::string kept;
+  std::size_t start = 0;
+  while (start < warn.size()) {
+    std::size_t end = warn.find('\n', start);
+    if (end == std::string::npos) end = warn.size();
+    const std::string line = warn.substr(start, end - start);
+    start = end + 1;
+    const std::string notFound = "File not found : ";
+    const bool skippedImage = line.rfind("Failed to load external 'uri' for image[", 0) == 0 ||
+                              (line.rfind(notFound, 0) == 0 &&
+                               preflight.imageUris.count(line.substr(notFound.size())) > 0);
+    if (!line.empty() && !skippedImage) kept += "tinygltf: " + line + "; ";
+  }
+  return kept;
+}
+
 bool parse(const std::string& path, const std::vector<unsigned char>& bytes, tinygltf::Model& model,
            std::string& error, std::string& warnings) {
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skipImage, nullptr);
-  std::string err, warn;
-  const auto size = static_cast<unsigned int>(bytes.size());
-  bool ok = false;
-  if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) {
-    ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, directoryOf(path));
-  } else if (bytes[0] == '{' || bytes[0] == ' ' || bytes[0] == '\n' || bytes[0] == '\t' ||
-             bytes[0] == '\r' || bytes[0] == 0xEF /* UTF-8 BOM */) {
-    ok = loader.LoadASCIIFromString(
-        &model, &err, &warn, reinterpret_cast<const char*>(bytes.data()), size, directoryOf(path));
-  } else {
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (!binary && !(bytes[0] == '{' || bytes[0] == ' ' || bytes[0] == '\n' || bytes[0] == '\t' ||
+                   bytes[0] == '\r' || bytes[0] == 0xEF /* UTF-8 BOM */)) {
     error = "not a glTF file (no 'glTF' magic and no JSON object)";
     return false;
   }
-  if (!warn.empty()) warnings += oneLine(warn) + "; ";
+  const std::string baseDir = directoryOf(path);
+  gltf::Preflight preflight;
+  if (!gltf::preflight(bytes, baseDir, preflight, error)) return false;
+  if (!preflight.imageUris.empty()) {
+    warnings += std::to_string(preflight.imageUris.size()) +
+                " image file(s) not read: textures are not used; ";
+  }
+  GuardedFiles guarded{&preflight};
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&skipImage, nullptr);
+  loader.SetFsCallbacks(
+      tinygltf::FsCallbacks{&guardedExists, &guardedExpand, &guardedRead, &guardedWrite, &guarded});
+  std::string err, warn;
+  const auto size = static_cast<unsigned int>(bytes.size());
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
+             : loader.LoadASCIIFromString(
+                   &model, &err, &warn, reinterpret_cast<const char*>(bytes.data()), size, baseDir);
+  warnings += usefulWarnings(warn, preflight);
   if (!ok) {
-    error = err.empty() ? "tinygltf could not parse the file" : oneLine(err);
+    error = err.empty() ? "tinygltf could not parse the file" : err;
     return false;
   }
   return true;
@@ -129,10 +155,51 @@ bool nodeLocalTransform(const tinygltf::Node& node, glm::dmat4& out, std::string
   return true;
 }
 
+std::string nodeLabel(std::size_t index, const tinygltf::Node& node) {
+  return "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+}
+
+// Scene coordinates beyond this lose centimetres in float and leave the sample's ~100 m scene
+// far behind; a transform that puts a mesh there is an error in the file, not a placement.
+constexpr double kMaxCoordinate = 1e6;
+
+// Checks the composed transform after the conversion to float the renderer uses: only each
+// node's own transform was checked before, so a chain of large ones could overflow unseen.
+// Returns "" when it is usable, else why not; `hidden` says the node is merely invisible
+// (not invertible: scale 0, a common way to hide a node), which is not an error.
+std::string composedProblem(const glm::dmat4& world, const glm::vec3& lo, const glm::vec3& hi,
+                            bool& hidden) {
+  hidden = false;
+  const glm::mat4 f(world);
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(f[c][r])) return "its composed transform overflows float";
+    }
+  }
+  if (f[0][3] != 0.0f || f[1][3] != 0.0f || f[2][3] != 0.0f || f[3][3] != 1.0f) {
+    return "its composed transform is projective (bottom row not 0 0 0 1)";
+  }
+  // The plugin's own test for a caster (postfx casters: |det| > 1e-30 in double).
+  if (!(std::abs(glm::determinant(glm::dmat3(glm::mat3(f)))) > 1e-30)) {
+    hidden = true;
+    return "its transform is not invertible (scale 0 hides it)";
+  }
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                       (corner & 4) ? hi.z : lo.z);
+    const glm::dvec4 q = glm::dmat4(f) * glm::dvec4(p, 1.0);
+    if (!(glm::all(glm::lessThanEqual(glm::abs(glm::dvec3(q)), glm::dvec3(kMaxCoordinate))))) {
+      return "its transform puts the mesh beyond " + std::to_string(int(kMaxCoordinate)) +
+             " m from the origin";
+    }
+  }
+  return "";
+}
+
 // meshMap[m] = our mesh indices of glTF mesh m's primitives.
 bool flattenNodes(const tinygltf::Model& model,
                   const std::vector<std::vector<std::uint32_t>>& meshMap, Model& out,
-                  std::string& error) {
+                  std::string& error, std::string& notes) {
   std::vector<int> roots;
   if (!model.scenes.empty()) {
     const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -155,6 +222,19 @@ bool flattenNodes(const tinygltf::Model& model,
       if (!isChild[i]) roots.push_back(static_cast<int>(i));
     }
   }
+  struct Bounds {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+  };
+  std::vector<Bounds> bounds(out.meshes.size());
+  for (std::size_t m = 0; m < out.meshes.size(); ++m) {
+    const auto& positions = out.meshes[m].positions;
+    if (positions.empty()) continue;
+    bounds[m].lo = bounds[m].hi = positions[0];
+    for (const glm::vec3& p : positions) {
+      bounds[m].lo = glm::min(bounds[m].lo, p);
+      bounds[m].hi = glm::max(bounds[m].hi, p);
+    }
+  }
   struct Pending {
     int node;
     glm::dmat4 parent;
@@ -163,6 +243,7 @@ bool flattenNodes(const tinygltf::Model& model,
   for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, glm::dmat4(1.0)});
   // A valid hierarchy is a forest: each node is visited at most once.
   std::vector<bool> visited(model.nodes.size(), false);
+  std::size_t hiddenCount = 0;
   while (!stack.empty()) {
     const Pending item = stack.back();
     stack.pop_back();
@@ -185,16 +266,43 @@ bool flattenNodes(const tinygltf::Model& model,
         error = "node '" + node.name + "' refers to missing mesh " + std::to_string(node.mesh);
         return false;
       }
-      for (std::uint32_t mesh : meshMap[static_cast<std::size_t>(node.mesh)]) {
-        out.instances.push_back(Instance{mesh, glm::mat4(world), node.name});
+      std::vector<glm::dmat4> copies;
+      if (!gltf::readGpuInstances(model, node, copies, error)) {
+        error = nodeLabel(nodeIndex, node) + ": " + error;
+        return false;
+      }
+      if (copies.empty()) copies.push_back(glm::dmat4(1.0));
+      for (const glm::dmat4& copy : copies) {
+        const glm::dmat4 placed = world * copy;
+        for (std::uint32_t mesh : meshMap[static_cast<std::size_t>(node.mesh)]) {
+          bool hidden = false;
+          const std::string problem =
+              composedProblem(placed, bounds[mesh].lo, bounds[mesh].hi, hidden);
+          if (hidden) {
+            // Left out with a note: drawing it would show nothing, and the plugin refuses it.
+            if (++hiddenCount <= 4) {
+              notes += nodeLabel(nodeIndex, node) + " left out: " + problem + "; ";
+            }
+            break;
+          }
+          if (!problem.empty()) {
+            error = nodeLabel(nodeIndex, node) + ": " + problem;
+            return false;
+          }
+          out.instances.push_back(Instance{mesh, glm::mat4(placed), gltf::safeOneLine(node.name)});
+        }
       }
     }
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
       stack.push_back({*it, world});
     }
   }
+  if (hiddenCount > 4) {
+    notes += std::to_string(hiddenCount - 4) + " more hidden node(s) left out; ";
+  }
   if (out.instances.empty()) {
-    error = "the scene has no node with a mesh";
+    error = hiddenCount > 0 ? "every node with a mesh is hidden (transform not invertible)"
+                            : "the scene has no node with a mesh";
     return false;
   }
   return true;
@@ -204,6 +312,7 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     Material material;
     if (!gltf::readMaterial(model.materials[i], material, error)) return false;
+    material.name = gltf::safeOneLine(material.name);  // printed in the sample's warnings
     out.materials.push_back(std::move(material));
   }
   // Primitives without a material get the glTF default material, added once at the end.
@@ -214,8 +323,8 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = source.primitives[p];
       Mesh mesh;
-      mesh.name =
-          source.primitives.size() == 1 ? source.name : source.name + "#" + std::to_string(p);
+      mesh.name = gltf::safeOneLine(
+          source.primitives.size() == 1 ? source.name : source.name + "#" + std::to_string(p));
       if (!gltf::readPrimitive(model, primitive, mesh, error, notes)) {
         error = "mesh " + std::to_string(m) + " '" + source.name + "' primitive " +
                 std::to_string(p) + ": " + error;
@@ -241,7 +350,7 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
       out.meshes.push_back(std::move(mesh));
     }
   }
-  return flattenNodes(model, meshMap, out, error);
+  return flattenNodes(model, meshMap, out, error, notes);
 }
 
 }  // namespace
@@ -253,8 +362,8 @@ bool loadGlb(const std::string& path, Model& out, std::string& error, std::strin
   try {
     std::vector<unsigned char> bytes;
     tinygltf::Model model;
-    ok = readFile(path, bytes, problem) && parse(path, bytes, model, problem, notes) &&
-         convert(model, out, problem, notes);
+    ok = gltf::readRegularFile(path, kMaxFileBytes, bytes, problem) &&
+         parse(path, bytes, model, problem, notes) && convert(model, out, problem, notes);
   } catch (const std::exception& e) {
     problem = std::string("unexpected failure: ") + e.what();
     ok = false;
@@ -264,10 +373,10 @@ bool loadGlb(const std::string& path, Model& out, std::string& error, std::strin
   }
   if (!ok) {
     out = Model{};
-    error = path + ": " + oneLine(problem);
+    error = gltf::safeOneLine(path + ": " + problem);
     return false;
   }
-  if (warnings != nullptr) *warnings = oneLine(notes);
+  if (warnings != nullptr) *warnings = gltf::safeOneLine(notes);
   return true;
 }
 

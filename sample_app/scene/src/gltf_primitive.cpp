@@ -1,5 +1,6 @@
 #include "gltf_primitive.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -32,14 +33,36 @@ bool normaliseAll(std::vector<glm::vec3>& normals) {
   return true;
 }
 
+// glTF 2.0 spec 3.7.2.1: strip triangle i is (i, i+1+i%2, i+2-i%2), which keeps the winding;
+// fan triangle i is (i+1, i+2, 0).
+std::vector<std::uint32_t> toTriangleList(const std::vector<std::uint32_t>& v, bool fan) {
+  std::vector<std::uint32_t> list;
+  list.reserve((v.size() - 2) * 3);
+  for (std::size_t i = 0; i + 2 < v.size(); ++i) {
+    if (fan) {
+      list.insert(list.end(), {v[i + 1], v[i + 2], v[0]});
+    } else {
+      list.insert(list.end(), {v[i], v[i + 1 + i % 2], v[i + 2 - i % 2]});
+    }
+  }
+  return list;
+}
+
 }  // namespace
 
 bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive, Mesh& out,
                    std::string& error, std::string& notes) {
   // tinygltf stores an absent mode as -1; the glTF default is triangles.
-  if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
-    error = "primitive mode " + std::to_string(primitive.mode) +
-            " is not supported (only TRIANGLES, mode 4)";
+  const int mode = primitive.mode == -1 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+      mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    const char* kind = mode == TINYGLTF_MODE_POINTS       ? "points"
+                       : mode == TINYGLTF_MODE_LINE       ? "lines"
+                       : mode == TINYGLTF_MODE_LINE_LOOP  ? "a line loop"
+                       : mode == TINYGLTF_MODE_LINE_STRIP ? "a line strip"
+                                                          : "an unknown mode";
+    error = "primitive mode " + std::to_string(mode) + " (" + kind +
+            ") is not supported: casters need triangles (modes 4, 5, 6)";
     return false;
   }
   const int positionAccessor = attribute(primitive, "POSITION");
@@ -47,13 +70,33 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
     error = "primitive has no POSITION attribute";
     return false;
   }
-  if (!readVec3(model, positionAccessor, "POSITION", out.positions, error)) return false;
+  // With Draco the attribute accessors have no data of their own.
+  if (primitive.extensions.count("KHR_draco_mesh_compression") > 0 &&
+      positionAccessor < static_cast<int>(model.accessors.size()) &&
+      model.accessors[static_cast<std::size_t>(positionAccessor)].bufferView < 0) {
+    error =
+        "primitive is Draco-compressed (KHR_draco_mesh_compression), which is not supported; "
+        "export without Draco";
+    return false;
+  }
+  const bool quantization = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                      "KHR_mesh_quantization") != model.extensionsUsed.end();
+  if (!readVec3(model, positionAccessor, "POSITION", quantization, out.positions, error)) {
+    return false;
+  }
   if (!allFinite(out.positions)) {
     error =
         "accessor " + std::to_string(positionAccessor) + " (POSITION) contains a non-finite value";
     return false;
   }
   const std::size_t vertexCount = out.positions.size();
+  // glTF 2.0 requires POSITION bounds; without them nothing checks the values against the
+  // exporter's intent, so the user is told.
+  const tinygltf::Accessor& positions = model.accessors[static_cast<std::size_t>(positionAccessor)];
+  if (positions.minValues.size() != 3 || positions.maxValues.size() != 3) {
+    notes += "mesh '" + out.name + "': POSITION accessor " + std::to_string(positionAccessor) +
+             " has no min/max (required by glTF 2.0), values not checked against them; ";
+  }
 
   if (primitive.indices >= 0) {
     if (!readIndices(model, primitive.indices, out.indices, error)) return false;
@@ -72,6 +115,14 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
     out.indices.resize(vertexCount);
     std::iota(out.indices.begin(), out.indices.end(), 0U);
   }
+  if (mode != TINYGLTF_MODE_TRIANGLES) {
+    if (out.indices.size() < 3) {
+      error = "triangle strip or fan has " + std::to_string(out.indices.size()) +
+              " vertices, fewer than 3";
+      return false;
+    }
+    out.indices = toTriangleList(out.indices, mode == TINYGLTF_MODE_TRIANGLE_FAN);
+  }
   if (out.indices.size() % 3 != 0) {
     error =
         "triangle list has " + std::to_string(out.indices.size()) + " indices, not a multiple of 3";
@@ -81,7 +132,7 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
   const int normalAccessor = attribute(primitive, "NORMAL");
   bool regenerate = normalAccessor < 0;
   if (normalAccessor >= 0) {
-    if (!readVec3(model, normalAccessor, "NORMAL", out.normals, error)) return false;
+    if (!readVec3(model, normalAccessor, "NORMAL", quantization, out.normals, error)) return false;
     if (out.normals.size() != vertexCount) {
       error = "NORMAL count " + std::to_string(out.normals.size()) +
               " differs from POSITION count " + std::to_string(vertexCount);

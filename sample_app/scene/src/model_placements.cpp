@@ -45,11 +45,15 @@ std::vector<ModelPlacement> defaultModelPlacements() {
 }
 
 bool addModels(Model& scene, const std::string& assetDir,
-               const std::vector<ModelPlacement>& placements, std::string& error) {
+               const std::vector<ModelPlacement>& placements, std::string& error,
+               std::vector<std::string>* warnings) {
   Model added;
   for (const ModelPlacement& placement : placements) {
     Model model;
-    if (!loadGlb(joinPath(assetDir, placement.fileName), model, error)) return false;
+    const std::string path = joinPath(assetDir, placement.fileName);
+    std::string notes;
+    if (!loadGlb(path, model, error, &notes)) return false;
+    if (warnings != nullptr && !notes.empty()) warnings->push_back(path + ": " + notes);
     for (Instance& instance : model.instances) {
       instance.name = placement.name + (instance.name.empty() ? "" : "/" + instance.name);
     }

@@ -38,9 +38,11 @@ struct ModelPlacement {
 std::vector<ModelPlacement> defaultModelPlacements();
 
 // Loads each placement from assetDir through the glTF loader and appends it to scene. Stops at
-// the first failure, returning false with the loader's message; scene is then unchanged.
+// the first failure, returning false with the loader's message; scene is then unchanged. The
+// loader's notes, when `warnings` is given, are appended as "<path>: <notes>".
 bool addModels(Model& scene, const std::string& assetDir,
-               const std::vector<ModelPlacement>& placements, std::string& error);
+               const std::vector<ModelPlacement>& placements, std::string& error,
+               std::vector<std::string>* warnings = nullptr);
 
 // buildDefaultScene + addModels(defaultModelPlacements()).
 bool buildDefaultSceneWithModels(const DefaultSceneParams& params, const std::string& assetDir,

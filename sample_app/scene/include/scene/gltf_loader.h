@@ -1,7 +1,11 @@
 #pragma once
 // glTF 2.0 loading through tinygltf, with the checks tinygltf leaves to the caller: every
 // accessor used is bounds-checked against its buffer view and buffer, element types are the
-// ones expected, index values are in range, positions are finite.
+// ones expected, index values are in range, positions are finite and inside the accessor's
+// min/max. The file is treated as hostile: JSON nesting is bounded before tinygltf's recursive
+// parse, only regular files are opened (never blocking on a FIFO), buffer URIs are read only
+// from inside the model's own folder, image files are never opened, and node transforms are
+// checked composed, as the float matrices the renderer uses.
 
 #include <string>
 
@@ -12,12 +16,17 @@ namespace ocean_scene {
 // Loads a .glb (or a .gltf; the format is told by the file's first bytes, not its name) into
 // `out`: one Mesh per primitive (mesh space), one Instance per node that has a mesh, with the
 // node hierarchy's transforms flattened into Instance::transform. Missing normals are
-// generated. Only triangle primitives are accepted. Materials include KHR_materials_ior,
-// KHR_materials_transmission and KHR_materials_volume; textures are ignored.
+// generated. Triangle lists, strips and fans are accepted (strips and fans become lists);
+// sparse accessors, KHR_mesh_quantization and EXT_mesh_gpu_instancing (one Instance per copy)
+// are read. Draco, meshopt and other unsupported
+// extensionsRequired are refused by name. Materials include KHR_materials_ior,
+// KHR_materials_transmission and KHR_materials_volume; textures are ignored. A node whose
+// composed transform is not invertible (scale 0: hidden) is left out with a note.
 //
 // Returns false with a one-line `error` ("<path>: <problem>") and leaves `out` empty on any
 // problem; never throws and never prints. Non-fatal notes (tinygltf warnings, regenerated
-// normals) go to `warnings` when it is given.
+// normals, hidden nodes left out, images not read) go to `warnings` when it is given, as one
+// line of "; "-separated notes.
 bool loadGlb(const std::string& path, Model& out, std::string& error,
              std::string* warnings = nullptr);
 

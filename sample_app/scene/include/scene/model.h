@@ -50,6 +50,9 @@ struct Instance {
   std::uint32_t mesh = 0;  // index into Model::meshes
   glm::mat4 transform{1.0f};
   std::string name;
+  // False: drawn, but not handed to the object-caustics pass even if its material would cast
+  // (the host decided the plugin would refuse it, or its caster budget is spent).
+  bool castsCaustics = true;
 };
 
 struct Model {

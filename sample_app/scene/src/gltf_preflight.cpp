@@ -1,0 +1,271 @@
+#include "gltf_preflight.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "gltf_file.h"
+
+namespace ocean_scene::gltf {
+
+namespace {
+
+using Json = nlohmann::json;
+
+// The JSON text: a .gltf is all JSON; a .glb holds it in its first chunk.
+bool jsonText(const std::vector<unsigned char>& bytes, std::string_view& text, std::string& error) {
+  const char* data = reinterpret_cast<const char*>(bytes.data());
+  if (bytes.size() < 4 || std::memcmp(data, "glTF", 4) != 0) {
+    text = std::string_view(data, bytes.size());
+    return true;
+  }
+  const auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, data + at, 4);
+    return v;  // GLB is little-endian, as are the machines this sample targets
+  };
+  if (bytes.size() < 20) {
+    error = "GLB is truncated: " + std::to_string(bytes.size()) + " bytes, header needs 20";
+    return false;
+  }
+  if (u32(4) != 2) {
+    error = "GLB version " + std::to_string(u32(4)) + " is not 2";
+    return false;
+  }
+  const std::uint64_t chunkLength = u32(12);
+  if (u32(16) != 0x4E4F534Au) {  // "JSON"
+    error = "GLB's first chunk is not JSON";
+    return false;
+  }
+  if (20 + chunkLength > bytes.size()) {
+    error = "GLB's JSON chunk (" + std::to_string(chunkLength) + " bytes) runs past the file's " +
+            std::to_string(bytes.size()) + " bytes";
+    return false;
+  }
+  text = std::string_view(data + 20, static_cast<std::size_t>(chunkLength));
+  return true;
+}
+
+// Nesting depth without recursion; strings (with escapes) are skipped so brackets in names
+// do not count.
+bool depthWithin(std::string_view text, int limit, std::string& error) {
+  int depth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        inString = false;
+      }
+      continue;
+    }
+    if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) {
+        error = "JSON nests deeper than " + std::to_string(limit) + " levels (at byte " +
+                std::to_string(i) + "); refused before parsing";
+        return false;
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return true;
+}
+
+// The feature each refused extension stands for, so the message says what is missing.
+std::string describeExtension(const std::string& name) {
+  if (name == "KHR_draco_mesh_compression") {
+    return "Draco mesh compression (" + name + ") is not supported; export without Draco";
+  }
+  if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression") {
+    return "meshopt buffer compression (" + name + ") is not supported; export without it";
+  }
+  if (name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "EXT_texture_avif") {
+    return "extension " + name + " is required, but textures are not used by this loader";
+  }
+  return "extension " + name + " is required by the file but not supported";
+}
+
+// Extensions this loader honours (or, for geometry-only ones, makes no difference to).
+bool supportedExtension(const std::string& name) {
+  return name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
+         name == "KHR_materials_volume" || name == "KHR_mesh_quantization" ||
+         name == "EXT_mesh_gpu_instancing";
+}
+
+bool checkExtensions(const Json& root, Preflight& out, std::string& error) {
+  for (const char* key : {"extensionsUsed", "extensionsRequired"}) {
+    const auto it = root.find(key);
+    if (it == root.end()) continue;
+    if (!it->is_array()) {
+      error = std::string(key) + " is not an array";
+      return false;
+    }
+    for (const Json& name : *it) {
+      if (!name.is_string()) {
+        error = std::string(key) + " holds a non-string";
+        return false;
+      }
+      const std::string extension = name.get<std::string>();
+      if (extension == "KHR_mesh_quantization") out.meshQuantization = true;
+      if (std::strcmp(key, "extensionsRequired") == 0 && !supportedExtension(extension)) {
+        error = describeExtension(extension);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Sizes, offsets and indices that tinygltf would read as unsigned (so -4 becomes 0 or huge).
+bool nonNegativeInteger(const Json& object, const char* key, const std::string& where,
+                        std::string& error) {
+  const auto it = object.find(key);
+  if (it == object.end()) return true;
+  if (it->is_number_unsigned()) return true;
+  if (it->is_number_integer()) {
+    error = where + "." + key + " is " + std::to_string(it->get<std::int64_t>()) +
+            "; it must be a non-negative integer";
+    return false;
+  }
+  if (it->is_number_float()) {
+    const double v = it->get<double>();
+    if (v >= 0.0 && v == std::floor(v) && v < 9007199254740992.0) return true;
+    error = where + "." + key + " is " + std::to_string(v) + "; it must be a non-negative integer";
+    return false;
+  }
+  error = where + "." + key + " is not a number";
+  return false;
+}
+
+bool checkArrayFields(const Json& root, const char* array, std::initializer_list<const char*> keys,
+                      std::string& error) {
+  const auto it = root.find(array);
+  if (it == root.end()) return true;
+  if (!it->is_array()) {
+    error = std::string(array) + " is not an array";
+    return false;
+  }
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const Json& item = (*it)[i];
+    if (!item.is_object()) {
+      error = std::string(array) + "[" + std::to_string(i) + "] is not an object";
+      return false;
+    }
+    const std::string where = std::string(array) + "[" + std::to_string(i) + "]";
+    for (const char* key : keys) {
+      if (!nonNegativeInteger(item, key, where, error)) return false;
+    }
+    const auto sparse = item.find("sparse");
+    if (sparse != item.end() && sparse->is_object()) {
+      if (!nonNegativeInteger(*sparse, "count", where + ".sparse", error)) return false;
+      for (const char* part : {"indices", "values"}) {
+        const auto p = sparse->find(part);
+        if (p == sparse->end() || !p->is_object()) continue;
+        const std::string at = where + ".sparse." + part;
+        if (!nonNegativeInteger(*p, "bufferView", at, error) ||
+            !nonNegativeInteger(*p, "byteOffset", at, error)) {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// The URI string of item `i` of `array`, or false when it has none.
+bool uriOf(const Json& item, std::string& uri) {
+  const auto it = item.find("uri");
+  if (it == item.end() || !it->is_string()) return false;
+  uri = it->get<std::string>();
+  return true;
+}
+
+bool isDataUri(const std::string& uri) {
+  return uri.rfind("data:", 0) == 0;
+}
+
+bool checkBuffers(const Json& root, const std::string& baseDir, Preflight& out,
+                  std::string& error) {
+  const auto buffers = root.find("buffers");
+  if (buffers == root.end() || !buffers->is_array()) return true;
+  const std::string folder = realFolder(baseDir);
+  for (std::size_t i = 0; i < buffers->size(); ++i) {
+    std::string uri;
+    if (!uriOf((*buffers)[i], uri)) continue;  // the GLB's BIN chunk, or tinygltf's error
+    const std::string where = "buffer " + std::to_string(i) + " uri '" + uri.substr(0, 200) + "'";
+    if (isDataUri(uri)) {
+      // Any other data: URI would be taken by tinygltf for a file name.
+      if (uri.rfind("data:application/octet-stream;base64,", 0) != 0 &&
+          uri.rfind("data:application/gltf-buffer;base64,", 0) != 0) {
+        error = "buffer " + std::to_string(i) +
+                " has a data URI that is not base64 application/octet-stream or gltf-buffer";
+        return false;
+      }
+      continue;
+    }
+    const std::string decoded = decodeUri(uri);
+    std::string resolved, reason;
+    if (!resolveInFolder(folder, uri, decoded, resolved, reason)) {
+      error = where + " " + reason;
+      return false;
+    }
+    out.bufferFiles[joinLikeTinygltf(baseDir, decoded)] = resolved;
+  }
+  return true;
+}
+
+void collectImages(const Json& root, Preflight& out) {
+  const auto images = root.find("images");
+  if (images == root.end() || !images->is_array()) return;
+  for (const Json& image : *images) {
+    std::string uri;
+    if (image.is_object() && uriOf(image, uri) && !isDataUri(uri)) {
+      out.imageUris.insert(decodeUri(uri));
+    }
+  }
+}
+
+}  // namespace
+
+std::string joinLikeTinygltf(const std::string& dir, const std::string& file) {
+  if (dir.empty()) return file;
+  return dir.back() == '/' ? dir + file : dir + "/" + file;
+}
+
+bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseDir, Preflight& out,
+               std::string& error) {
+  std::string_view text;
+  if (!jsonText(bytes, text, error) || !depthWithin(text, kMaxJsonDepth, error)) return false;
+  // Depth is bounded now, so even a recursive parser is safe.
+  Json root;
+  try {
+    root = Json::parse(text.begin(), text.end());
+  } catch (const Json::exception& e) {
+    error = std::string("invalid JSON: ") + e.what();  // the caller escapes non-UTF-8 bytes
+    return false;
+  }
+  if (!root.is_object()) {
+    error = "the JSON is not an object";
+    return false;
+  }
+  if (!checkExtensions(root, out, error)) return false;
+  if (!checkArrayFields(root, "accessors", {"bufferView", "byteOffset", "count"}, error) ||
+      !checkArrayFields(root, "bufferViews", {"buffer", "byteOffset", "byteLength", "byteStride"},
+                        error) ||
+      !checkArrayFields(root, "buffers", {"byteLength"}, error)) {
+    return false;
+  }
+  if (!checkBuffers(root, baseDir, out, error)) return false;
+  collectImages(root, out);
+  return true;
+}
+
+}  // namespace ocean_scene::gltf

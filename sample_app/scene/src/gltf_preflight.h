@@ -1,0 +1,35 @@
+#pragma once
+// Checks on a glTF file's JSON made before tinygltf sees it (private to the loader).
+// tinygltf parses recursively, reads URIs relative to the working directory as well as the
+// model's folder, opens image files it is not asked to decode, reads a negative byteOffset as
+// 0 and loads files whose extensionsRequired it does not implement. Each of those is settled
+// here, from the raw JSON, with a message that names the field.
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ocean_scene::gltf {
+
+// Deeper JSON is refused before any recursive parse. A glTF's own structure is at most about
+// 8 deep; 64 leaves extras and extensions generous room.
+inline constexpr int kMaxJsonDepth = 64;
+
+struct Preflight {
+  // Buffer files the file may read: tinygltf's lookup path (baseDir joined with the decoded
+  // URI) -> the regular file inside the model's folder it resolved to.
+  std::map<std::string, std::string> bufferFiles;
+  // Decoded image URIs: textures are not used, so these are never opened.
+  std::set<std::string> imageUris;
+  bool meshQuantization = false;  // KHR_mesh_quantization is used
+};
+
+// `baseDir` is the directory tinygltf is given. Returns false with a one-line reason.
+bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseDir, Preflight& out,
+               std::string& error);
+
+// tinygltf's path join, so the names handed to its file callbacks can be matched.
+std::string joinLikeTinygltf(const std::string& dir, const std::string& file);
+
+}  // namespace ocean_scene::gltf

@@ -1,0 +1,30 @@
+#pragma once
+// Which of the scene's glass and metal instances the plugin's object caustics receive. The
+// plugin refuses a whole frame for one caster it cannot use; the sample instead leaves such a
+// caster out, with a warning naming it, so one odd node in a user's file does not stop the
+// render.
+
+#include <string>
+#include <vector>
+
+#include <postfx/casters.h>
+#include <scene/model.h>
+
+namespace ocean {
+
+// glTF material -> the plugin's: transmission means glass (KHR_materials_ior, and
+// KHR_materials_volume's attenuation as Beer-Lambert absorption), otherwise metal whose base
+// colour is its reflectance at normal incidence (glTF metallic-roughness).
+postfx::CasterMaterial casterMaterial(const ocean_scene::Material& material);
+
+// Why the plugin would refuse this instance as a caster (its CasterMesh checks on the
+// transform and material), or "" when it would accept it.
+std::string casterRefusal(const ocean_scene::Material& material, const glm::mat4& transform);
+
+// Clears Instance::castsCaustics on every caster the plugin would refuse, and on every caster
+// past the first postfx::kMaxCasters (scene order: the sample's own models first, then --model
+// files in order). One warning per refused instance ("<instance>: casts no caustics, <reason>") and
+// one for the budget, so nothing is dropped silently.
+void admitCasters(ocean_scene::Model& scene, std::vector<std::string>& warnings);
+
+}  // namespace ocean
