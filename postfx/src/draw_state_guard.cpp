@@ -39,14 +39,6 @@ int boundedLimit(GLenum pname, int most) {
   return std::clamp(static_cast<int>(value), 0, most);
 }
 
-void setEnabledi(GLenum cap, GLuint index, GLboolean on) {
-  if (on) {
-    glEnablei(cap, index);
-  } else {
-    glDisablei(cap, index);
-  }
-}
-
 }  // namespace
 
 Result checkHostDrawState(std::string& error) {
@@ -127,7 +119,7 @@ DrawStateGuard::~DrawStateGuard() {
   for (int i = 0; i < drawBufferCount_; ++i) {
     const GLuint n = static_cast<GLuint>(i);
     const DrawBuffer& b = drawBuffers_[i];
-    setEnabledi(GL_BLEND, n, b.blend);
+    restoreEnabledi(GL_BLEND, n, b.blend);
     glBlendFuncSeparatei(n, static_cast<GLenum>(b.srcRgb), static_cast<GLenum>(b.dstRgb),
                          static_cast<GLenum>(b.srcAlpha), static_cast<GLenum>(b.dstAlpha));
     glBlendEquationSeparatei(n, static_cast<GLenum>(b.equationRgb),
@@ -135,7 +127,7 @@ DrawStateGuard::~DrawStateGuard() {
     glColorMaski(n, b.colorMask[0], b.colorMask[1], b.colorMask[2], b.colorMask[3]);
   }
   for (int i = 0; i < viewportCount_; ++i)
-    setEnabledi(GL_SCISSOR_TEST, static_cast<GLuint>(i), scissor_[i]);
+    restoreEnabledi(GL_SCISSOR_TEST, static_cast<GLuint>(i), scissor_[i]);
   glLogicOp(static_cast<GLenum>(logicOp_));
   glProvokingVertex(static_cast<GLenum>(provokingVertex_));
   // Core profiles keep one mode for both faces.

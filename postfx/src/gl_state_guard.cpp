@@ -63,24 +63,22 @@ void restoreEnabled(GLenum cap, GLboolean on) {
   }
 }
 
-namespace {
-void setEnabledi(GLenum cap, GLuint index, GLboolean on) {
+void restoreEnabledi(GLenum cap, GLuint index, GLboolean on) {
   if (on) {
     glEnablei(cap, index);
   } else {
     glDisablei(cap, index);
   }
 }
-}  // namespace
 
 GlStateGuard::~GlStateGuard() {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
   glViewportIndexedfv(0, viewport_);
-  setEnabledi(GL_SCISSOR_TEST, 0, scissor0_);
+  restoreEnabledi(GL_SCISSOR_TEST, 0, scissor0_);
   for (GLuint i = 0; i < kDrawBufferCount; ++i) {
     const BlendState& b = blend_[i];
-    setEnabledi(GL_BLEND, i, b.enabled);
+    restoreEnabledi(GL_BLEND, i, b.enabled);
     glBlendFuncSeparatei(i, static_cast<GLenum>(b.srcRgb), static_cast<GLenum>(b.dstRgb),
                          static_cast<GLenum>(b.srcAlpha), static_cast<GLenum>(b.dstAlpha));
     glBlendEquationSeparatei(i, static_cast<GLenum>(b.equationRgb),

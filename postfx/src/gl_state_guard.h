@@ -12,6 +12,8 @@ namespace postfx::detail {
 
 // glEnable / glDisable a capability back to a saved glIsEnabled value.
 void restoreEnabled(GLenum cap, GLboolean on);
+// The indexed form (per draw buffer or viewport) of restoreEnabled.
+void restoreEnabledi(GLenum cap, GLuint index, GLboolean on);
 
 class GlStateGuard {
  public:

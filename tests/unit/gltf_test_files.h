@@ -156,4 +156,23 @@ inline std::filesystem::path freshDir(const std::filesystem::path& root, const s
   return dir;
 }
 
+// Whether `s` is well-formed UTF-8 (lead byte, length, continuation bytes), written here
+// rather than taken from the loader so that the loader's own escaping is checked independently.
+inline bool validUtf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80         ? 1
+                          : (c >> 5) == 6  ? 2
+                          : (c >> 4) == 14 ? 3
+                          : (c >> 3) == 30 ? 4
+                                           : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (std::size_t k = 1; k < n; ++k) {
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+    }
+    i += n;
+  }
+  return true;
+}
+
 }  // namespace gltf_test_files

@@ -125,23 +125,6 @@ Bytes mutate(const Bytes& seed, HashRng& rng) {
   return out;
 }
 
-bool validUtf8(const std::string& s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const std::size_t n = c < 0x80         ? 1
-                          : (c >> 5) == 6  ? 2
-                          : (c >> 4) == 14 ? 3
-                          : (c >> 3) == 30 ? 4
-                                           : 0;
-    if (n == 0 || i + n > s.size()) return false;
-    for (std::size_t k = 1; k < n; ++k) {
-      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
-    }
-    i += n;
-  }
-  return true;
-}
-
 // What a successful load promises its users (the renderer indexes with these blindly).
 void expectUsable(const Model& model) {
   ASSERT_FALSE(model.instances.empty());
@@ -189,12 +172,12 @@ TEST(SceneGltfFuzz, SeededMutationsNeverCrashHangOrMisreport) {
       ++loaded;
       expectUsable(model);
       ASSERT_EQ(warnings.find('\n'), std::string::npos);
-      ASSERT_TRUE(validUtf8(warnings));
+      ASSERT_TRUE(gltf_test_files::validUtf8(warnings));
     } else {
       ASSERT_TRUE(model.instances.empty() && model.meshes.empty() && model.materials.empty());
       ASSERT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
       ASSERT_EQ(error.find('\n'), std::string::npos) << error;
-      ASSERT_TRUE(validUtf8(error)) << error;
+      ASSERT_TRUE(gltf_test_files::validUtf8(error)) << error;
     }
   }
   ::alarm(0);

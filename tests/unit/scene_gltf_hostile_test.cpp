@@ -34,23 +34,6 @@ struct HangGuard {
   ~HangGuard() { ::alarm(0); }
 };
 
-bool validUtf8(const std::string& s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const std::size_t n = c < 0x80         ? 1
-                          : (c >> 5) == 6  ? 2
-                          : (c >> 4) == 14 ? 3
-                          : (c >> 3) == 30 ? 4
-                                           : 0;
-    if (n == 0 || i + n > s.size()) return false;
-    for (std::size_t k = 1; k < n; ++k) {
-      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
-    }
-    i += n;
-  }
-  return true;
-}
-
 std::string refused(const fs::path& path) {
   HangGuard guard;
   Model model;
@@ -59,7 +42,7 @@ std::string refused(const fs::path& path) {
   EXPECT_TRUE(model.instances.empty() && model.meshes.empty());
   EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
-  EXPECT_TRUE(validUtf8(error)) << error;
+  EXPECT_TRUE(gltf_test_files::validUtf8(error)) << error;
   return error;
 }
 
