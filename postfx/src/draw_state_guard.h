@@ -4,7 +4,7 @@
 // turn on only what they need: additive blending, depth testing for the caster maps), restored
 // on destruction. Without it a host that left, say, GL_COLOR_LOGIC_OP enabled got a different
 // image (a logic op replaces blending, even on float targets). Bindings live in GlStateGuard;
-// this guard is constructed inside it, so both save the host's values.
+// this guard is constructed inside it. The one place the plugin saves draw state.
 #include <epoxy/gl.h>
 
 #include <array>

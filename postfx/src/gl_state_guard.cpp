@@ -1,7 +1,5 @@
 #include "gl_state_guard.h"
 
-#include <algorithm>
-
 #include "shared_math.h"
 
 static_assert(POSTFX_CAUSTICS_BLOCK_BINDING < 2 && POSTFX_GODRAYS_BLOCK_BINDING < 2,
@@ -13,27 +11,6 @@ GlStateGuard::GlStateGuard() {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
   glGetFloati_v(GL_VIEWPORT, 0, viewport_);
-  scissor0_ = glIsEnabledi(GL_SCISSOR_TEST, 0);
-  for (GLuint i = 0; i < kDrawBufferCount; ++i) {
-    BlendState& b = blend_[i];
-    b.enabled = glIsEnabledi(GL_BLEND, i);
-    glGetIntegeri_v(GL_BLEND_SRC_RGB, i, &b.srcRgb);
-    glGetIntegeri_v(GL_BLEND_DST_RGB, i, &b.dstRgb);
-    glGetIntegeri_v(GL_BLEND_SRC_ALPHA, i, &b.srcAlpha);
-    glGetIntegeri_v(GL_BLEND_DST_ALPHA, i, &b.dstAlpha);
-    glGetIntegeri_v(GL_BLEND_EQUATION_RGB, i, &b.equationRgb);
-    glGetIntegeri_v(GL_BLEND_EQUATION_ALPHA, i, &b.equationAlpha);
-    glGetBooleani_v(GL_COLOR_WRITEMASK, i, b.colorMask);
-  }
-  cullFace_ = glIsEnabled(GL_CULL_FACE);
-  rasterizerDiscard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
-  programPointSize_ = glIsEnabled(GL_PROGRAM_POINT_SIZE);
-  glGetIntegerv(GL_POLYGON_MODE, polygonMode_);
-  GLint maxClip = 0;
-  glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
-  clipDistanceCount_ = std::min(static_cast<int>(maxClip), kMaxClipDistances);
-  for (int i = 0; i < clipDistanceCount_; ++i)
-    clipDistance_[i] = glIsEnabled(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
   glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
@@ -75,23 +52,6 @@ GlStateGuard::~GlStateGuard() {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
   glViewportIndexedfv(0, viewport_);
-  restoreEnabledi(GL_SCISSOR_TEST, 0, scissor0_);
-  for (GLuint i = 0; i < kDrawBufferCount; ++i) {
-    const BlendState& b = blend_[i];
-    restoreEnabledi(GL_BLEND, i, b.enabled);
-    glBlendFuncSeparatei(i, static_cast<GLenum>(b.srcRgb), static_cast<GLenum>(b.dstRgb),
-                         static_cast<GLenum>(b.srcAlpha), static_cast<GLenum>(b.dstAlpha));
-    glBlendEquationSeparatei(i, static_cast<GLenum>(b.equationRgb),
-                             static_cast<GLenum>(b.equationAlpha));
-    glColorMaski(i, b.colorMask[0], b.colorMask[1], b.colorMask[2], b.colorMask[3]);
-  }
-  restoreEnabled(GL_CULL_FACE, cullFace_);
-  restoreEnabled(GL_RASTERIZER_DISCARD, rasterizerDiscard_);
-  restoreEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
-  // Core profiles keep one mode for both faces.
-  glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygonMode_[0]));
-  for (int i = 0; i < clipDistanceCount_; ++i)
-    restoreEnabled(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), clipDistance_[i]);
   glUseProgram(static_cast<GLuint>(program_));
   glBindVertexArray(static_cast<GLuint>(vertexArray_));
   for (int unit = 0; unit < kUnitCount; ++unit) {

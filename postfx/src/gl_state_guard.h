@@ -1,7 +1,9 @@
 #pragma once
-// Saves, on construction, every piece of GL state the plugin's passes may change, and restores
-// it on destruction: the host's frame must not notice that dispatch() ran. The list is the
-// union of what CausticsPass, GodRaysPass and GpuTimers touch; extend both together.
+// Saves, on construction, every binding the plugin's passes may change (framebuffers, viewport,
+// program, vertex array, texture units, samplers, buffers), and restores it on destruction: the
+// host's frame must not notice that dispatch() ran. The list is the union of what the passes
+// and GpuTimers bind; extend both together. Fixed-function draw state (blend, masks, enables,
+// polygon mode, clip distances, scissor) is DrawStateGuard's, constructed inside this one.
 #include <epoxy/gl.h>
 
 #include <array>
@@ -20,9 +22,6 @@ class GlStateGuard {
   // Texture units whose 2D / 2D-array / buffer bindings and sampler the passes rebind:
   // [0, unitCount).
   static constexpr int kUnitCount = 7;
-  // Draw buffers whose blend / colour-mask state the passes set: [0, kDrawBufferCount).
-  static constexpr int kDrawBufferCount = 2;
-  static constexpr int kMaxClipDistances = 8;
 
   GlStateGuard();
   ~GlStateGuard();
@@ -30,23 +29,12 @@ class GlStateGuard {
   GlStateGuard& operator=(const GlStateGuard&) = delete;
 
  private:
-  struct BlendState {
-    GLboolean enabled;
-    GLint srcRgb, dstRgb, srcAlpha, dstAlpha, equationRgb, equationAlpha;
-    GLboolean colorMask[4];
-  };
   struct UnitState {
     GLint texture2d, texture2dArray, textureBuffer, sampler;
   };
 
   GLint drawFramebuffer_ = 0, readFramebuffer_ = 0;
   GLfloat viewport_[4] = {};
-  GLboolean scissor0_ = GL_FALSE;
-  std::array<BlendState, kDrawBufferCount> blend_{};
-  GLboolean cullFace_ = GL_FALSE, rasterizerDiscard_ = GL_FALSE, programPointSize_ = GL_FALSE;
-  GLint polygonMode_[2] = {GL_FILL, GL_FILL};
-  int clipDistanceCount_ = 0;
-  std::array<GLboolean, kMaxClipDistances> clipDistance_{};
   GLint program_ = 0, vertexArray_ = 0, activeTexture_ = GL_TEXTURE0;
   std::array<UnitState, kUnitCount> units_{};
   // Indexed uniform-buffer bindings the passes use: the caustics block and the god-ray block.
