@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <postfx/postfx.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "headless_gl.h"
 
@@ -95,8 +95,8 @@ int main() {
 
   // The G-buffer a deferred renderer has after its lighting pass.
   const glm::dvec3 eye(0.3, -1.0, 0.7);
-  const glm::dmat4 view = glm::lookAt(glm::dvec3(0.0), glm::dvec3(0.0, -1.0, 0.0),
-                                      glm::dvec3(0.0, 0.0, -1.0));
+  const glm::dmat4 view =
+      glm::lookAt(glm::dvec3(0.0), glm::dvec3(0.0, -1.0, 0.0), glm::dvec3(0.0, 0.0, -1.0));
   const glm::dmat4 projection =
       glm::perspectiveRH_ZO(glm::radians(60.0), double(kWidth) / kHeight, 0.1, 100.0);
   const glm::dmat4 viewProjection = projection * view * glm::translate(glm::dmat4(1.0), -eye);
@@ -168,7 +168,8 @@ int main() {
         if (!std::isfinite(p[c]) || p[c] < 0.0f) return fail("non-finite or negative light");
       }
       if (x >= kWidth / 2) {
-        if (p[0] != 0.0f || p[1] != 0.0f || p[2] != 0.0f) return fail("light where nothing was drawn");
+        if (p[0] != 0.0f || p[1] != 0.0f || p[2] != 0.0f)
+          return fail("light where nothing was drawn");
         continue;
       }
       const double g = p[1];
@@ -182,9 +183,11 @@ int main() {
   const double mean = sum / seabed;
   const double contrast = std::sqrt(std::max(0.0, sumSquares / seabed - mean * mean)) / mean;
   if (!(mean > 0.0)) return fail("no caustic light on the seabed");
-  if (!(contrast > 0.05)) return fail("caustic light has no pattern (contrast " + std::to_string(contrast) + ")");
-  std::printf("minimal_host: refused a bad frame (\"%s\"), then added caustics: seabed green mean %.4f, "
-              "min %.4f, max %.4f, contrast %.3f; nothing where no surface was drawn\n",
-              refusal.c_str(), mean, low, high, contrast);
+  if (!(contrast > 0.05))
+    return fail("caustic light has no pattern (contrast " + std::to_string(contrast) + ")");
+  std::printf(
+      "minimal_host: refused a bad frame (\"%s\"), then added caustics: seabed green mean %.4f, "
+      "min %.4f, max %.4f, contrast %.3f; nothing where no surface was drawn\n",
+      refusal.c_str(), mean, low, high, contrast);
   return 0;
 }

@@ -94,8 +94,8 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
   const double need = plan.need[cell];
   if (!(need > 0.0)) return;
   postfx::water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
-                               (static_cast<std::uint64_t>(batch) << 40) ^
-                               (cell * 0xD1B54A32D192ED03ull));
+                                       (static_cast<std::uint64_t>(batch) << 40) ^
+                                       (cell * 0xD1B54A32D192ED03ull));
   random.nextBits();
   // n x n strata, or one photon with probability `need` (weight 1 / need) where less than one
   // is needed.

@@ -221,7 +221,8 @@ TEST_F(SampleCli, OutputDirectoryThatRefusesFilesFailsUpFront) {
   // is what refuses it); an ordinary user is refused by the directory check before that.
   const RunResult result = runSample("render --width 64 --height 36 --out /proc/o.exr", dir_);
   EXPECT_NE(result.exitCode, 0);
-  const bool probeRefused = result.stderrText.find("cannot create '/proc/o.exr'") != std::string::npos;
+  const bool probeRefused =
+      result.stderrText.find("cannot create '/proc/o.exr'") != std::string::npos;
   const bool directoryRefused =
       result.stderrText.find("output directory '/proc' does not exist or is not writable") !=
       std::string::npos;
