@@ -12,37 +12,15 @@
 #include "embree_scene.h"
 #include "frame_caustics_reference.h"
 #include "frame_receivers.h"
+#include "reference_test_surfaces.h"
 #include "seabed_reference.h"
 
 namespace {
 
 using namespace ocean::reference;
-
-constexpr double kPi = 3.141592653589793;
-
-class FlatSurface final : public Surface {
- public:
-  SurfaceSample sample(double, double) const override { return {}; }
-  double maxHeight() const override { return 0.0; }
-  double maxSlope() const override { return 0.0; }
-  double featureSize() const override { return 1.0; }
-};
-
-// h = A sin(k x): crests along z.
-class SineSurface final : public Surface {
- public:
-  SineSurface(double slope, double wavelength)
-      : k_(2.0 * kPi / wavelength), amplitude_(slope / k_), wavelength_(wavelength) {}
-  SurfaceSample sample(double x, double) const override {
-    return {amplitude_ * std::sin(k_ * x), amplitude_ * k_ * std::cos(k_ * x), 0.0};
-  }
-  double maxHeight() const override { return amplitude_; }
-  double maxSlope() const override { return amplitude_ * k_; }
-  double featureSize() const override { return wavelength_ / 64.0; }
-
- private:
-  double k_, amplitude_, wavelength_;
-};
+using referencetest::FlatSurface;
+using referencetest::kPi;
+using referencetest::SineSurface;
 
 // Axis-aligned horizontal rectangle [x0, x1] x [z0, z1] at height y, normal up.
 TriangleMesh horizontalQuad(double x0, double x1, double z0, double z1, double y) {
@@ -177,7 +155,7 @@ TEST(FrameReference, AWaterTileConservesFlux) {
   const double n = 1.333, slope = 0.15, depth = 4.0, height = 2.0, fovY = 0.9;
   const int width = 48, rows = 32;
   const double viewWidth = 2.0 * (height + depth) * std::tan(0.5 * fovY) * width / rows;
-  const SineSurface water(slope, viewWidth / 2.0);
+  const SineSurface water = SineSurface::withSlope(slope, viewWidth / 2.0);
   FrameTraceDesc desc = baseDesc({0.0, 1.0, 0.0});
   const Traced t = trace(water, {horizontalQuad(-50, 50, -50, 50, -depth)}, {0.0, height, 0.0},
                          desc, width, rows, fovY);
@@ -189,21 +167,14 @@ TEST(FrameReference, AWaterTileConservesFlux) {
     hi = std::max(hi, e);
   }
   mean /= static_cast<double>(r.irradiance.size());
-  const double flatT = fresnelTransmittance(1.0, n);
-  double expected = 0.0;
-  const int samples = 100000;
-  for (int i = 0; i < samples; ++i) {
-    const double s = water.sample((i + 0.5) / samples * viewWidth, 0.0).slopeX;
-    expected += fresnelTransmittance(1.0 / std::sqrt(1.0 + s * s), n) / flatT;
-  }
-  expected /= samples;
+  const double expected = referencetest::meanTransmittanceRatio(water, viewWidth, n);
   std::printf("tile flux: mean %.6f expected %.6f (min %.3f max %.3f)\n", mean, expected, lo, hi);
   EXPECT_GT(hi / lo, 1.5) << "the wave must modulate the light, or the test proves nothing";
   EXPECT_NEAR(mean / expected, 1.0, 1e-3);
 }
 
 TEST(FrameReference, TwoSeedsAgreeWithinTheStatedNoise) {
-  const SineSurface water(0.2, 3.0);
+  const SineSurface water = SineSurface::withSlope(0.2, 3.0);
   FrameTraceDesc desc = baseDesc({0.2, 1.0, 0.1});
   const std::vector<TriangleMesh> scene = {horizontalQuad(-50, 50, -50, 50, -3.0)};
   desc.seed = 1;
@@ -234,7 +205,7 @@ TEST(FrameReference, TwoSeedsAgreeWithinTheStatedNoise) {
 }
 
 TEST(FrameReference, AnyThreadCountGivesTheSameBits) {
-  const SineSurface water(0.2, 3.0);
+  const SineSurface water = SineSurface::withSlope(0.2, 3.0);
   FrameTraceDesc desc = baseDesc({0.2, 1.0, 0.1});
   desc.maxBatches = 1;
   const std::vector<TriangleMesh> scene = {horizontalQuad(-50, 50, -50, 50, -3.0)};

@@ -7,38 +7,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "reference_test_surfaces.h"
 #include "seabed_reference.h"
 
 namespace {
 
 using namespace ocean::reference;
-
-constexpr double kPi = 3.141592653589793;
-
-// h = amplitude * sin(k x): crests along z.
-class SineSurface final : public Surface {
- public:
-  SineSurface(double amplitude, double wavelength)
-      : amplitude_(amplitude), k_(2.0 * kPi / wavelength), wavelength_(wavelength) {}
-  SurfaceSample sample(double x, double) const override {
-    return {amplitude_ * std::sin(k_ * x), amplitude_ * k_ * std::cos(k_ * x), 0.0};
-  }
-  double maxHeight() const override { return amplitude_; }
-  double maxSlope() const override { return amplitude_ * k_; }
-  double featureSize() const override { return wavelength_ / 64.0; }
-  double k() const { return k_; }
-
- private:
-  double amplitude_, k_, wavelength_;
-};
-
-class FlatSurface final : public Surface {
- public:
-  SurfaceSample sample(double, double) const override { return {}; }
-  double maxHeight() const override { return 0.0; }
-  double maxSlope() const override { return 0.0; }
-  double featureSize() const override { return 1.0; }
-};
+using referencetest::FlatSurface;
+using referencetest::kPi;
+using referencetest::SineSurface;
 
 ReferenceDesc quietDesc() {
   ReferenceDesc d;
@@ -125,14 +102,7 @@ TEST(SeabedReference, SineWaveConservesFlux) {
   const ReferenceResult r = traceSeabedCaustics(surface, desc);
   // Expected mean: the transmittance ratio averaged over one period (vertical sun: the beam's
   // cross-section per horizontal area is 1 everywhere).
-  const double flatT = fresnelTransmittance(1.0, n);
-  double expected = 0.0;
-  const int samples = 100000;
-  for (int i = 0; i < samples; ++i) {
-    const double s = surface.sample((i + 0.5) / samples * wavelength, 0.0).slopeX;
-    expected += fresnelTransmittance(1.0 / std::sqrt(1.0 + s * s), n) / flatT;
-  }
-  expected /= samples;
+  const double expected = referencetest::meanTransmittanceRatio(surface, wavelength, n);
   for (size_t i = 0; i < desc.receivers.size(); ++i) {
     const std::vector<double>& e = r.receivers[i].irradiance;
     double mean = 0.0, peak = 0.0;
