@@ -172,12 +172,20 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   // Same water-column model as the seabed caustics: Beer-Lambert along the refracted sun.
   const double cosT = std::max(-f.direction.y, 1e-3);
   b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
+  b.splatScale = glm::vec4(float(1.0 / texel), kMaxRoughSplatSigma, 0.0f, 0.0f);
+  const bool dispersion = hasFeature(create.features, Feature::Dispersion);
   for (int c = 0; c < objects.casterCount && c < POSTFX_MAX_CASTERS; ++c) {
     const CasterMaterial& m = objects.casters[c].material;
     const bool reflective = m.type == CasterMaterialType::Reflective;
-    b.materials[2 * c] =
-        glm::vec4(reflective ? 1.0f : 0.0f, float(double(m.ior) / f.outerIor), 0.0f, 0.0f);
-    b.materials[2 * c + 1] = glm::vec4(reflective ? m.reflectance : m.absorption, 0.0f);
+    // KHR_materials_dispersion's half spread, made relative to the outer medium like the IOR.
+    const double spread =
+        dispersion && !reflective ? (double(m.ior) - 1.0) * 0.025 * double(m.dispersion) : 0.0;
+    if (spread > 0.0) b.receiver.w = 1.0f;
+    glm::vec4* slot = &b.materials[POSTFX_CASTER_VEC4S * c];
+    slot[0] = glm::vec4(reflective ? 1.0f : 0.0f, float(double(m.ior) / f.outerIor),
+                        float(spread / f.outerIor), m.transmission);
+    slot[1] = glm::vec4(reflective ? m.reflectance : m.absorption, m.roughness * m.roughness);
+    slot[2] = glm::vec4(m.tint, m.thinWalled ? 1.0f : 0.0f);
   }
   return b;
 }

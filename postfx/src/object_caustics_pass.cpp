@@ -191,6 +191,7 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
     historyValid_ = false;
   placement_ = placement;
   light_ = light;
+  dispersed_ = block.receiver.w > 0.5f;
   return Result::Ok;
 }
 
@@ -272,7 +273,9 @@ void ObjectCausticsPass::drawSplats(const FrameDesc& frame) {
   glBindSamplers(kUnit0, 5, samplers);
   glBindVertexArray(emptyVao_);
   glUseProgram(splat_.id());
-  glDrawArrays(GL_POINTS, 0, gridSize_ * gridSize_);
+  // A dispersed caster needs one ray per colour channel: three instances, the shader drops the
+  // extra rays of the others. Without dispersion the draw is the single grid it always was.
+  glDrawArraysInstanced(GL_POINTS, 0, gridSize_ * gridSize_, dispersed_ ? 3 : 1);
   glDisable(GL_PROGRAM_POINT_SIZE);
 }
 

@@ -60,6 +60,7 @@ class ObjectCausticsPass {
   int gridSize_ = 0, mapSize_ = 0;
   int historyIndex_ = 0;
   bool historyValid_ = false;
+  bool dispersed_ = false;      // a caster is dispersed this frame: three rays per grid cell
   ObjectCausticMap map_;        // what the last frame published
   ObjectCausticMap placement_;  // this frame's placement (texture filled by draw)
   ObjectLightFrame light_;  // this frame's light-space fit (the casters are drawn relative to it)

@@ -123,6 +123,15 @@ Result checkCaster(int index, const CasterMesh& m, std::string& error) {
   if (!inRange(mat.absorption, 0.0, 1e4))
     return fail(".material.absorption must be in [0, 1e4] per metre");
   if (!inRange(mat.reflectance, 0.0, 1.0)) return fail(".material.reflectance must be in [0, 1]");
+  if (!inRange(mat.transmission, 0.0, 1.0))
+    return fail(".material.transmission must be in [0, 1], got " +
+                std::to_string(mat.transmission));
+  if (!inRange(mat.tint, 0.0, 1.0)) return fail(".material.tint must be in [0, 1]");
+  if (!inRange(mat.roughness, 0.0, 1.0))
+    return fail(".material.roughness must be in [0, 1], got " + std::to_string(mat.roughness));
+  if (!inRange(mat.dispersion, 0.0, kMaxCasterDispersion))
+    return fail(".material.dispersion must be in [0, " + std::to_string(kMaxCasterDispersion) +
+                "], got " + std::to_string(mat.dispersion));
   return Result::Ok;
 }
 

@@ -19,8 +19,19 @@ struct Landing {
 
 // Returns nothing when the ray misses the caster; a landing with zero flux when it hits but its
 // light never reaches the plane.
-using TraceFn =
-    std::function<std::optional<Landing>(const glm::dvec3& origin, const glm::dvec3& dir)>;
+using TraceFn = std::function<std::optional<Landing>(const glm::dvec3& origin,
+                                                     const glm::dvec3& dir, std::mt19937_64& rng)>;
+
+// A rough surface's outgoing direction: `d` deflected by independent Gaussians of standard
+// deviation `alpha` (radians) along two axes across it (the plugin's splat widening in
+// CasterMaterial::roughness is this cone's footprint).
+glm::dvec3 roughen(const glm::dvec3& d, double alpha, std::mt19937_64& rng) {
+  if (!(alpha > 0.0)) return d;
+  const glm::dvec3 ref = std::abs(d.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 a = glm::normalize(glm::cross(ref, d)), b = glm::cross(d, a);
+  std::normal_distribution<double> gauss(0.0, alpha);
+  return glm::normalize(d + a * std::tan(gauss(rng)) + b * std::tan(gauss(rng)));
+}
 
 double fresnel(double cosI, double eta) {
   cosI = std::clamp(cosI, 0.0, 1.0);
@@ -74,7 +85,7 @@ CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfS
       for (int i = 0; i < n; ++i) {
         const double a = -halfSide + (i + jitter(rng)) * cell;
         const double b = -halfSide + (j + jitter(rng)) * cell;
-        const std::optional<Landing> l = fn(start + right * a + up * b, d);
+        const std::optional<Landing> l = fn(start + right * a + up * b, d, rng);
         if (!l) continue;
         local.interceptedArea += cell * cell;
         const glm::dvec3 flux = l->flux * (cell * cell);
@@ -106,11 +117,14 @@ CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfS
 
 }  // namespace
 
-CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& towardSun,
-                                      double planeY, const postfx::ObjectCausticMap& map,
-                                      int raysPerSide, unsigned seed) {
-  const TraceFn fn = [&s, planeY](const glm::dvec3& o,
-                                  const glm::dvec3& d) -> std::optional<Landing> {
+namespace {
+
+CausticReference traceOneIor(const SphereCaster& s, const glm::dvec3& towardSun, double planeY,
+                             const postfx::ObjectCausticMap& map, int raysPerSide, unsigned seed) {
+  const double alpha = s.roughness * s.roughness;
+  const glm::dvec3 weight = s.transmission * s.tint;
+  const TraceFn fn = [&s, planeY, alpha, weight](const glm::dvec3& o, const glm::dvec3& d,
+                                                 std::mt19937_64& rng) -> std::optional<Landing> {
     const glm::dvec3 oc = o - s.centre;
     const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
     const double disc = b * b - c;
@@ -119,6 +133,11 @@ CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& t
     const glm::dvec3 n1 = (p1 - s.centre) / s.radius;
     Landing none{p1, glm::dvec3(0.0)};
     const double t1 = 1.0 - fresnel(-glm::dot(d, n1), s.ior);
+    if (s.thinWalled) {
+      const std::optional<glm::dvec3> hit = landOnPlane(p1, roughen(d, alpha, rng), planeY);
+      if (!hit) return none;
+      return Landing{*hit, t1 * t1 * weight};
+    }
     const std::optional<glm::dvec3> in = refractRay(d, n1, 1.0 / s.ior);
     if (!in) return none;
     const double chord = -2.0 * glm::dot(p1 - s.centre, *in);
@@ -127,17 +146,46 @@ CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& t
     const std::optional<glm::dvec3> outRay = refractRay(*in, -n2, s.ior);
     if (!outRay) return none;  // total internal reflection (never for a sphere)
     const double t2 = 1.0 - fresnel(glm::dot(*in, n2), 1.0 / s.ior);
-    const std::optional<glm::dvec3> hit = landOnPlane(p2, glm::normalize(*outRay), planeY);
+    const std::optional<glm::dvec3> hit =
+        landOnPlane(p2, roughen(glm::normalize(*outRay), alpha, rng), planeY);
     if (!hit) return none;
-    return Landing{*hit, t1 * t2 * glm::exp(-s.absorption * chord)};
+    return Landing{*hit, t1 * t2 * weight * glm::exp(-s.absorption * chord)};
   };
   return trace(fn, s.centre, s.radius * 1.01, towardSun, map, raysPerSide, "sphere", seed);
 }
 
+}  // namespace
+
+CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& towardSun,
+                                      double planeY, const postfx::ObjectCausticMap& map,
+                                      int raysPerSide, unsigned seed) {
+  if (!(s.dispersion > 0.0)) return traceOneIor(s, towardSun, planeY, map, raysPerSide, seed);
+  // One trace per channel with that channel's IOR, keeping only its own colour.
+  CausticReference sum;
+  const double halfSpread = (s.ior - 1.0) * 0.025 * s.dispersion;
+  for (int c = 0; c < 3; ++c) {
+    SphereCaster channel = s;
+    channel.dispersion = 0.0;
+    channel.ior = s.ior + (c - 1) * halfSpread;
+    glm::dvec3 mask(0.0);
+    mask[c] = 1.0;
+    channel.tint = s.tint * mask;
+    const CausticReference one = traceOneIor(channel, towardSun, planeY, map, raysPerSide, seed);
+    if (c == 0) {
+      sum = one;
+      continue;
+    }
+    for (size_t k = 0; k < sum.irradiance.size(); ++k) sum.irradiance[k] += one.irradiance[k];
+    sum.fluxInMap += one.fluxInMap;
+    sum.fluxOutside += one.fluxOutside;
+  }
+  return sum;
+}
+
 CausticReference traceRingReference(const RingCaster& r, const glm::dvec3& towardSun, double planeY,
                                     const postfx::ObjectCausticMap& map, int raysPerSide) {
-  const TraceFn fn = [&r, planeY](const glm::dvec3& o,
-                                  const glm::dvec3& d) -> std::optional<Landing> {
+  const TraceFn fn = [&r, planeY](const glm::dvec3& o, const glm::dvec3& d,
+                                  std::mt19937_64&) -> std::optional<Landing> {
     const double top = r.base.y + r.height, bottom = r.base.y;
     auto radial = [&r](const glm::dvec3& p) { return glm::dvec2(p.x - r.base.x, p.z - r.base.z); };
     // Roots of |radial(o + t d)| = radius.

@@ -16,6 +16,16 @@ struct SphereCaster {
   double radius = 1.0;
   double ior = 1.5;  // relative to the outer medium
   glm::dvec3 absorption{0.0};
+  // postfx::CasterMaterial's glass fields, traced as its header states them: the transmission
+  // weight and the tint once per ray; thin-walled = the ray keeps its direction and loses both
+  // Fresnel reflections, no absorption; roughness = the outgoing ray deflected by a Gaussian of
+  // standard deviation roughness^2 radians on each axis across it; dispersion = each channel
+  // traced alone with IOR ior + (c - 1) * (ior - 1) * 0.025 * dispersion (R, G, B).
+  double transmission = 1.0;
+  glm::dvec3 tint{1.0};
+  bool thinWalled = false;
+  double roughness = 0.0;
+  double dispersion = 0.0;
 };
 
 struct RingCaster {

@@ -16,6 +16,7 @@ layout(binding = 4) uniform sampler2D receiverDepth;
 
 flat out vec2 splatCentre;  // map texels
 flat out vec3 splatFlux;
+flat out float splatSigma;  // map texels
 
 const float kNoBracket = 1e30;
 
@@ -24,6 +25,7 @@ void dropRay() {
   gl_PointSize = 1.0;
   splatCentre = vec2(0.0);
   splatFlux = vec3(0.0);
+  splatSigma = 1.0;
 }
 
 // Light-space (u, v) of p, in [0, 1] over the grid region.
@@ -144,6 +146,19 @@ bool hitReceiver(vec3 origin, vec3 ray, int iterations, out vec3 hit) {
   return dot(probe - hit, u.lightDir.xyz) >= gOrigin;
 }
 
+// The colour channel this invocation carries: all three (one ray per cell), or, when a caster
+// is dispersed (the draw is instanced three times), the instance's channel with that channel's
+// IOR. Returns false for the rays a non-dispersed caster does not need in a dispersed draw.
+bool rayChannel(float spread, out vec3 mask, out float etaOffset) {
+  mask = vec3(1.0);
+  etaOffset = 0.0;
+  if (!(u.receiver.w > 0.5)) return true;
+  if (!(spread > 0.0)) return gl_InstanceID == 0;
+  mask = vec3(equal(ivec3(0, 1, 2), ivec3(gl_InstanceID)));
+  etaOffset = float(gl_InstanceID - 1) * spread;  // R: -h, G: 0, B: +h (red bends least)
+  return true;
+}
+
 void main() {
   int size = int(u.grid.x);
   ivec2 cell = ivec2(gl_VertexID % size, gl_VertexID / size);
@@ -153,22 +168,41 @@ void main() {
     return;
   }
   int caster = clamp(int(front.w + 0.5) - 1, 0, POSTFX_MAX_CASTERS - 1);
-  vec4 material = u.materials[2 * caster];
-  vec3 tint = u.materials[2 * caster + 1].rgb;
+  vec4 material = u.materials[POSTFX_CASTER_VEC4S * caster];
+  vec4 optics = u.materials[POSTFX_CASTER_VEC4S * caster + 1];
+  vec4 transmitTint = u.materials[POSTFX_CASTER_VEC4S * caster + 2];
+  vec3 tint = optics.rgb;
+  float alpha = optics.w;
+  bool reflective = material.x > 0.5;
+  vec3 channelMask;
+  float etaOffset;
+  if (!rayChannel(reflective ? 0.0 : material.z, channelMask, etaOffset)) {
+    dropRay();
+    return;
+  }
   vec3 l = u.lightDir.xyz;
   vec3 n0 = texelFetch(frontNormal, cell, 0).xyz;  // faces the light
   float cosI = clamp(-dot(l, n0), 0.0, 1.0);
   int iterations = int(u.lightDir.w);
 
   vec3 origin, ray, flux;
-  if (material.x > 0.5) {  // reflective
+  if (reflective) {
     // Even a ray sent back towards the sun can land on a receiver the sun sees (in front of a
     // mirror); one that never does is caught by hitReceiver.
     ray = reflect(l, n0);
     origin = front.xyz;
     flux = fresnelSchlick(cosI, tint);
+  } else if (transmitTint.w > 0.5) {
+    // Thin-walled: two parallel interfaces a negligible distance apart. The ray leaves in its
+    // own direction from where it entered, less both Fresnel reflections (equal by
+    // reciprocity); no volume, so no absorption.
+    float eta = material.y + etaOffset;
+    float t = 1.0 - fresnelDielectric(cosI, eta);
+    ray = l;
+    origin = front.xyz;
+    flux = vec3(t * t) * material.w * transmitTint.rgb;
   } else {
-    float eta = material.y;  // object over outer medium
+    float eta = material.y + etaOffset;  // object over outer medium
     vec3 inside = refract(l, n0, 1.0 / eta);
     float transmitted = 1.0 - fresnelDielectric(cosI, eta);
     vec3 exitPoint = front.xyz, exitNormal = -n0;
@@ -182,7 +216,8 @@ void main() {
     }
     transmitted *= 1.0 - fresnelDielectric(cosExit, 1.0 / eta);
     float path = length(exitPoint - front.xyz);
-    flux = transmitted * exp(-tint * path);
+    // Transmission weight and tint once per ray; Beer-Lambert along the traversed chord.
+    flux = transmitted * material.w * transmitTint.rgb * exp(-tint * path);
     origin = exitPoint;
   }
   vec3 hit;
@@ -191,13 +226,18 @@ void main() {
     return;
   }
   vec2 uv = vec2(dot(hit, u.lightRight.xyz), dot(hit, u.lightUp.xyz)) / (2.0 * u.lightUp.w) + 0.5;
-  splatFlux = flux * u.grid.w;
+  splatFlux = flux * channelMask * u.grid.w;
   splatCentre = uv * u.grid.y;
+  // Roughness: the ray's light spreads over a cone of angular deviation alpha, as wide on the
+  // receiver as alpha times the distance travelled (casters.h, CasterMaterial::roughness).
+  float spreadTexels = alpha * length(hit - origin) * u.splatScale.x;
+  splatSigma = min(sqrt(u.grid.z * u.grid.z + spreadTexels * spreadTexels), u.splatScale.y);
   // NaN fails every comparison, Inf fails the bound: neither reaches the map.
-  if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))))) {
+  if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))) &&
+        splatSigma >= u.grid.z)) {
     dropRay();
     return;
   }
-  gl_PointSize = splatSpriteSize(u.grid.z);
+  gl_PointSize = splatSpriteSize(splatSigma);
   gl_Position = vec4(uv * 2.0 - 1.0, 0.5, 1.0);
 }

@@ -10,6 +10,7 @@
 // already saves and restores binding 0.
 #define POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING 0
 #define POSTFX_MAX_CASTERS 64
+#define POSTFX_CASTER_VEC4S 3
 
 SHARED_BEGIN
 
@@ -25,9 +26,12 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
   vec4 lightDir;             // xyz: unit direction the light travels; w: hit iterations
   vec4 lightRight;           // xyz: map u axis (unit); w: half side of the grid region (m)
   vec4 lightUp;              // xyz: map v axis (unit); w: half side of the map region (m)
-  vec4 grid;             // x: grid size, y: map size, z: splat sigma (map texels), w: flux per ray
+  vec4 grid;  // x: grid size, y: map size, z: splat sigma (map texels), w: flux per ray
+  // x: caustic-map texels per metre, y: kMaxRoughSplatSigma (rough splats); zw: unused
+  vec4 splatScale;
   vec4 receiver;         // x: 1 = [-1,1] depth convention, y: window depth of "no receiver" (far),
-                         // z: receiver depth tolerance (window units), w: unused
+                         // z: receiver depth tolerance (window units),
+                         // w: 1 when a caster is dispersed (one ray per channel)
   vec4 cameraOffset;     // xyz: camera - anchor (m); w: water level - anchor y (m)
   vec4 viewport;         // 1/width, 1/height, width, height
   vec4 projection;       // P[0][0], P[1][1], P[2][0], P[2][1]
@@ -35,12 +39,16 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
                          // w: back-surface (exit) iterations
   vec4 lightScale;       // rgb: sun irradiance * intensity; w: unused
   vec4 waterAbsorption;  // rgb: water absorption / cos(theta_t) per metre of depth; w: unused
-  // Per caster i: [2i] x: 0 refractive / 1 reflective, y: IOR relative to the outer medium;
-  // [2i+1] rgb: absorption per metre (refractive) or F0 (reflective).
-  vec4 materials[2 * POSTFX_MAX_CASTERS];
+  // Per caster i (POSTFX_CASTER_VEC4S vec4s from i * POSTFX_CASTER_VEC4S):
+  // [0] x: 0 refractive / 1 reflective, y: IOR relative to the outer medium (green),
+  //     z: dispersion half spread of that relative IOR (0: one IOR), w: transmission;
+  // [1] rgb: absorption per metre (refractive) or F0 (reflective), w: GGX alpha (roughness^2);
+  // [2] rgb: tint of the transmitted light, w: 1 = thin-walled.
+  vec4 materials[POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS];
 #ifdef __cplusplus
 };
-static_assert(sizeof(ObjectCausticsBlock) == 4 * 64 + 11 * 16 + 2 * POSTFX_MAX_CASTERS * 16,
+static_assert(sizeof(ObjectCausticsBlock) ==
+                  4 * 64 + 12 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
               "ObjectCausticsBlock must match its std140 layout");
 #else
 }

@@ -25,6 +25,16 @@ namespace postfx {
 
 inline constexpr int kMaxCasters = 64;  // casters per frame
 
+// Limits of the glTF-style glass fields of CasterMaterial (issue 17).
+// A rough surface spreads a ray's light over a cone; its splat grows with the distance to the
+// receiver up to this standard deviation (caster-map texels). The cap bounds the sprite
+// (2 * ceil(3 * 16) + 1 = 97 texels a side) and so the cost of a rough caster; beyond it the
+// caustic is too wide to be more than a faint wash anyway.
+inline constexpr float kMaxRoughSplatSigma = 16.0f;
+// KHR_materials_dispersion's value is 20 / Abbe number; [0, 1] are real materials, rutile is
+// 2.04. At this cap the half spread is a quarter of (ior - 1), so the red index stays above 1.
+inline constexpr float kMaxCasterDispersion = 10.0f;
+
 enum class CasterMaterialType : std::uint32_t {
   Refractive,  // glass, water drops: refracted at the front and the back surface
   Reflective,  // metal: one specular bounce at the surface facing the sun
@@ -41,6 +51,35 @@ struct CasterMaterial {
   glm::vec3 absorption{0.0f};
   // Reflective: specular colour at normal incidence (Schlick's F0), linear RGB, [0, 1].
   glm::vec3 reflectance{0.95f};
+
+  // glTF-style glass (KHR_materials_transmission, _volume, _dispersion; issue 17). The defaults
+  // are clear, smooth, solid glass: the behaviour before these fields existed.
+  //
+  // Refractive: the share of the light crossing the surface that goes on as a refracted ray,
+  // [0, 1] (glTF transmissionFactor x (1 - metallic)); the rest is scattered diffusely by the
+  // host's shading and focuses nothing. The caustic's flux scales with it.
+  float transmission = 1.0f;
+  // Refractive: colour of the transmitted light, linear RGB, [0, 1] (glTF baseColorFactor.rgb
+  // tints transmission). Applied once per ray, whatever the path length; absorption is the
+  // path-length-dependent colour.
+  glm::vec3 tint{1.0f};
+  // Refractive: a thin-walled shell (glTF: no KHR_materials_volume, or thicknessFactor 0): the
+  // ray crosses two parallel interfaces close together, so it keeps its direction (no focusing,
+  // no offset), loses the Fresnel reflection of both, and is not absorbed (no volume). False: a
+  // solid, refracted where it enters and where it leaves, absorbed along the traversed chord.
+  bool thinWalled = false;
+  // Both types: glTF perceptual roughness, [0, 1]. The outgoing ray is spread over a cone of
+  // angular standard deviation alpha = roughness^2 radians (GGX alpha, the microfacet normals'
+  // spread), so its splat's standard deviation grows to
+  //   sqrt(splatRadius^2 + (alpha * d / texel)^2) texels, at most kMaxRoughSplatSigma,
+  // d the distance from where the ray leaves the caster to where it lands. The flux of the
+  // splat is unchanged: a rough caster's caustic is wider and dimmer, never brighter.
+  float roughness = 0.0f;
+  // Refractive, only when the context has Feature::Dispersion: KHR_materials_dispersion
+  // (20 / Abbe number), [0, kMaxCasterDispersion]. Each colour channel is traced with its own
+  // IOR, as the extension's implementation note gives: half spread h = (ior - 1) * 0.025 *
+  // dispersion, IOR (ior - h, ior, ior + h) for (R, G, B), red at least 1. 0: one IOR, one ray.
+  float dispersion = 0.0f;
 };
 
 // One caster: a triangle list read from the host's buffers.
