@@ -11,14 +11,27 @@ namespace ocean {
 
 postfx::CasterMaterial casterMaterial(const ocean_scene::Material& m) {
   postfx::CasterMaterial out;
-  if (!m.isRefractive()) {
+  out.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
+  // glTF: the metal lobe takes `metallic` of the light and transmission acts only on the
+  // dielectric rest; the plugin has one lobe per caster, so a mostly metal surface is a mirror.
+  // ior 0 (KHR_materials_ior's infinite IOR) makes the Fresnel term 1: all light is reflected,
+  // uncoloured, none transmitted.
+  const bool metal = m.metallic >= 0.5f;
+  if (!m.isRefractive() || metal || m.ior == 0.0f) {
     out.type = postfx::CasterMaterialType::Reflective;
-    out.reflectance = glm::clamp(m.baseColor, glm::vec3(0.0f), glm::vec3(1.0f));
+    out.reflectance =
+        metal ? glm::clamp(m.baseColor, glm::vec3(0.0f), glm::vec3(1.0f)) : glm::vec3(1.0f);
     return out;
   }
   out.type = postfx::CasterMaterialType::Refractive;
   out.ior = std::clamp(m.ior, 1.0f, 3.0f);
-  if (std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f) {
+  out.transmission = std::clamp(m.transmission * (1.0f - m.metallic), 0.0f, 1.0f);
+  out.tint = glm::clamp(m.baseColor, glm::vec3(0.0f), glm::vec3(1.0f));
+  out.dispersion = std::clamp(m.dispersion, 0.0f, postfx::kMaxCasterDispersion);
+  // KHR_materials_volume: thicknessFactor 0 (or no volume at all) is a thin-walled surface,
+  // with no volume to absorb in.
+  out.thinWalled = !(m.thickness > 0.0f);
+  if (!out.thinWalled && std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f) {
     const glm::vec3 colour = glm::clamp(m.attenuationColor, glm::vec3(1e-4f), glm::vec3(1.0f));
     out.absorption = -glm::log(colour) / m.attenuationDistance;
   }
@@ -49,6 +62,19 @@ std::string casterRefusal(const ocean_scene::Material& material, const glm::mat4
   return "";
 }
 
+std::string clampedFields(const ocean_scene::Material& material) {
+  if (casterMaterial(material).type != postfx::CasterMaterialType::Refractive) return "";
+  char text[160] = "";
+  if (material.ior > 3.0f) {
+    std::snprintf(text, sizeof text, "ior %.3g is clamped to 3, the plugin's limit",
+                  double(material.ior));
+  } else if (material.dispersion > postfx::kMaxCasterDispersion) {
+    std::snprintf(text, sizeof text, "dispersion %.3g is clamped to %.3g, the plugin's limit",
+                  double(material.dispersion), double(postfx::kMaxCasterDispersion));
+  }
+  return text;
+}
+
 void admitCasters(ocean_scene::Model& scene, std::vector<std::string>& warnings) {
   int admitted = 0;
   int overBudget = 0;
@@ -66,13 +92,10 @@ void admitCasters(ocean_scene::Model& scene, std::vector<std::string>& warnings)
       warnings.push_back(instance.name + ": casts no caustics, " + refusal);
       continue;
     }
-    // casterMaterial clamps the IOR to the plugin's [1, 3]; say so once per material.
-    if (material.isRefractive() && material.ior > 3.0f &&
-        clampWarned.insert(materialIndex).second) {
-      char ior[32];
-      std::snprintf(ior, sizeof ior, "%.3g", double(material.ior));
-      warnings.push_back(instance.name + ": material '" + material.name + "' ior " + ior +
-                         " is clamped to 3, the plugin's limit");
+    // casterMaterial clamps what the plugin cannot take; say so once per material.
+    const std::string clamped = clampedFields(material);
+    if (!clamped.empty() && clampWarned.insert(materialIndex).second) {
+      warnings.push_back(instance.name + ": material '" + material.name + "' " + clamped);
     }
     if (admitted == postfx::kMaxCasters) {
       instance.castsCaustics = false;

@@ -12,10 +12,18 @@
 
 namespace ocean {
 
-// glTF material -> the plugin's: transmission means glass (KHR_materials_ior, and
-// KHR_materials_volume's attenuation as Beer-Lambert absorption), otherwise metal whose base
-// colour is its reflectance at normal incidence (glTF metallic-roughness).
+// glTF material -> the plugin's. Transmission on a mostly dielectric surface (metallic < 0.5)
+// means glass: KHR_materials_ior, transmissionFactor x (1 - metallic) as the transmission
+// weight, the base colour as the tint of transmitted light, KHR_materials_volume's attenuation
+// as Beer-Lambert absorption, thicknessFactor 0 (or no volume) as thin-walled,
+// KHR_materials_dispersion, roughness. Otherwise a mirror: metal whose base colour is its
+// reflectance at normal incidence (glTF metallic-roughness), or, for transmissive glass with
+// ior 0 (the spec's infinite IOR), a white mirror.
 postfx::CasterMaterial casterMaterial(const ocean_scene::Material& material);
+
+// "ior 4 is clamped to 3, the plugin's limit" (or the dispersion's) when casterMaterial had
+// to clamp a field to the plugin's range; "" when nothing was clamped.
+std::string clampedFields(const ocean_scene::Material& material);
 
 // Why the plugin would refuse this instance as a caster (its CasterMesh checks on the
 // transform and material), or "" when it would accept it.

@@ -148,8 +148,10 @@ TEST_F(SampleCli, ModelWithNodesThePluginCannotUseStillRenders) {
   json.nodes = R"({"mesh": 1, "name": "plate"}, {"mesh": 1, "name": "lid", "scale": [0, 0, 0]},
       {"mesh": 0, "name": "ink", "translation": [0, 0.5, 0]})";
   json.sceneNodes = "0, 1, 2";
-  json.top = R"("materials": [{"name": "dense", "extensions": {"KHR_materials_transmission":
-      {"transmissionFactor": 1}, "KHR_materials_volume": {"attenuationDistance": 1e-6,
+  json.top = R"("materials": [{"name": "dense", "pbrMetallicRoughness": {"metallicFactor": 0},
+      "extensions": {"KHR_materials_transmission":
+      {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": 0.1,
+      "attenuationDistance": 1e-6,
       "attenuationColor": [0.01, 0.01, 0.01]}}}], )";
   std::string text = json.text();
   // A first mesh: the same triangle in the dense glass.

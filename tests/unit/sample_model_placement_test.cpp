@@ -105,6 +105,7 @@ ocean_scene::Material glass() {
   ocean_scene::Material m;
   m.name = "glass";
   m.transmission = 1.0f;
+  m.metallic = 0.0f;  // glTF's default is 1: transmission would not matter on a metal
   return m;
 }
 
@@ -121,6 +122,7 @@ TEST(SampleCasterAdmission, AcceptedCastersKeepCasting) {
 TEST(SampleCasterAdmission, ExtremeAttenuationLeftOutWithAWarning) {
   ocean_scene::Material dense = glass();
   dense.name = "ink";
+  dense.thickness = 0.1f;  // a volume: thin-walled glass has nothing to absorb in
   dense.attenuationColor = glm::vec3(0.01f);
   dense.attenuationDistance = 1e-5f;
   ocean_scene::Model scene = casterScene(2, glass());
@@ -167,6 +169,60 @@ TEST(SampleCasterAdmission, CasterBudgetIsNeverSilent) {
   EXPECT_FALSE(scene.instances.back().castsCaustics);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("the last 5 (from 'piece64' on)"), std::string::npos) << warnings[0];
+}
+
+// Issue 17, item 4: the glTF glass fields reach the plugin's material as the spec means them.
+TEST(SampleCasterMaterial, GlassFieldsFollowTheGltfSpec) {
+  ocean_scene::Material m = glass();
+  m.transmission = 0.5f;
+  m.metallic = 0.2f;
+  m.baseColor = {0.9f, 0.1f, 0.1f};
+  m.roughness = 0.3f;
+  m.dispersion = 0.4f;
+  postfx::CasterMaterial c = casterMaterial(m);
+  EXPECT_EQ(c.type, postfx::CasterMaterialType::Refractive);
+  EXPECT_FLOAT_EQ(c.transmission, 0.5f * 0.8f);  // transmission acts on the dielectric share
+  EXPECT_EQ(c.tint, m.baseColor);
+  EXPECT_FLOAT_EQ(c.roughness, 0.3f);
+  EXPECT_FLOAT_EQ(c.dispersion, 0.4f);
+  EXPECT_TRUE(c.thinWalled);  // no KHR_materials_volume thickness
+  EXPECT_EQ(c.absorption, glm::vec3(0.0f));
+
+  // A volume: solid, absorbing per Beer-Lambert (attenuationColor left after the distance).
+  m.thickness = 0.05f;
+  m.attenuationColor = {0.5f, 0.25f, 1.0f};
+  m.attenuationDistance = 2.0f;
+  c = casterMaterial(m);
+  EXPECT_FALSE(c.thinWalled);
+  EXPECT_NEAR(c.absorption.r, std::log(2.0) / 2.0, 1e-6);
+  EXPECT_NEAR(c.absorption.g, std::log(4.0) / 2.0, 1e-6);
+  EXPECT_NEAR(c.absorption.b, 0.0, 1e-7);
+
+  // Metallic 1 with transmission: glTF's metal lobe takes it all, a mirror of the base colour.
+  m.metallic = 1.0f;
+  c = casterMaterial(m);
+  EXPECT_EQ(c.type, postfx::CasterMaterialType::Reflective);
+  EXPECT_EQ(c.reflectance, m.baseColor);
+
+  // KHR_materials_ior 0: an infinite IOR, Fresnel 1: a white mirror, nothing transmitted.
+  m.metallic = 0.0f;
+  m.ior = 0.0f;
+  c = casterMaterial(m);
+  EXPECT_EQ(c.type, postfx::CasterMaterialType::Reflective);
+  EXPECT_EQ(c.reflectance, glm::vec3(1.0f));
+}
+
+TEST(SampleCasterAdmission, DispersionAboveThePluginsLimitClampedWithAWarning) {
+  ocean_scene::Material prism = glass();
+  prism.dispersion = 25.0f;
+  ocean_scene::Model scene = casterScene(1, prism);
+  std::vector<std::string> warnings;
+  admitCasters(scene, warnings);
+  EXPECT_TRUE(scene.instances[0].castsCaustics);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("material 'glass' dispersion 25 is clamped to 10"), std::string::npos)
+      << warnings[0];
+  EXPECT_EQ(casterMaterial(prism).dispersion, postfx::kMaxCasterDispersion);
 }
 
 }  // namespace

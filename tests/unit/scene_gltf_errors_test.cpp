@@ -260,7 +260,8 @@ TEST(SceneGltfErrors, BadMaterialValues) {
     m.materials.push_back(material);
     m.meshes[0].primitives[0].material = 0;
   });
-  expectMentions(expectLoadFails(path), "material 'bad': KHR_materials_ior ior below 1");
+  expectMentions(expectLoadFails(path),
+                 "material 'bad': KHR_materials_ior ior must be 0 or at least 1");
   const std::string transmission = writeTriangle("badtr.glb", [](tinygltf::Model& m) {
     tinygltf::Material material;
     material.name = "odd";

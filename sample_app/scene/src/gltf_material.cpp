@@ -84,8 +84,14 @@ bool readMaterial(const tinygltf::Material& source, Material& out, std::string& 
   std::string what;
   if (const tinygltf::Value* ior = extension(source, "KHR_materials_ior")) {
     if (!readNumber(*ior, "ior", out.ior, what)) return fail(source, what, error);
-    // The spec's minimum; an IOR below 1 would make refraction meaningless here.
-    if (out.ior < 1.0f) return fail(source, "KHR_materials_ior ior below 1", error);
+    // The spec allows [1, inf) and exactly 0 (an infinite IOR: Fresnel 1, a mirror).
+    if (out.ior < 1.0f && out.ior != 0.0f) {
+      return fail(source, "KHR_materials_ior ior must be 0 or at least 1", error);
+    }
+  }
+  if (const tinygltf::Value* d = extension(source, "KHR_materials_dispersion")) {
+    if (!readNumber(*d, "dispersion", out.dispersion, what)) return fail(source, what, error);
+    if (out.dispersion < 0.0f) return fail(source, "KHR_materials_dispersion below 0", error);
   }
   if (const tinygltf::Value* t = extension(source, "KHR_materials_transmission")) {
     if (!readNumber(*t, "transmissionFactor", out.transmission, what)) {
@@ -112,6 +118,31 @@ bool readMaterial(const tinygltf::Material& source, Material& out, std::string& 
     }
   }
   return true;
+}
+
+std::string ignoredTextures(const tinygltf::Material& source) {
+  std::string names;
+  auto add = [&names](int index, const char* name) {
+    if (index < 0) return;
+    names += names.empty() ? "" : ", ";
+    names += name;
+  };
+  const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+  add(pbr.baseColorTexture.index, "baseColorTexture");
+  add(pbr.metallicRoughnessTexture.index, "metallicRoughnessTexture");
+  add(source.normalTexture.index, "normalTexture");
+  add(source.occlusionTexture.index, "occlusionTexture");
+  add(source.emissiveTexture.index, "emissiveTexture");
+  // Extension textures: any member whose name ends in "Texture".
+  for (const auto& [extensionName, value] : source.extensions) {
+    if (!value.IsObject()) continue;
+    for (const std::string& key : value.Keys()) {
+      if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0) {
+        add(0, (extensionName + "." + key).c_str());
+      }
+    }
+  }
+  return names;
 }
 
 }  // namespace ocean_scene::gltf

@@ -9,9 +9,14 @@
 
 namespace ocean_scene::gltf {
 
-// Reads the metallic-roughness factors and the KHR_materials_ior / _transmission / _volume
-// extensions. Out-of-range or non-finite values are errors (they would poison the caustic
-// passes); absent values keep the glTF defaults.
+// Reads the metallic-roughness factors and the KHR_materials_ior / _transmission / _volume /
+// _dispersion extensions. Out-of-range or non-finite values are errors (they would poison the
+// caustic passes); absent values keep the glTF defaults.
 bool readMaterial(const tinygltf::Material& source, Material& out, std::string& error);
+
+// The textures `source` refers to, by glTF name ("baseColorTexture, KHR_materials_transmission.
+// transmissionTexture"), or "" when none: the sample renders materials from their factors
+// only, and says which textures that leaves out.
+std::string ignoredTextures(const tinygltf::Material& source);
 
 }  // namespace ocean_scene::gltf

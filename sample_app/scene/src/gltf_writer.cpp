@@ -101,6 +101,10 @@ tinygltf::Material toGltf(tinygltf::Model& gltf, const Material& m) {
         object({{"transmissionFactor", number(m.transmission)}});
     addExtensionUsed(gltf, "KHR_materials_transmission");
   }
+  if (m.dispersion > 0.0f) {
+    out.extensions["KHR_materials_dispersion"] = object({{"dispersion", number(m.dispersion)}});
+    addExtensionUsed(gltf, "KHR_materials_dispersion");
+  }
   const bool hasAttenuation = std::isfinite(m.attenuationDistance);
   if (m.thickness > 0.0f || hasAttenuation) {
     tinygltf::Value::Object volume;

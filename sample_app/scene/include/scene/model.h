@@ -32,7 +32,8 @@ struct Material {
   float metallic = 1.0f;      // glTF default is fully metallic
   float roughness = 1.0f;
   bool doubleSided = false;
-  // KHR_materials_ior
+  // KHR_materials_ior. 0 is the spec's special value: an infinite IOR, Fresnel 1 (all light
+  // reflected, none transmitted).
   float ior = 1.5f;
   // KHR_materials_transmission: 0 = opaque, 1 = all non-reflected light is transmitted.
   float transmission = 0.0f;
@@ -41,6 +42,8 @@ struct Material {
   float thickness = 0.0f;
   glm::vec3 attenuationColor{1.0f};
   float attenuationDistance = std::numeric_limits<float>::infinity();
+  // KHR_materials_dispersion: 20 / Abbe number, >= 0 (0: none).
+  float dispersion = 0.0f;
 
   bool isRefractive() const { return transmission > 0.0f; }
 };
