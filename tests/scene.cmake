@@ -5,6 +5,8 @@ if(TARGET ocean_scene)
     SOURCES unit/scene_procedural_test.cpp unit/scene_gltf_roundtrip_test.cpp
             unit/scene_gltf_errors_test.cpp
             unit/scene_gltf_hostile_test.cpp unit/scene_gltf_features_test.cpp
-            unit/scene_gltf_fuzz_test.cpp
-    LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF)
+            unit/scene_gltf_fuzz_test.cpp unit/scene_gltf_draco_test.cpp
+            unit/scene_gltf_meshopt_test.cpp
+    LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF draco::draco
+         meshoptimizer::meshoptimizer)
 endif()

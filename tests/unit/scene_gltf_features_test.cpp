@@ -184,5 +184,41 @@ TEST(SceneGltfFeatures, HiddenNodeLeftOutWithANote) {
             std::string::npos);
 }
 
+// Issue 17, item 4: the glass extensions as the specs allow them. KHR_materials_ior 0 is the
+// spec's infinite IOR (it loads; the sample makes it a mirror), KHR_materials_dispersion is
+// read, and textures the sample does not use are named in a note instead of passing silently.
+TEST(SceneGltfFeatures, GlassExtensionsAndIgnoredTexturesNoted) {
+  const fs::path d = dir("glass");
+  TriangleJson json;
+  json.primitive = "\"material\": 0";
+  json.top = R"("textures": [{}], "materials": [{"name": "prism",
+      "pbrMetallicRoughness": {"baseColorFactor": [1, 0.2, 0.2, 1], "metallicFactor": 0,
+      "baseColorTexture": {"index": 0}},
+      "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1,
+      "transmissionTexture": {"index": 0}}, "KHR_materials_ior": {"ior": 0},
+      "KHR_materials_dispersion": {"dispersion": 0.36}}}], )";
+  writeFile(d / "prism.gltf", json.text());
+  std::string warnings;
+  const Model model = load(d / "prism.gltf", &warnings);
+  ASSERT_EQ(model.materials.size(), 1u);
+  EXPECT_EQ(model.materials[0].ior, 0.0f);
+  EXPECT_FLOAT_EQ(model.materials[0].dispersion, 0.36f);
+  EXPECT_NE(warnings.find("material 'prism': textures not used (baseColorTexture, "
+                          "KHR_materials_transmission.transmissionTexture), its factors are"),
+            std::string::npos)
+      << warnings;
+  // Between 0 and 1 the spec allows nothing; a negative dispersion neither.
+  std::string text = json.text();
+  const std::string iorZero = "\"ior\": 0}";
+  text.replace(text.find(iorZero), iorZero.size(), "\"ior\": 0.5}");
+  writeFile(d / "half.gltf", text);
+  EXPECT_NE(refusal(d / "half.gltf").find("ior must be 0 or at least 1"), std::string::npos);
+  text = json.text();
+  text.replace(text.find("0.36"), 4, "-0.1");
+  writeFile(d / "negative.gltf", text);
+  EXPECT_NE(refusal(d / "negative.gltf").find("KHR_materials_dispersion below 0"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace ocean_scene

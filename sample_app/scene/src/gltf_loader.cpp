@@ -14,6 +14,7 @@
 #include "gltf_file.h"
 #include "gltf_instancing.h"
 #include "gltf_material.h"
+#include "gltf_meshopt.h"
 #include "gltf_preflight.h"
 #include "gltf_primitive.h"
 #include "gltf_text.h"
@@ -102,23 +103,28 @@ bool parse(const std::string& path, const std::vector<unsigned char>& bytes, tin
     warnings += std::to_string(preflight.imageUris.size()) +
                 " image file(s) not read: textures are not used; ";
   }
+  // Meshopt fallback buffers got placeholders; tinygltf parses the rewritten JSON.
+  const std::vector<unsigned char> rewritten = preflight.rewrittenJson.empty()
+                                                   ? std::vector<unsigned char>()
+                                                   : gltf::withJson(bytes, preflight.rewrittenJson);
+  const std::vector<unsigned char>& input = rewritten.empty() ? bytes : rewritten;
   GuardedFiles guarded{&preflight};
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skipImage, nullptr);
   loader.SetFsCallbacks(
       tinygltf::FsCallbacks{&guardedExists, &guardedExpand, &guardedRead, &guardedWrite, &guarded});
   std::string err, warn;
-  const auto size = static_cast<unsigned int>(bytes.size());
+  const auto size = static_cast<unsigned int>(input.size());
   const bool ok =
-      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, input.data(), size, baseDir)
              : loader.LoadASCIIFromString(
-                   &model, &err, &warn, reinterpret_cast<const char*>(bytes.data()), size, baseDir);
+                   &model, &err, &warn, reinterpret_cast<const char*>(input.data()), size, baseDir);
   warnings += usefulWarnings(warn, preflight);
   if (!ok) {
     error = err.empty() ? "tinygltf could not parse the file" : err;
     return false;
   }
-  return true;
+  return gltf::decodeMeshoptViews(model, preflight.meshoptFallbacks, error);
 }
 
 bool nodeLocalTransform(const tinygltf::Node& node, glm::dmat4& out, std::string& error) {
@@ -308,6 +314,24 @@ bool flattenNodes(const tinygltf::Model& model,
   return true;
 }
 
+// One note per material with textures (the first few by name, then a count): the sample
+// shades and casts from the factors, so a textured asset looks flatter than its author meant.
+void noteIgnoredTextures(const tinygltf::Model& model, std::string& notes) {
+  constexpr int kNamed = 4;
+  int textured = 0;
+  for (const tinygltf::Material& material : model.materials) {
+    const std::string textures = gltf::ignoredTextures(material);
+    if (textures.empty()) continue;
+    if (textured++ < kNamed) {
+      notes += "material '" + material.name + "': textures not used (" + textures +
+               "), its factors are; ";
+    }
+  }
+  if (textured > kNamed) {
+    notes += std::to_string(textured - kNamed) + " more textured material(s), textures not used; ";
+  }
+}
+
 bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::string& notes) {
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     Material material;
@@ -315,6 +339,7 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
     material.name = gltf::safeOneLine(material.name);  // printed in the sample's warnings
     out.materials.push_back(std::move(material));
   }
+  noteIgnoredTextures(model, notes);
   // Primitives without a material get the glTF default material, added once at the end.
   std::uint32_t defaultMaterial = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::vector<std::uint32_t>> meshMap(model.meshes.size());

@@ -81,11 +81,9 @@ bool depthWithin(std::string_view text, int limit, std::string& error) {
 
 // The feature each refused extension stands for, so the message says what is missing.
 std::string describeExtension(const std::string& name) {
-  if (name == "KHR_draco_mesh_compression") {
-    return "Draco mesh compression (" + name + ") is not supported; export without Draco";
-  }
-  if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression") {
-    return "meshopt buffer compression (" + name + ") is not supported; export without it";
+  if (name == "KHR_meshopt_compression") {
+    return "meshopt buffer compression " + name +
+           " is not supported (EXT_meshopt_compression is); export with the EXT extension";
   }
   if (name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "EXT_texture_avif") {
     return "extension " + name + " is required, but textures are not used by this loader";
@@ -97,7 +95,8 @@ std::string describeExtension(const std::string& name) {
 bool supportedExtension(const std::string& name) {
   return name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
          name == "KHR_materials_volume" || name == "KHR_mesh_quantization" ||
-         name == "EXT_mesh_gpu_instancing";
+         name == "EXT_mesh_gpu_instancing" || name == "KHR_draco_mesh_compression" ||
+         name == "EXT_meshopt_compression" || name == "KHR_materials_dispersion";
 }
 
 bool checkExtensions(const Json& root, Preflight& out, std::string& error) {
@@ -199,7 +198,9 @@ bool checkBuffers(const Json& root, const std::string& baseDir, Preflight& out,
   const std::string folder = realFolder(baseDir);
   for (std::size_t i = 0; i < buffers->size(); ++i) {
     std::string uri;
-    if (!uriOf((*buffers)[i], uri)) continue;  // the GLB's BIN chunk, or tinygltf's error
+    if (!uriOf((*buffers)[i], uri))
+      continue;  // the GLB's BIN chunk, a meshopt fallback, or
+                 // tinygltf's error
     const std::string where = "buffer " + std::to_string(i) + " uri '" + uri.substr(0, 200) + "'";
     if (isDataUri(uri)) {
       // Any other data: URI would be taken by tinygltf for a file name.
@@ -220,6 +221,57 @@ bool checkBuffers(const Json& root, const std::string& baseDir, Preflight& out,
     out.bufferFiles[joinLikeTinygltf(baseDir, decoded)] = resolved;
   }
   return true;
+}
+
+bool isMeshoptFallback(const Json& buffer) {
+  if (!buffer.is_object() || buffer.contains("uri")) return false;
+  const auto extensions = buffer.find("extensions");
+  if (extensions == buffer.end() || !extensions->is_object()) return false;
+  const auto meshopt = extensions->find("EXT_meshopt_compression");
+  if (meshopt == extensions->end() || !meshopt->is_object()) return false;
+  const auto fallback = meshopt->find("fallback");
+  return fallback != meshopt->end() && fallback->is_boolean() && fallback->get<bool>();
+}
+
+// Gives each data-less meshopt fallback buffer a 4-byte placeholder tinygltf can load.
+// Returns whether the JSON changed.
+bool placeholdMeshoptFallbacks(Json& root, Preflight& out) {
+  const auto buffers = root.find("buffers");
+  if (buffers == root.end() || !buffers->is_array()) return false;
+  std::size_t index = 0;
+  for (Json& buffer : *buffers) {
+    if (isMeshoptFallback(buffer)) {
+      buffer["uri"] = "data:application/octet-stream;base64,AAAAAA==";
+      buffer["byteLength"] = 4;
+      out.meshoptFallbacks.insert(index);
+    }
+    ++index;
+  }
+  return !out.meshoptFallbacks.empty();
+}
+
+// A Draco primitive's index accessor has no bufferView (the triangles are in the compressed
+// data), which tinygltf refuses; the loader takes the triangles from the Draco data, so the
+// primitive's "indices" is dropped. Returns whether the JSON changed.
+bool dropDracoIndices(Json& root) {
+  const auto meshes = root.find("meshes");
+  if (meshes == root.end() || !meshes->is_array()) return false;
+  bool changed = false;
+  for (Json& mesh : *meshes) {
+    if (!mesh.is_object()) continue;
+    const auto primitives = mesh.find("primitives");
+    if (primitives == mesh.end() || !primitives->is_array()) continue;
+    for (Json& primitive : *primitives) {
+      if (!primitive.is_object() || !primitive.contains("indices")) continue;
+      const auto extensions = primitive.find("extensions");
+      if (extensions != primitive.end() && extensions->is_object() &&
+          extensions->contains("KHR_draco_mesh_compression")) {
+        primitive.erase("indices");
+        changed = true;
+      }
+    }
+  }
+  return changed;
 }
 
 void collectImages(const Json& root, Preflight& out) {
@@ -265,7 +317,33 @@ bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseD
   }
   if (!checkBuffers(root, baseDir, out, error)) return false;
   collectImages(root, out);
+  const bool meshopt = placeholdMeshoptFallbacks(root, out);
+  const bool draco = dropDracoIndices(root);
+  if (meshopt || draco) out.rewrittenJson = root.dump();
   return true;
+}
+
+std::vector<unsigned char> withJson(const std::vector<unsigned char>& bytes,
+                                    const std::string& json) {
+  const bool binary = bytes.size() >= 20 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (!binary) return std::vector<unsigned char>(json.begin(), json.end());
+  std::uint32_t oldChunk = 0;
+  std::memcpy(&oldChunk, bytes.data() + 12, 4);
+  const std::size_t rest = 20 + std::size_t(oldChunk);  // inside the file: preflight checked
+  std::string padded = json;
+  while (padded.size() % 4 != 0) padded += ' ';
+  std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 12);
+  const auto put = [&out](std::uint32_t v) {
+    const auto* p = reinterpret_cast<const unsigned char*>(&v);
+    out.insert(out.end(), p, p + 4);
+  };
+  put(static_cast<std::uint32_t>(padded.size()));
+  put(0x4E4F534Au);  // "JSON"
+  out.insert(out.end(), padded.begin(), padded.end());
+  out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(rest), bytes.end());
+  const std::uint32_t total = static_cast<std::uint32_t>(out.size());
+  std::memcpy(out.data() + 8, &total, 4);
+  return out;
 }
 
 }  // namespace ocean_scene::gltf

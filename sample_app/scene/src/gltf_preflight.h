@@ -23,11 +23,24 @@ struct Preflight {
   // Decoded image URIs: textures are not used, so these are never opened.
   std::set<std::string> imageUris;
   bool meshQuantization = false;  // KHR_mesh_quantization is used
+  // EXT_meshopt_compression fallback buffers without a uri (no data of their own: every view
+  // of them is compressed elsewhere). tinygltf cannot parse such a buffer, so each gets a
+  // 4-byte placeholder in `rewrittenJson`; the meshopt decoder replaces the views.
+  std::set<std::size_t> meshoptFallbacks;
+  // The JSON tinygltf parses instead of the file's ("" = the file's as it is): the meshopt
+  // placeholders, and Draco primitives without their "indices" (an accessor with no data,
+  // which tinygltf refuses; the loader reads the triangles from the Draco data).
+  std::string rewrittenJson;
 };
 
 // `baseDir` is the directory tinygltf is given. Returns false with a one-line reason.
 bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseDir, Preflight& out,
                std::string& error);
+
+// The file with its JSON replaced by `json`: the text itself for a .gltf, the GLB rebuilt
+// (header, padded JSON chunk, the original chunks after it) for a .glb that preflight accepted.
+std::vector<unsigned char> withJson(const std::vector<unsigned char>& bytes,
+                                    const std::string& json);
 
 // tinygltf's path join, so the names handed to its file callbacks can be matched.
 std::string joinLikeTinygltf(const std::string& dir, const std::string& file);

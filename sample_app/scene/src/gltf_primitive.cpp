@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "gltf_accessor.h"
+#include "gltf_draco.h"
 #include "scene/mesh_builders.h"
 
 namespace ocean_scene::gltf {
@@ -70,24 +71,25 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
     error = "primitive has no POSITION attribute";
     return false;
   }
-  // With Draco the attribute accessors have no data of their own.
-  if (primitive.extensions.count("KHR_draco_mesh_compression") > 0 &&
-      positionAccessor < static_cast<int>(model.accessors.size()) &&
-      model.accessors[static_cast<std::size_t>(positionAccessor)].bufferView < 0) {
-    error =
-        "primitive is Draco-compressed (KHR_draco_mesh_compression), which is not supported; "
-        "export without Draco";
-    return false;
-  }
   const bool quantization = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
                                       "KHR_mesh_quantization") != model.extensionsUsed.end();
-  if (!readVec3(model, positionAccessor, "POSITION", quantization, out.positions, error)) {
-    return false;
-  }
-  if (!allFinite(out.positions)) {
-    error =
-        "accessor " + std::to_string(positionAccessor) + " (POSITION) contains a non-finite value";
-    return false;
+  // With Draco the attribute and index accessors have no data of their own: the compressed
+  // bufferView holds positions, normals and triangles.
+  const bool draco = isDracoPrimitive(primitive);
+  std::vector<glm::vec3> dracoNormals;
+  if (draco) {
+    if (!decodeDracoPrimitive(model, primitive, out.positions, dracoNormals, out.indices, error)) {
+      return false;
+    }
+  } else {
+    if (!readVec3(model, positionAccessor, "POSITION", quantization, out.positions, error)) {
+      return false;
+    }
+    if (!allFinite(out.positions)) {
+      error = "accessor " + std::to_string(positionAccessor) +
+              " (POSITION) contains a non-finite value";
+      return false;
+    }
   }
   const std::size_t vertexCount = out.positions.size();
   // glTF 2.0 requires POSITION bounds; without them nothing checks the values against the
@@ -98,8 +100,8 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
              " has no min/max (required by glTF 2.0), values not checked against them; ";
   }
 
-  if (primitive.indices >= 0) {
-    if (!readIndices(model, primitive.indices, out.indices, error)) return false;
+  if (draco || primitive.indices >= 0) {
+    if (!draco && !readIndices(model, primitive.indices, out.indices, error)) return false;
     for (std::size_t i = 0; i < out.indices.size(); ++i) {
       if (out.indices[i] >= vertexCount) {
         error = "index " + std::to_string(out.indices[i]) + " at position " + std::to_string(i) +
@@ -115,7 +117,8 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
     out.indices.resize(vertexCount);
     std::iota(out.indices.begin(), out.indices.end(), 0U);
   }
-  if (mode != TINYGLTF_MODE_TRIANGLES) {
+  // Draco's faces are triangles whatever the primitive's mode says.
+  if (mode != TINYGLTF_MODE_TRIANGLES && !draco) {
     if (out.indices.size() < 3) {
       error = "triangle strip or fan has " + std::to_string(out.indices.size()) +
               " vertices, fewer than 3";
@@ -129,10 +132,14 @@ bool readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
     return false;
   }
 
-  const int normalAccessor = attribute(primitive, "NORMAL");
-  bool regenerate = normalAccessor < 0;
-  if (normalAccessor >= 0) {
-    if (!readVec3(model, normalAccessor, "NORMAL", quantization, out.normals, error)) return false;
+  const int normalAccessor = draco ? -1 : attribute(primitive, "NORMAL");
+  bool regenerate = normalAccessor < 0 && dracoNormals.empty();
+  if (normalAccessor >= 0 || !dracoNormals.empty()) {
+    if (draco) {
+      out.normals = std::move(dracoNormals);
+    } else if (!readVec3(model, normalAccessor, "NORMAL", quantization, out.normals, error)) {
+      return false;
+    }
     if (out.normals.size() != vertexCount) {
       error = "NORMAL count " + std::to_string(out.normals.size()) +
               " differs from POSITION count " + std::to_string(vertexCount);

@@ -1,0 +1,144 @@
+#include "gltf_meshopt.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <meshoptimizer.h>
+
+namespace ocean_scene::gltf {
+
+namespace {
+
+constexpr const char* kExtension = "EXT_meshopt_compression";
+
+const tinygltf::Value* member(const tinygltf::Value& object, const char* key) {
+  if (!object.IsObject() || !object.Has(key)) return nullptr;
+  return &object.Get(key);
+}
+
+// A non-negative integer member (`fallback` when absent), or -1 when it is not one.
+long long integer(const tinygltf::Value& object, const char* key, long long fallback = -1) {
+  const tinygltf::Value* v = member(object, key);
+  if (v == nullptr) return fallback;
+  if (!v->IsNumber()) return -1;
+  const double d = v->GetNumberAsDouble();
+  if (!(d >= 0.0 && d <= 9007199254740992.0) || d != std::floor(d)) return -1;
+  return static_cast<long long>(d);
+}
+
+std::string text(const tinygltf::Value& object, const char* key, const char* fallback) {
+  const tinygltf::Value* v = member(object, key);
+  return v != nullptr && v->IsString() ? v->Get<std::string>() : std::string(fallback);
+}
+
+struct View {
+  long long buffer, offset, length, stride, count;
+  std::string mode, filter;
+};
+
+// The spec's constraints on mode, filter and stride (EXT_meshopt_compression README).
+std::string invalid(const View& v) {
+  if (v.buffer < 0 || v.offset < 0 || v.length < 0 || v.stride <= 0 || v.count < 0) {
+    return "needs non-negative integer buffer, byteOffset, byteLength, byteStride and count";
+  }
+  if (v.mode == "ATTRIBUTES") {
+    if (v.stride % 4 != 0 || v.stride > 256)
+      return "ATTRIBUTES stride must be 4..256, a multiple of 4";
+  } else if (v.mode == "TRIANGLES") {
+    if (v.count % 3 != 0) return "TRIANGLES count must be a multiple of 3";
+    if (v.stride != 2 && v.stride != 4) return "TRIANGLES stride must be 2 or 4";
+  } else if (v.mode == "INDICES") {
+    if (v.stride != 2 && v.stride != 4) return "INDICES stride must be 2 or 4";
+  } else {
+    return "mode '" + v.mode.substr(0, 40) + "' is not ATTRIBUTES, TRIANGLES or INDICES";
+  }
+  if (v.filter != "NONE" && v.mode != "ATTRIBUTES") return "filters apply to ATTRIBUTES only";
+  if (v.filter == "OCTAHEDRAL" && v.stride != 4 && v.stride != 8) {
+    return "OCTAHEDRAL stride must be 4 or 8";
+  }
+  if (v.filter == "QUATERNION" && v.stride != 8) return "QUATERNION stride must be 8";
+  if (v.filter != "NONE" && v.filter != "OCTAHEDRAL" && v.filter != "QUATERNION" &&
+      v.filter != "EXPONENTIAL") {
+    return "filter '" + v.filter.substr(0, 40) + "' is unknown";
+  }
+  if (std::uint64_t(v.count) > kMaxMeshoptDecodedBytes / std::uint64_t(v.stride)) {
+    return "decodes to more than " + std::to_string(kMaxMeshoptDecodedBytes >> 20) + " MiB";
+  }
+  return "";
+}
+
+bool decodeView(tinygltf::Model& model, std::size_t index, std::string& error) {
+  tinygltf::BufferView& target = model.bufferViews[index];
+  const tinygltf::Value& e = target.extensions.at(kExtension);
+  const View v{integer(e, "buffer"),     integer(e, "byteOffset", 0), integer(e, "byteLength"),
+               integer(e, "byteStride"), integer(e, "count"),         text(e, "mode", ""),
+               text(e, "filter", "NONE")};
+  const std::string where = "bufferView " + std::to_string(index) + " " + kExtension + ": ";
+  if (const std::string problem = invalid(v); !problem.empty()) {
+    error = where + problem;
+    return false;
+  }
+  if (static_cast<std::size_t>(v.buffer) >= model.buffers.size()) {
+    error = where + "buffer " + std::to_string(v.buffer) + " does not exist";
+    return false;
+  }
+  const std::vector<unsigned char>& source = model.buffers[std::size_t(v.buffer)].data;
+  if (std::uint64_t(v.offset) > source.size() ||
+      std::uint64_t(v.length) > source.size() - std::uint64_t(v.offset)) {
+    error = where + "compressed range lies outside buffer " + std::to_string(v.buffer);
+    return false;
+  }
+  const std::size_t bytes = std::size_t(v.count) * std::size_t(v.stride);
+  if (target.byteLength != bytes) {
+    error = where + "count x byteStride (" + std::to_string(bytes) +
+            ") differs from the bufferView's byteLength " + std::to_string(target.byteLength);
+    return false;
+  }
+  std::vector<unsigned char> decoded(bytes);
+  const unsigned char* data = source.data() + v.offset;
+  const std::size_t count = std::size_t(v.count), stride = std::size_t(v.stride);
+  const int status =
+      v.mode == "ATTRIBUTES"
+          ? meshopt_decodeVertexBuffer(decoded.data(), count, stride, data, std::size_t(v.length))
+      : v.mode == "TRIANGLES"
+          ? meshopt_decodeIndexBuffer(decoded.data(), count, stride, data, std::size_t(v.length))
+          : meshopt_decodeIndexSequence(decoded.data(), count, stride, data, std::size_t(v.length));
+  if (status != 0) {
+    error =
+        where + "data could not be decoded (meshoptimizer error " + std::to_string(status) + ")";
+    return false;
+  }
+  if (v.filter == "OCTAHEDRAL") meshopt_decodeFilterOct(decoded.data(), count, stride);
+  if (v.filter == "QUATERNION") meshopt_decodeFilterQuat(decoded.data(), count, stride);
+  if (v.filter == "EXPONENTIAL") meshopt_decodeFilterExp(decoded.data(), count, stride);
+  tinygltf::Buffer plain;
+  plain.name = "meshopt-decoded bufferView " + std::to_string(index);
+  plain.data = std::move(decoded);
+  model.buffers.push_back(std::move(plain));
+  target.buffer = static_cast<int>(model.buffers.size() - 1);
+  target.byteOffset = 0;
+  return true;
+}
+
+}  // namespace
+
+bool decodeMeshoptViews(tinygltf::Model& model, const std::set<std::size_t>& fallbacks,
+                        std::string& error) {
+  const std::size_t views = model.bufferViews.size();
+  for (std::size_t i = 0; i < views; ++i) {
+    if (model.bufferViews[i].extensions.count(kExtension) == 0) continue;
+    if (!decodeView(model, i, error)) return false;
+  }
+  for (std::size_t i = 0; i < views; ++i) {
+    const int buffer = model.bufferViews[i].buffer;
+    if (buffer >= 0 && fallbacks.count(std::size_t(buffer)) > 0) {
+      error = "bufferView " + std::to_string(i) + " reads meshopt fallback buffer " +
+              std::to_string(buffer) + ", which has no data, without " + kExtension;
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace ocean_scene::gltf
