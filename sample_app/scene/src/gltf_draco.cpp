@@ -7,35 +7,23 @@
 #include <draco/compression/decode.h>
 #include <draco/mesh/mesh.h>
 
+#include "gltf_value.h"
+
 namespace ocean_scene::gltf {
 
 namespace {
 
 constexpr const char* kExtension = "KHR_draco_mesh_compression";
 
-// Value::Get(key) asserts on non-objects, so every lookup goes through here.
-const tinygltf::Value* member(const tinygltf::Value& object, const char* key) {
-  if (!object.IsObject() || !object.Has(key)) return nullptr;
-  return &object.Get(key);
-}
-
-// A non-negative integer member, or -1 when absent or not one.
-long long index(const tinygltf::Value& object, const char* key) {
-  const tinygltf::Value* v = member(object, key);
-  if (v == nullptr || !v->IsNumber()) return -1;
-  const double d = v->GetNumberAsDouble();
-  if (!(d >= 0.0 && d <= 2147483647.0) || d != std::floor(d)) return -1;
-  return static_cast<long long>(d);
-}
-
 bool readAttribute(const draco::Mesh& mesh, const tinygltf::Value& attributes, const char* name,
                    std::vector<glm::vec3>& out, std::string& error) {
-  const long long id = index(attributes, name);
+  const long long id = wholeNumber(attributes, name, -1);
   if (id < 0) {
     error = std::string(kExtension) + " maps no " + name + " attribute";
     return false;
   }
-  const draco::PointAttribute* attribute = mesh.GetAttributeByUniqueId(std::uint32_t(id));
+  const draco::PointAttribute* attribute =
+      id > 0xffffffffLL ? nullptr : mesh.GetAttributeByUniqueId(std::uint32_t(id));
   if (attribute == nullptr || attribute->num_components() != 3) {
     error = std::string(kExtension) + " " + name + " attribute " + std::to_string(id) +
             " is missing from the compressed data or is not 3-component";
@@ -78,7 +66,7 @@ bool decodeDracoPrimitive(const tinygltf::Model& model, const tinygltf::Primitiv
                           std::vector<glm::vec3>& positions, std::vector<glm::vec3>& normals,
                           std::vector<std::uint32_t>& indices, std::string& error) {
   const tinygltf::Value& extension = primitive.extensions.at(kExtension);
-  const long long view = index(extension, "bufferView");
+  const long long view = wholeNumber(extension, "bufferView", -1);
   const tinygltf::Value* attributes = member(extension, "attributes");
   if (view < 0 || view >= static_cast<long long>(model.bufferViews.size()) ||
       attributes == nullptr || !attributes->IsObject()) {

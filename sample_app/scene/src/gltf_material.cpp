@@ -2,15 +2,11 @@
 
 #include <cmath>
 
+#include "gltf_value.h"
+
 namespace ocean_scene::gltf {
 
 namespace {
-
-// Value::Get(key) asserts on non-objects, so every lookup goes through here.
-const tinygltf::Value* member(const tinygltf::Value& object, const char* key) {
-  if (!object.IsObject() || !object.Has(key)) return nullptr;
-  return &object.Get(key);
-}
 
 const tinygltf::Value* extension(const tinygltf::Material& material, const char* name) {
   const auto it = material.extensions.find(name);

@@ -1,31 +1,17 @@
 #include "gltf_meshopt.h"
 
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <meshoptimizer.h>
+
+#include "gltf_value.h"
 
 namespace ocean_scene::gltf {
 
 namespace {
 
 constexpr const char* kExtension = "EXT_meshopt_compression";
-
-const tinygltf::Value* member(const tinygltf::Value& object, const char* key) {
-  if (!object.IsObject() || !object.Has(key)) return nullptr;
-  return &object.Get(key);
-}
-
-// A non-negative integer member (`fallback` when absent), or -1 when it is not one.
-long long integer(const tinygltf::Value& object, const char* key, long long fallback = -1) {
-  const tinygltf::Value* v = member(object, key);
-  if (v == nullptr) return fallback;
-  if (!v->IsNumber()) return -1;
-  const double d = v->GetNumberAsDouble();
-  if (!(d >= 0.0 && d <= 9007199254740992.0) || d != std::floor(d)) return -1;
-  return static_cast<long long>(d);
-}
 
 std::string text(const tinygltf::Value& object, const char* key, const char* fallback) {
   const tinygltf::Value* v = member(object, key);
@@ -71,8 +57,9 @@ std::string invalid(const View& v) {
 bool decodeView(tinygltf::Model& model, std::size_t index, std::string& error) {
   tinygltf::BufferView& target = model.bufferViews[index];
   const tinygltf::Value& e = target.extensions.at(kExtension);
-  const View v{integer(e, "buffer"),     integer(e, "byteOffset", 0), integer(e, "byteLength"),
-               integer(e, "byteStride"), integer(e, "count"),         text(e, "mode", ""),
+  const View v{wholeNumber(e, "buffer", -1),     wholeNumber(e, "byteOffset", 0),
+               wholeNumber(e, "byteLength", -1), wholeNumber(e, "byteStride", -1),
+               wholeNumber(e, "count", -1),      text(e, "mode", ""),
                text(e, "filter", "NONE")};
   const std::string where = "bufferView " + std::to_string(index) + " " + kExtension + ": ";
   if (const std::string problem = invalid(v); !problem.empty()) {
