@@ -7,84 +7,23 @@
 #include <string>
 #include <vector>
 
-#include <draco/compression/encode.h>
-#include <draco/mesh/triangle_soup_mesh_builder.h>
 #include <gtest/gtest.h>
 
-#include "gltf_test_files.h"
+#include "gltf_compressed_files.h"
 #include "scene/gltf_loader.h"
 
 namespace ocean_scene {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct DracoQuad {
-  std::vector<unsigned char> bytes;
-  int positionId = -1, normalId = -1;
-  int points = 0;
-};
-
-// The quad (0,0,0) (1,0,0) (0,0,-1) (1,0,-1), normals +y, positions quantised to 14 bits.
-DracoQuad encodeQuad() {
-  draco::TriangleSoupMeshBuilder builder;
-  builder.Start(2);
-  const int position =
-      builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-  const int normal = builder.AddAttribute(draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32);
-  const float p[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}, {1, 0, -1}};
-  const float n[3] = {0, 1, 0};
-  builder.SetAttributeValuesForFace(position, draco::FaceIndex(0), p[0], p[1], p[2]);
-  builder.SetAttributeValuesForFace(position, draco::FaceIndex(1), p[2], p[1], p[3]);
-  for (int f = 0; f < 2; ++f)
-    builder.SetAttributeValuesForFace(normal, draco::FaceIndex(f), n, n, n);
-  std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
-  draco::Encoder encoder;
-  encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 14);
-  draco::EncoderBuffer buffer;
-  EXPECT_TRUE(encoder.EncodeMeshToBuffer(*mesh, &buffer).ok());
-  DracoQuad out;
-  out.bytes.assign(buffer.data(), buffer.data() + buffer.size());
-  out.positionId = int(mesh->attribute(position)->unique_id());
-  out.normalId = int(mesh->attribute(normal)->unique_id());
-  out.points = int(mesh->num_points());
-  return out;
-}
-
-// A glTF whose one primitive is the Draco quad: accessors with counts and bounds but no
-// bufferView, the compressed bytes in a data: URI.
-std::string dracoGltf(const DracoQuad& quad, int pointCount, const std::string& bounds) {
-  const std::string n = std::to_string(pointCount);
-  return R"({"asset": {"version": "2.0"},
-    "extensionsUsed": ["KHR_draco_mesh_compression"],
-    "extensionsRequired": ["KHR_draco_mesh_compression"],
-    "buffers": [{"uri": "data:application/octet-stream;base64,)" +
-         gltf_test_files::base64(quad.bytes) + R"(", "byteLength": )" +
-         std::to_string(quad.bytes.size()) + R"(}],
-    "bufferViews": [{"buffer": 0, "byteLength": )" +
-         std::to_string(quad.bytes.size()) + R"(}],
-    "accessors": [
-      {"componentType": 5126, "count": )" +
-         n + R"(, "type": "VEC3", )" + bounds + R"(},
-      {"componentType": 5126, "count": )" +
-         n + R"(, "type": "VEC3"},
-      {"componentType": 5125, "count": 6, "type": "SCALAR"}],
-    "meshes": [{"name": "quad", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1},
-      "indices": 2, "extensions": {"KHR_draco_mesh_compression": {"bufferView": 0,
-      "attributes": {"POSITION": )" +
-         std::to_string(quad.positionId) + R"(, "NORMAL": )" + std::to_string(quad.normalId) +
-         R"(}}}}]}],
-    "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
-}
-
-const std::string kBounds = R"("min": [0, 0, -1], "max": [1, 0, 0])";
+using namespace gltf_compressed_files;
 
 fs::path dir(const std::string& name) {
   return gltf_test_files::freshDir(fs::path(testing::TempDir()) / "ocean_gltf_draco", name);
 }
 
 TEST(SceneGltfDraco, EncodedQuadLoadsAsTheQuad) {
-  const DracoQuad quad = encodeQuad();
+  const DracoQuad quad = encodeDracoQuad();
   ASSERT_FALSE(quad.bytes.empty());
   const fs::path path = dir("quad") / "quad.gltf";
   gltf_test_files::writeFile(path, dracoGltf(quad, quad.points, kBounds));
@@ -117,7 +56,7 @@ TEST(SceneGltfDraco, EncodedQuadLoadsAsTheQuad) {
 }
 
 TEST(SceneGltfDraco, CompressedDataThatContradictsItsAccessorsIsRefused) {
-  const DracoQuad quad = encodeQuad();
+  const DracoQuad quad = encodeDracoQuad();
   const fs::path d = dir("contradictions");
   Model model;
   std::string error;

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gltf_compressed_files.h"
 #include "gltf_test_files.h"
 #include "scene/gltf_loader.h"
 #include "scene/hash_noise.h"
@@ -29,7 +30,7 @@ Bytes bytesOf(const std::string& text) {
 
 // Valid seeds covering the loader's paths, each as text and binary: a plain triangle; a strip
 // under a node hierarchy with glass materials; sparse positions, quantized normals and GPU
-// instancing.
+// instancing; then a Draco quad (text) and a meshopt quad (binary).
 std::vector<Bytes> corpus() {
   std::vector<Bytes> seeds;
   TriangleJson plain;
@@ -53,6 +54,12 @@ std::vector<Bytes> corpus() {
   seeds.push_back(gltf_test_files::triangleGlb(strip));
   seeds.push_back(gltf_test_files::featureRichModel(false));
   seeds.push_back(gltf_test_files::featureRichModel(true));
+  // Compressed geometry: the mutations reach libdraco's and libmeshoptimizer's decoders.
+  using namespace gltf_compressed_files;
+  const DracoQuad draco = encodeDracoQuad();
+  seeds.push_back(bytesOf(dracoGltf(draco, draco.points, kBounds)));
+  const Compressed meshopt = encodeMeshoptQuad();
+  seeds.push_back(gltf_test_files::glb(meshoptGltf(meshopt, ""), meshopt.bytes));
   return seeds;
 }
 

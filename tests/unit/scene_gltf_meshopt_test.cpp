@@ -8,69 +8,15 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <meshoptimizer.h>
 
-#include "gltf_test_files.h"
+#include "gltf_compressed_files.h"
 #include "scene/gltf_loader.h"
 
 namespace ocean_scene {
 namespace {
 
 namespace fs = std::filesystem;
-
-const float kQuad[12] = {0, 0, 0, 1, 0, 0, 0, 0, -1, 1, 0, -1};
-const unsigned int kTriangles[6] = {0, 1, 2, 2, 1, 3};
-
-struct Compressed {
-  std::vector<unsigned char> bytes;  // positions, padded to 4, then indices
-  std::size_t positionBytes = 0, indexOffset = 0, indexBytes = 0;
-};
-
-Compressed encodeQuad() {
-  Compressed out;
-  std::vector<unsigned char> v(meshopt_encodeVertexBufferBound(4, 12));
-  v.resize(meshopt_encodeVertexBuffer(v.data(), v.size(), kQuad, 4, 12));
-  std::vector<unsigned char> i(meshopt_encodeIndexBufferBound(6, 4));
-  i.resize(meshopt_encodeIndexBuffer(i.data(), i.size(), kTriangles, 6));
-  EXPECT_FALSE(v.empty() || i.empty());
-  out.positionBytes = v.size();
-  out.bytes = v;
-  while (out.bytes.size() % 4 != 0) out.bytes.push_back(0);
-  out.indexOffset = out.bytes.size();
-  out.indexBytes = i.size();
-  out.bytes.insert(out.bytes.end(), i.begin(), i.end());
-  return out;
-}
-
-// `compressed`: the buffer's members besides byteLength ("" = a GLB's BIN chunk).
-// `positionMode`: the positions view's mode (ATTRIBUTES unless a test breaks it).
-std::string meshoptGltf(const Compressed& c, const std::string& compressed,
-                        const std::string& positionMode = "ATTRIBUTES") {
-  const auto n = [](std::size_t v) { return std::to_string(v); };
-  return R"({"asset": {"version": "2.0"},
-    "extensionsUsed": ["EXT_meshopt_compression"],
-    "extensionsRequired": ["EXT_meshopt_compression"],
-    "buffers": [{)" +
-         compressed + (compressed.empty() ? "" : ", ") + R"("byteLength": )" + n(c.bytes.size()) +
-         R"(},
-      {"byteLength": 72, "extensions": {"EXT_meshopt_compression": {"fallback": true}}}],
-    "bufferViews": [
-      {"buffer": 1, "byteLength": 48, "byteStride": 12, "extensions": {"EXT_meshopt_compression":
-        {"buffer": 0, "byteLength": )" +
-         n(c.positionBytes) + R"(, "byteStride": 12, "count": 4,
-         "mode": ")" +
-         positionMode + R"("}}},
-      {"buffer": 1, "byteOffset": 48, "byteLength": 24, "extensions": {"EXT_meshopt_compression":
-        {"buffer": 0, "byteOffset": )" +
-         n(c.indexOffset) + R"(, "byteLength": )" + n(c.indexBytes) +
-         R"(, "byteStride": 4, "count": 6, "mode": "TRIANGLES"}}}],
-    "accessors": [
-      {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
-       "min": [0, 0, -1], "max": [1, 0, 0]},
-      {"bufferView": 1, "componentType": 5125, "count": 6, "type": "SCALAR"}],
-    "meshes": [{"name": "quad", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-    "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
-}
+using namespace gltf_compressed_files;
 
 fs::path dir(const std::string& name) {
   return gltf_test_files::freshDir(fs::path(testing::TempDir()) / "ocean_gltf_meshopt", name);
@@ -89,7 +35,7 @@ void expectQuad(const fs::path& path) {
 }
 
 TEST(SceneGltfMeshopt, CompressedQuadLoadsFromGltfAndGlb) {
-  const Compressed c = encodeQuad();
+  const Compressed c = encodeMeshoptQuad();
   const fs::path d = dir("quad");
   gltf_test_files::writeFile(d / "quad.gltf",
                              meshoptGltf(c, "\"uri\": \"data:application/octet-stream;base64," +
@@ -100,7 +46,7 @@ TEST(SceneGltfMeshopt, CompressedQuadLoadsFromGltfAndGlb) {
 }
 
 TEST(SceneGltfMeshopt, MalformedCompressedViewsRefusedByName) {
-  const Compressed c = encodeQuad();
+  const Compressed c = encodeMeshoptQuad();
   const fs::path d = dir("malformed");
   const std::string uri =
       "\"uri\": \"data:application/octet-stream;base64," + gltf_test_files::base64(c.bytes) + "\"";
