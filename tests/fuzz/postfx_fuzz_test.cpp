@@ -195,8 +195,8 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
        1, 1},
       {"forward [-1,1], xyz UNORM: caustics + object caustics + floor",
        Feature::Caustics | Feature::ObjectCaustics | Feature::BenchmarkFloor, 2, 2},
-      {"reverse-Z, xyz: object caustics + god rays", Feature::ObjectCaustics | Feature::GodRays, 0,
-       1},
+      {"reverse-Z, xyz: object caustics (dispersed glass) + god rays",
+       Feature::ObjectCaustics | Feature::GodRays | Feature::Dispersion, 0, 1},
   };
   Rng rng(kSeed);
   Outcome outcomes[kGroupCount];
@@ -491,7 +491,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
           }
           case kCasters: {
             postfx::CasterMesh& m = casters[static_cast<size_t>(rng.below(2))];
-            switch (rng.below(16)) {
+            switch (rng.below(21)) {
               case 0:
                 m.vertexCount = wildInt64(rng, m.vertexCount);
                 break;
@@ -538,8 +538,23 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
               case 14:
                 m.material.absorption[rng.below(3)] = wildFloat(rng, 0.0f);
                 break;
-              default:
+              case 15:
                 m.material.reflectance[rng.below(3)] = wildFloat(rng, 0.9f);
+                break;
+              case 16:
+                m.material.transmission = wildFloat(rng, 0.5f);
+                break;
+              case 17:
+                m.material.tint[rng.below(3)] = wildFloat(rng, 0.5f);
+                break;
+              case 18:
+                m.material.roughness = wildFloat(rng, 0.5f);
+                break;
+              case 19:
+                m.material.dispersion = wildFloat(rng, 1.0f);
+                break;
+              default:
+                m.material.thinWalled = !m.material.thinWalled;
             }
             if (rng.chance(0.1)) f.objectCaustics.casters = nullptr;
             break;
