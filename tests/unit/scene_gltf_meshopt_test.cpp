@@ -75,6 +75,12 @@ TEST(SceneGltfMeshopt, MalformedCompressedViewsRefusedByName) {
   text.replace(text.find(offset), offset.size(), "\"byteOffset\": 100000");
   EXPECT_NE(refusal("range.gltf", text).find("compressed range lies outside buffer 0"),
             std::string::npos);
+  // A count no compressed data that small could hold: refused before anything is allocated.
+  text = meshoptGltf(c, uri);
+  const std::string view = "\"buffer\": 1, \"byteLength\": 48,", count = "\"count\": 4,";
+  text.replace(text.find(view), view.size(), "\"buffer\": 1, \"byteLength\": 960000000,");
+  text.replace(text.find(count), count.size(), "\"count\": 80000000,");
+  EXPECT_NE(refusal("claim.gltf", text).find("bytes claimed from"), std::string::npos);
   // KHR_meshopt_compression (a different bitstream) is still refused by name.
   text = meshoptGltf(c, uri);
   for (std::size_t at; (at = text.find("\"EXT_meshopt_compression\"]")) != std::string::npos;)

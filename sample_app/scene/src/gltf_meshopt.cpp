@@ -82,6 +82,11 @@ bool decodeView(tinygltf::Model& model, std::size_t index, std::string& error) {
             ") differs from the bufferView's byteLength " + std::to_string(target.byteLength);
     return false;
   }
+  if (bytes / kMaxMeshoptRatio > std::size_t(v.length) + 64) {
+    error = where + std::to_string(bytes) + " bytes claimed from " + std::to_string(v.length) +
+            " compressed, more than meshopt can encode";
+    return false;
+  }
   std::vector<unsigned char> decoded(bytes);
   const unsigned char* data = source.data() + v.offset;
   const std::size_t count = std::size_t(v.count), stride = std::size_t(v.stride);

@@ -14,6 +14,10 @@ namespace ocean_scene::gltf {
 // Decoded bytes above this are refused (a sample caster is a few MB; the file itself is at most
 // 1 GiB, and meshopt rarely compresses more than 8:1).
 inline constexpr std::size_t kMaxMeshoptDecodedBytes = std::size_t(1) << 30;
+// meshopt's densest encodings: 2 header bits per 16 vertex bytes (64:1), a byte or so per
+// triangle (12:1). A view claiming more than this many decoded bytes per compressed byte is
+// refused before its output is allocated, so a tiny hostile file cannot ask for a GiB.
+inline constexpr std::size_t kMaxMeshoptRatio = 128;
 
 // `fallbacks`: the buffers the preflight found to be meshopt fallbacks (no data of their own).
 // Any bufferView still reading one after decoding is an error. One-line `error` naming the
