@@ -117,7 +117,11 @@ Every surface looks the water up where its light entered, along the refracted su
 --model FILE[@x,y,z][:fit=M|none]: a glTF (.glb/.gltf) added as glass or metal casters. By
 default its bounding box is scaled to 1.5 m and set on the sand in a row before the camera;
 @x,y,z puts the box's centre at x, z with its bottom y metres above the sand; :fit=M scales its
-largest side to M metres (0.01..100), :fit=none keeps the file's size.
+largest side to M metres (0.01..100), :fit=none keeps the file's size. Glass is a material
+with KHR_materials_transmission and metallic < 0.5 (transmission x (1 - metallic) weighs its
+caustic, the base colour tints it, KHR_materials_volume absorbs along the path, thickness 0 is
+a thin wall that does not focus, roughness widens it); metal (metallic >= 0.5) and ior 0 are
+mirrors. Draco and meshopt compression are decoded; textures are not used (a warning names them).
 
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
 the sun), above (above the water looking down), waterline (camera 3 cm above the water).

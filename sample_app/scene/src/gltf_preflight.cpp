@@ -198,9 +198,8 @@ bool checkBuffers(const Json& root, const std::string& baseDir, Preflight& out,
   const std::string folder = realFolder(baseDir);
   for (std::size_t i = 0; i < buffers->size(); ++i) {
     std::string uri;
-    if (!uriOf((*buffers)[i], uri))
-      continue;  // the GLB's BIN chunk, a meshopt fallback, or
-                 // tinygltf's error
+    // No uri: the GLB's BIN chunk, a meshopt fallback, or tinygltf's error.
+    if (!uriOf((*buffers)[i], uri)) continue;
     const std::string where = "buffer " + std::to_string(i) + " uri '" + uri.substr(0, 200) + "'";
     if (isDataUri(uri)) {
       // Any other data: URI would be taken by tinygltf for a file name.

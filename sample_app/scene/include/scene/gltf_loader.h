@@ -18,10 +18,12 @@ namespace ocean_scene {
 // node hierarchy's transforms flattened into Instance::transform. Missing normals are
 // generated. Triangle lists, strips and fans are accepted (strips and fans become lists);
 // sparse accessors, KHR_mesh_quantization and EXT_mesh_gpu_instancing (one Instance per copy)
-// are read. Draco, meshopt and other unsupported
-// extensionsRequired are refused by name. Materials include KHR_materials_ior,
-// KHR_materials_transmission and KHR_materials_volume; textures are ignored. A node whose
-// composed transform is not invertible (scale 0: hidden) is left out with a note.
+// are read; KHR_draco_mesh_compression (libdraco) and EXT_meshopt_compression
+// (libmeshoptimizer) are decoded, the decoded data held to the same checks. Other unsupported
+// extensionsRequired are refused by name. Materials include KHR_materials_ior (0 = the spec's
+// infinite IOR), KHR_materials_transmission, KHR_materials_volume and
+// KHR_materials_dispersion; textures are not used (a note names each textured material). A
+// node whose composed transform is not invertible (scale 0: hidden) is left out with a note.
 //
 // Returns false with a one-line `error` ("<path>: <problem>") and leaves `out` empty on any
 // problem; never throws and never prints. Non-fatal notes (tinygltf warnings, regenerated
