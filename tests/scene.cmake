@@ -6,7 +6,7 @@ if(TARGET ocean_scene)
             unit/scene_gltf_errors_test.cpp
             unit/scene_gltf_hostile_test.cpp unit/scene_gltf_features_test.cpp
             unit/scene_gltf_fuzz_test.cpp unit/scene_gltf_draco_test.cpp
-            unit/scene_gltf_meshopt_test.cpp
+            unit/scene_gltf_meshopt_test.cpp unit/scene_gltf_texture_test.cpp
     LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF draco::draco
-         meshoptimizer::meshoptimizer)
+         meshoptimizer::meshoptimizer PkgConfig::OIIO)
 endif()

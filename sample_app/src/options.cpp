@@ -121,7 +121,8 @@ largest side to M metres (0.01..100), :fit=none keeps the file's size. Glass is 
 with KHR_materials_transmission and metallic < 0.5 (transmission x (1 - metallic) weighs its
 caustic, the base colour tints it, KHR_materials_volume absorbs along the path, thickness 0 is
 a thin wall that does not focus, roughness widens it); metal (metallic >= 0.5) and ior 0 are
-mirrors. Draco and meshopt compression are decoded; textures are not used (a warning names them).
+mirrors. Draco and meshopt compression are decoded; an embedded base-colour texture is averaged
+into the colour, other textures are not used (a warning names them).
 
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
 the sun), above (above the water looking down), waterline (camera 3 cm above the water).

@@ -14,6 +14,7 @@
 
 #include "gltf_compressed_files.h"
 #include "gltf_test_files.h"
+#include "gltf_texture_files.h"
 #include "scene/gltf_loader.h"
 #include "scene/hash_noise.h"
 
@@ -30,7 +31,7 @@ Bytes bytesOf(const std::string& text) {
 
 // Valid seeds covering the loader's paths, each as text and binary: a plain triangle; a strip
 // under a node hierarchy with glass materials; sparse positions, quantized normals and GPU
-// instancing; then a Draco quad (text) and a meshopt quad (binary).
+// instancing; then a Draco quad (text), a meshopt quad and a textured triangle (binary).
 std::vector<Bytes> corpus() {
   std::vector<Bytes> seeds;
   TriangleJson plain;
@@ -60,6 +61,11 @@ std::vector<Bytes> corpus() {
   seeds.push_back(bytesOf(dracoGltf(draco, draco.points, kBounds)));
   const Compressed meshopt = encodeMeshoptQuad();
   seeds.push_back(gltf_test_files::glb(meshoptGltf(meshopt, ""), meshopt.bytes));
+  // An embedded PNG: the mutations reach OpenImageIO's decoder.
+  const unsigned char orange[3] = {255, 128, 0};
+  const fs::path image = fs::path(testing::TempDir()) / "ocean_gltf_fuzz_seed.png";
+  seeds.push_back(
+      gltf_texture_files::texturedGlb(gltf_texture_files::png(image, orange), "[1, 1, 1, 1]"));
   return seeds;
 }
 

@@ -18,6 +18,7 @@
 #include "gltf_preflight.h"
 #include "gltf_primitive.h"
 #include "gltf_text.h"
+#include "gltf_texture_colour.h"
 
 namespace ocean_scene {
 
@@ -314,32 +315,33 @@ bool flattenNodes(const tinygltf::Model& model,
   return true;
 }
 
-// One note per material with textures (the first few by name, then a count): the sample
-// shades and casts from the factors, so a textured asset looks flatter than its author meant.
-void noteIgnoredTextures(const tinygltf::Model& model, std::string& notes) {
+bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::string& notes) {
+  // Textures: the base colour's is averaged when embedded; the rest are named in a note (the
+  // first few materials by name, then a count), since the sample shades from factors only.
   constexpr int kNamed = 4;
   int textured = 0;
-  for (const tinygltf::Material& material : model.materials) {
-    const std::string textures = gltf::ignoredTextures(material);
-    if (textures.empty()) continue;
-    if (textured++ < kNamed) {
-      notes += "material '" + material.name + "': textures not used (" + textures +
-               "), its factors are; ";
-    }
-  }
-  if (textured > kNamed) {
-    notes += std::to_string(textured - kNamed) + " more textured material(s), textures not used; ";
-  }
-}
-
-bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::string& notes) {
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    const tinygltf::Material& source = model.materials[i];
     Material material;
-    if (!gltf::readMaterial(model.materials[i], material, error)) return false;
+    if (!gltf::readMaterial(source, material, error)) return false;
     material.name = gltf::safeOneLine(material.name);  // printed in the sample's warnings
+    glm::vec3 mean(1.0f);
+    std::string why;
+    const bool averaged = gltf::baseColourTextureMean(model, source, mean, why);
+    if (averaged) material.baseColor *= mean;
+    const std::string unused = gltf::ignoredTextures(source, averaged);
+    if ((averaged || !unused.empty()) && textured++ < kNamed) {
+      notes += "material '" + material.name + "': ";
+      if (averaged) notes += "baseColorTexture averaged into its colour";
+      if (averaged && !unused.empty()) notes += ", ";
+      if (!unused.empty()) notes += "textures not used (" + unused + "), its factors are";
+      notes += "; ";
+    }
     out.materials.push_back(std::move(material));
   }
-  noteIgnoredTextures(model, notes);
+  if (textured > kNamed) {
+    notes += std::to_string(textured - kNamed) + " more textured material(s); ";
+  }
   // Primitives without a material get the glTF default material, added once at the end.
   std::uint32_t defaultMaterial = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::vector<std::uint32_t>> meshMap(model.meshes.size());

@@ -116,7 +116,7 @@ bool readMaterial(const tinygltf::Material& source, Material& out, std::string& 
   return true;
 }
 
-std::string ignoredTextures(const tinygltf::Material& source) {
+std::string ignoredTextures(const tinygltf::Material& source, bool baseColourUsed) {
   std::string names;
   auto add = [&names](int index, const char* name) {
     if (index < 0) return;
@@ -124,7 +124,7 @@ std::string ignoredTextures(const tinygltf::Material& source) {
     names += name;
   };
   const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
-  add(pbr.baseColorTexture.index, "baseColorTexture");
+  if (!baseColourUsed) add(pbr.baseColorTexture.index, "baseColorTexture");
   add(pbr.metallicRoughnessTexture.index, "metallicRoughnessTexture");
   add(source.normalTexture.index, "normalTexture");
   add(source.occlusionTexture.index, "occlusionTexture");

@@ -16,7 +16,7 @@ bool readMaterial(const tinygltf::Material& source, Material& out, std::string& 
 
 // The textures `source` refers to, by glTF name ("baseColorTexture, KHR_materials_transmission.
 // transmissionTexture"), or "" when none: the sample renders materials from their factors
-// only, and says which textures that leaves out.
-std::string ignoredTextures(const tinygltf::Material& source);
+// (and the base colour texture's mean, when `baseColourUsed`), and says what that leaves out.
+std::string ignoredTextures(const tinygltf::Material& source, bool baseColourUsed);
 
 }  // namespace ocean_scene::gltf

@@ -22,7 +22,8 @@ namespace ocean_scene {
 // (libmeshoptimizer) are decoded, the decoded data held to the same checks. Other unsupported
 // extensionsRequired are refused by name. Materials include KHR_materials_ior (0 = the spec's
 // infinite IOR), KHR_materials_transmission, KHR_materials_volume and
-// KHR_materials_dispersion; textures are not used (a note names each textured material). A
+// KHR_materials_dispersion; an embedded base-colour texture's mean colour scales the base
+// colour, other textures are not used (a note names each textured material). A
 // node whose composed transform is not invertible (scale 0: hidden) is left out with a note.
 //
 // Returns false with a one-line `error` ("<path>: <problem>") and leaves `out` empty on any

@@ -1,0 +1,143 @@
+#include "gltf_texture_colour.h"
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+namespace ocean_scene::gltf {
+
+namespace {
+
+double srgbToLinear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+std::uint32_t crc32(const unsigned char* data, std::size_t size) {
+  static const std::array<std::uint32_t, 256> table = [] {
+    std::array<std::uint32_t, 256> t{};
+    for (std::uint32_t n = 0; n < 256; ++n) {
+      std::uint32_t c = n;
+      for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+      t[n] = c;
+    }
+    return t;
+  }();
+  std::uint32_t crc = 0xffffffffu;
+  for (std::size_t i = 0; i < size; ++i) crc = table[(crc ^ data[i]) & 0xffu] ^ (crc >> 8);
+  return ~crc;
+}
+
+std::uint32_t bigEndian(const unsigned char* p) {
+  return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
+         std::uint32_t(p[3]);
+}
+
+// Whether a PNG's chunk structure is whole: the signature, IHDR first, every chunk inside the
+// data with a letter type and a matching CRC, IEND reached. OpenImageIO 2.4 reads PNG through
+// libpng's default error handler, which prints on stderr; damaged or cut files are refused
+// here so that it never sees them (a file with valid CRCs over bad pixel data still can).
+bool pngChunksWhole(const unsigned char* data, std::size_t size) {
+  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 8 || std::memcmp(data, kSignature, 8) != 0) return false;
+  std::size_t at = 8;
+  bool first = true;
+  while (size - at >= 12) {
+    const std::uint32_t length = bigEndian(data + at);
+    if (length > size - at - 12) return false;
+    const unsigned char* type = data + at + 4;
+    for (int i = 0; i < 4; ++i) {
+      if (!std::isalpha(type[i])) return false;
+    }
+    if (first && (std::memcmp(type, "IHDR", 4) != 0 || length != 13)) return false;
+    if (bigEndian(data + at + 8 + length) != crc32(type, 4 + std::size_t(length))) return false;
+    if (std::memcmp(type, "IEND", 4) == 0) return true;
+    at += 12 + std::size_t(length);
+    first = false;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool baseColourTextureMean(const tinygltf::Model& model, const tinygltf::Material& material,
+                           glm::vec3& mean, std::string& reason) {
+  const int textureIndex = material.pbrMetallicRoughness.baseColorTexture.index;
+  if (textureIndex < 0 || static_cast<std::size_t>(textureIndex) >= model.textures.size()) {
+    reason = "no base-colour texture";
+    return false;
+  }
+  const int source = model.textures[std::size_t(textureIndex)].source;
+  if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) {
+    reason = "its texture has no image";
+    return false;
+  }
+  const tinygltf::Image& image = model.images[std::size_t(source)];
+  if (image.bufferView < 0 ||
+      static_cast<std::size_t>(image.bufferView) >= model.bufferViews.size()) {
+    reason = "its image is not embedded (image files are not opened)";
+    return false;
+  }
+  // The name only tells OpenImageIO which reader to try; the bytes come from memory.
+  const char* name = image.mimeType == "image/png"    ? "embedded.png"
+                     : image.mimeType == "image/jpeg" ? "embedded.jpg"
+                                                      : nullptr;
+  if (name == nullptr) {
+    reason = "its image is not PNG or JPEG";
+    return false;
+  }
+  const tinygltf::BufferView& view = model.bufferViews[std::size_t(image.bufferView)];
+  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
+    reason = "its image's bufferView has no buffer";
+    return false;
+  }
+  const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
+  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
+    reason = "its image's bufferView lies outside its buffer";
+    return false;
+  }
+  const unsigned char* bytes = data.data() + view.byteOffset;
+  if (image.mimeType == "image/png" && !pngChunksWhole(bytes, view.byteLength)) {
+    reason = "its PNG is damaged or cut short";
+    return false;
+  }
+  OIIO::Filesystem::IOMemReader memory(bytes, view.byteLength);
+  auto input = OIIO::ImageInput::open(name, nullptr, &memory);
+  if (!input) {
+    (void)OIIO::geterror();  // consumed, so it is not reported later by someone else
+    reason = "its image could not be decoded";
+    return false;
+  }
+  const OIIO::ImageSpec& spec = input->spec();
+  const long long pixels = static_cast<long long>(spec.width) * spec.height;
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels < 1 ||
+      pixels > kMaxTexturePixels) {
+    reason =
+        "its image is empty or larger than " + std::to_string(kMaxTexturePixels >> 20) + " Mpixels";
+    return false;
+  }
+  const int channels = spec.nchannels;
+  std::vector<float> texels(static_cast<std::size_t>(pixels) * std::size_t(channels));
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, texels.data())) {
+    (void)input->geterror();
+    reason = "its image could not be decoded";
+    return false;
+  }
+  glm::dvec3 sum(0.0);
+  for (long long p = 0; p < pixels; ++p) {
+    const float* t = &texels[std::size_t(p) * std::size_t(channels)];
+    for (int c = 0; c < 3; ++c) {
+      const double v = t[channels >= 3 ? c : 0];  // grey images repeat their one channel
+      sum[c] += srgbToLinear(std::fmin(std::fmax(v, 0.0), 1.0));
+    }
+  }
+  mean = glm::vec3(sum / double(pixels));
+  return true;
+}
+
+}  // namespace ocean_scene::gltf

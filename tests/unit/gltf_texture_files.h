@@ -1,0 +1,78 @@
+#pragma once
+// glTF files with an embedded base-colour texture, written by the tests themselves (no
+// committed blobs): a small PNG made through OpenImageIO, the same PNG with a header claiming
+// a huge size, and a GLB whose one material uses the image.
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "gltf_test_files.h"
+
+namespace gltf_texture_files {
+
+namespace fs = std::filesystem;
+using Bytes = std::vector<unsigned char>;
+
+// A 2x2 PNG of one sRGB colour, through OpenImageIO.
+inline Bytes png(const fs::path& path, const unsigned char rgb[3]) {
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (!out) return {};
+  const OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+  std::vector<unsigned char> texels;
+  for (int i = 0; i < 4; ++i) texels.insert(texels.end(), rgb, rgb + 3);
+  if (!(out->open(path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texels.data()) &&
+        out->close()))
+    return {};
+  std::ifstream in(path, std::ios::binary);
+  return Bytes(std::istreambuf_iterator<char>(in), {});
+}
+
+// CRC-32 (PNG's), to keep a patched header valid.
+inline std::uint32_t crc32(const unsigned char* data, std::size_t size) {
+  std::uint32_t crc = 0xffffffffu;
+  for (std::size_t i = 0; i < size; ++i) {
+    crc ^= data[i];
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+// The PNG with its IHDR claiming width x height (a decompression bomb's header).
+inline Bytes claimSize(Bytes image, std::uint32_t width, std::uint32_t height) {
+  // Signature (8), IHDR length (4), "IHDR" (4), then width and height, big-endian.
+  for (int i = 0; i < 4; ++i) {
+    image[16 + i] = static_cast<unsigned char>(width >> (24 - 8 * i));
+    image[20 + i] = static_cast<unsigned char>(height >> (24 - 8 * i));
+  }
+  const std::uint32_t crc = crc32(image.data() + 12, 17);  // "IHDR" and its 13 bytes
+  for (int i = 0; i < 4; ++i) image[29 + i] = static_cast<unsigned char>(crc >> (24 - 8 * i));
+  return image;
+}
+
+// A GLB: the triangle and `image` in its BIN chunk, a material with baseColorFactor `factor`
+// and the image as its baseColorTexture.
+inline Bytes texturedGlb(const Bytes& image, const std::string& factor) {
+  Bytes bin = gltf_test_files::trianglePositions();  // 36 bytes
+  bin.insert(bin.end(), image.begin(), image.end());
+  const std::string json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": )" +
+                           std::to_string(bin.size()) +
+                           R"(}], "bufferViews": [{"buffer": 0, "byteLength": 36},
+      {"buffer": 0, "byteOffset": 36, "byteLength": )" +
+                           std::to_string(image.size()) + R"(}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+        "min": [0, 0, -1], "max": [1, 0, 0]}],
+      "images": [{"bufferView": 1, "mimeType": "image/png"}], "textures": [{"source": 0}],
+      "materials": [{"name": "painted", "pbrMetallicRoughness": {"baseColorFactor": )" +
+                           factor + R"(, "baseColorTexture": {"index": 0}}}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+      "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+  return gltf_test_files::glb(json, bin);
+}
+
+}  // namespace gltf_texture_files

@@ -1,0 +1,67 @@
+// Base-colour textures (issue 17, item 3): an embedded PNG's mean colour (sRGB-decoded) scales
+// the material's base colour; an undecodable or oversized image leaves the factor alone with a
+// note. Images are written here through OpenImageIO; nothing is committed.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gltf_texture_files.h"
+#include "scene/gltf_loader.h"
+
+namespace ocean_scene {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace gltf_texture_files;
+
+fs::path dir(const std::string& name) {
+  return gltf_test_files::freshDir(fs::path(testing::TempDir()) / "ocean_gltf_texture", name);
+}
+
+Model load(const fs::path& path, std::string& warnings) {
+  Model model;
+  std::string error;
+  EXPECT_TRUE(loadGlb(path.string(), model, error, &warnings)) << error;
+  return model;
+}
+
+TEST(SceneGltfTexture, EmbeddedBaseColourTextureMeanScalesTheFactor) {
+  const fs::path d = dir("mean");
+  const unsigned char orange[3] = {255, 128, 0};
+  gltf_test_files::writeFile(d / "painted.glb",
+                             texturedGlb(png(d / "orange.png", orange), "[0.5, 1, 1, 1]"));
+  std::string warnings;
+  const Model model = load(d / "painted.glb", warnings);
+  ASSERT_EQ(model.materials.size(), 1u);
+  // sRGB 255 -> 1, 128 -> ((128/255 + 0.055) / 1.055)^2.4 = 0.21586, 0 -> 0; times the factor.
+  EXPECT_NEAR(model.materials[0].baseColor.r, 0.5f, 1e-5f);
+  EXPECT_NEAR(model.materials[0].baseColor.g, 0.21586f, 1e-4f);
+  EXPECT_NEAR(model.materials[0].baseColor.b, 0.0f, 1e-6f);
+  EXPECT_NE(warnings.find("material 'painted': baseColorTexture averaged into its colour"),
+            std::string::npos)
+      << warnings;
+}
+
+TEST(SceneGltfTexture, UndecodableOrHugeImagesLeaveTheFactor) {
+  const fs::path d = dir("hostile");
+  const unsigned char grey[3] = {128, 128, 128};
+  const Bytes good = png(d / "grey.png", grey);
+  const Bytes garbage(64, 0x5a);
+  for (const auto& [name, image] :
+       {std::pair<std::string, Bytes>{"garbage.glb", garbage},
+        std::pair<std::string, Bytes>{"bomb.glb", claimSize(good, 100000, 100000)}}) {
+    gltf_test_files::writeFile(d / name, texturedGlb(image, "[0.25, 0.5, 1, 1]"));
+    std::string warnings;
+    const Model model = load(d / name, warnings);
+    ASSERT_EQ(model.materials.size(), 1u) << name;
+    EXPECT_EQ(model.materials[0].baseColor, glm::vec3(0.25f, 0.5f, 1.0f)) << name;
+    EXPECT_NE(warnings.find("material 'painted': textures not used (baseColorTexture)"),
+              std::string::npos)
+        << name << ": " << warnings;
+  }
+}
+
+}  // namespace
+}  // namespace ocean_scene
