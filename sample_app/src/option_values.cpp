@@ -55,6 +55,15 @@ bool doubleIn(std::string_view text, double lo, double hi, double& value, std::s
   return true;
 }
 
+// The same for a value that overrides a preset's only when given.
+bool doubleIn(std::string_view text, double lo, double hi, std::optional<double>& value,
+              std::string_view flag, std::string_view what, std::string& error) {
+  double parsed = 0.0;
+  if (!doubleIn(text, lo, hi, parsed, flag, what, error)) return false;
+  value = parsed;
+  return true;
+}
+
 // Far from the origin is a case the plugin handles (double positions); beyond 1e7 m a float
 // camera-relative offset has lost centimetres, which no scene of the sample needs.
 constexpr double kMaxCoordinate = 1e7;
@@ -177,34 +186,22 @@ const std::array kValueOptions{
                 }},
     ValueOption{"--fov", "DEG", "vertical field of view in degrees, 5..150 (default 60)", false,
                 [](std::string_view text, Options& o, std::string& error) {
-                  double v = 0.0;
-                  if (!doubleIn(text, 5.0, 150.0, v, "--fov", "a number of degrees in [5, 150]",
-                                error))
-                    return false;
-                  o.fovDegrees = v;
-                  return true;
+                  return doubleIn(text, 5.0, 150.0, o.fovDegrees, "--fov",
+                                  "a number of degrees in [5, 150]", error);
                 }},
     ValueOption{"--sun-azimuth", "DEG",
                 "sun azimuth in degrees, 0 toward -z, clockwise seen from above; -360..360", false,
                 [](std::string_view text, Options& o, std::string& error) {
-                  double v = 0.0;
-                  if (!doubleIn(text, -360.0, 360.0, v, "--sun-azimuth",
-                                "a number of degrees in [-360, 360]", error))
-                    return false;
-                  o.sunAzimuthDegrees = v;
-                  return true;
+                  return doubleIn(text, -360.0, 360.0, o.sunAzimuthDegrees, "--sun-azimuth",
+                                  "a number of degrees in [-360, 360]", error);
                 }},
     ValueOption{"--sun-elevation", "DEG", "sun elevation above the horizon in degrees, 1..90",
                 false,
                 [](std::string_view text, Options& o, std::string& error) {
                   // At or below the horizon no sunlight enters the water: the plugin draws
                   // nothing, so such a frame would only show the sky's own light.
-                  double v = 0.0;
-                  if (!doubleIn(text, 1.0, 90.0, v, "--sun-elevation",
-                                "a number of degrees in [1, 90]", error))
-                    return false;
-                  o.sunElevationDegrees = v;
-                  return true;
+                  return doubleIn(text, 1.0, 90.0, o.sunElevationDegrees, "--sun-elevation",
+                                  "a number of degrees in [1, 90]", error);
                 }},
     ValueOption{"--out", "PATH", "output file (or directory for report)", false,
                 [](std::string_view text, Options& o, std::string&) {
