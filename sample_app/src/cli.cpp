@@ -55,7 +55,8 @@ largest side to M metres (0.01..100), :fit=none keeps the file's size.)";
 struct CommandSpec {
   std::string_view name;
   Command command;
-  std::string_view description;
+  std::string_view summary;               // one line, in the list of commands
+  std::string_view description;           // the command's own --help, wrapped
   std::vector<std::string_view> options;  // beside the scene options where `scene` is set
   bool scene;
   std::string_view out;  // --out's default
@@ -67,6 +68,7 @@ const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> all = {
       {"render",
        Command::Render,
+       "one frame (or a sequence) headless to PNG/EXR",
        "Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped) "
        "or .exr (linear radiance). With --frames N > 1: N frames with time running at --fps, "
        "written as OUT with the frame number before the extension (ocean_0000.png, ...), the "
@@ -79,6 +81,7 @@ const std::vector<CommandSpec>& commands() {
        kSceneFooter},
       {"view",
        Command::View,
+       "the scene in a window",
        "Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, G god rays, T pauses "
        "time, 1-4 switch presets, Esc quits.",
        {},
@@ -88,6 +91,7 @@ const std::vector<CommandSpec>& commands() {
        kSceneFooter},
       {"bench",
        Command::Bench,
+       "per-pass GPU time and ratio to the floor pass",
        "Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a "
        "floor pass that reads the same inputs and writes the same outputs with no math; also "
        "each variant (caustics_all_cascades, caustics_triplanar_walls, god_rays[_half|_quarter]"
@@ -99,6 +103,7 @@ const std::vector<CommandSpec>& commands() {
        kSceneFooter},
       {"report",
        Command::Report,
+       "error against GPU time of every method and setting",
        "Error against run time of every method and quality setting: each pass timed (median, "
        "with its floor) and compared with a CPU reference of the same frame. Writes "
        "DIR/error_vs_time.csv, .md and .png (default DIR: report). The size is the report's "
@@ -110,6 +115,7 @@ const std::vector<CommandSpec>& commands() {
        kSceneFooter},
       {"reference",
        Command::Reference,
+       "the frame with its caustic light traced (EXR)",
        "Renders the same frame as render with the plugin's seabed caustic light replaced by "
        "traced caustic light in the same units (sun photons through the frame's own water "
        "texture against the scene's triangles, Embree; an Epanechnikov density estimate on a "
@@ -124,6 +130,7 @@ const std::vector<CommandSpec>& commands() {
        kSceneFooter},
       {"compare",
        Command::Compare,
+       "plugin frame against traced frame: error, correlation, side by side",
        "P: render --out P.exr, R: reference --out R.exr, B: render --no-caustics --out B.exr "
        "(same preset, size and time). Over R's lit underwater pixels it prints the relative "
        "RMSE and Pearson correlation of the added light (P - B against R - B) and writes OUT "
@@ -151,6 +158,24 @@ std::vector<std::string_view> offered(const CommandSpec& spec) {
   return flags;
 }
 
+// `text` broken into lines of at most 94 characters at spaces.
+std::string wrapped(std::string_view text) {
+  std::string out, line;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > 94) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + std::string(word);
+    start = end + 1;
+  }
+  return out + line + "\n";
+}
+
 // What CLI11 collected for one command, before any value is checked.
 struct Collected {
   std::map<std::string_view, std::vector<std::string>> values;
@@ -169,7 +194,7 @@ void addOptions(CLI::App& app, const CommandSpec& spec, Collected& collected) {
       app.add_flag(std::string(flag), collected.flags[flag], std::string(switchOption->help));
     }
   }
-  if (!spec.footer.empty()) app.footer(std::string(spec.footer));
+  app.footer(wrapped(spec.description) + "\n" + std::string(spec.footer));
   // Unknown arguments are named by parseCommandLine in our own words.
   app.allow_extras();
 }
@@ -195,12 +220,13 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
                "ocean_sample");
   app.require_subcommand(0, 1);
   app.allow_extras();  // options before the command: named below in our own words
-  app.footer("Each command has its own help: ocean_sample COMMAND --help.");
   std::map<std::string_view, Collected> collected;
   for (const CommandSpec& spec : commands()) {
-    CLI::App* sub = app.add_subcommand(std::string(spec.name), std::string(spec.description));
+    CLI::App* sub = app.add_subcommand(std::string(spec.name), std::string(spec.summary));
     addOptions(*sub, spec, collected[spec.name]);
   }
+  // After the commands, which would otherwise inherit it.
+  app.footer("Each command has its own help: ocean_sample COMMAND --help.");
   const std::string_view first = argv[1];
   if (first == "help") {
     ParsedCommandLine parsed;
