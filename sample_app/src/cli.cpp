@@ -72,9 +72,10 @@ const std::vector<CommandSpec>& commands() {
        "Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped) "
        "or .exr (linear radiance). With --frames N > 1: N frames with time running at --fps, "
        "written as OUT with the frame number before the extension (ocean_0000.png, ...), the "
-       "camera moving at --camera-velocity, and each frame's change from the one before "
+       "camera moving at --camera-velocity (with --freeze-time only the camera moves), and each "
+       "frame's change from the one before "
        "printed.",
-       {"--out", "--frames", "--fps", "--camera-velocity"},
+       {"--out", "--frames", "--fps", "--camera-velocity", "--freeze-time"},
        true,
        "ocean.png",
        1,

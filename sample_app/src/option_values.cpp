@@ -287,6 +287,8 @@ const std::array kFlagOptions{
                [](Options& o) { o.objectCaustics = false; }},
     FlagOption{"--triplanar-walls", "steep surfaces blend world-axis projections of the water",
                [](Options& o) { o.triplanarWalls = true; }},
+    FlagOption{"--freeze-time", "render --frames: time stays at --time, only the camera moves",
+               [](Options& o) { o.freezeTime = true; }},
     FlagOption{"--quick", "a smoke run in a few minutes", [](Options& o) { o.quick = true; }},
 };
 

@@ -21,6 +21,7 @@ struct Options {
   // bench: measured frames after warm-up; render: frames of the image sequence (1: one image)
   int frames = 60;
   double fps = 30.0;           // render: frames per second of the sequence's time
+  bool freezeTime = false;     // render --frames: time stays at --time (only the camera moves)
   std::string json;            // bench: JSON output path
   std::string only;            // bench: run only the variant rows whose name starts with this
   bool caustics = true;        // the plugin's seabed caustics

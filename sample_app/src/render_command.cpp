@@ -56,7 +56,7 @@ int runRender(const Options& options) {
   for (int frame = 0; frame < options.frames; ++frame) {
     const double seconds = frame / options.fps;
     const FrameInput input{cameras[size_t(frame)], session.preset.sun,
-                           options.timeSeconds + seconds};
+                           options.timeSeconds + (options.freezeTime ? 0.0 : seconds)};
     if (!renderChecked(session, input, error)) return commandFailed(error);
     std::vector<float> radiance = renderer.readRadiance();
     const std::string name =
