@@ -21,6 +21,8 @@ bool cameraAt(const Options& options, const Camera& first, double seconds, Camer
   camera = first;
   if (!options.cameraVelocity) return true;
   camera.position = first.position + *options.cameraVelocity * seconds;
+  // The same bound as --camera-position's: a fast path over a long sequence must not leave it.
+  if (!(glm::length(camera.position) <= 1e7)) return false;
   if (!options.cameraLookAt) return true;
   return lookAlong(*options.cameraLookAt - camera.position, camera.yaw, camera.pitch);
 }

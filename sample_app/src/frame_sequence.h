@@ -16,7 +16,7 @@ std::string sequenceFrameName(const std::string& path, int frame, int frames);
 
 // The camera at `seconds` after the first frame: it moves at options.cameraVelocity (m/s) and,
 // with --camera-look-at, keeps turning to the target. False when the path passes straight above
-// or below the target.
+// or below the target or goes farther than 1e7 m from the origin.
 bool cameraAt(const Options& options, const Camera& first, double seconds, Camera& camera);
 
 // Mean |luminance(b) - luminance(a)| over the pixels, divided by the mean luminance of a (0 when

@@ -47,8 +47,10 @@ int runRender(const Options& options) {
   std::vector<Camera> cameras(size_t(options.frames));
   for (int frame = 0; frame < options.frames; ++frame) {
     if (!cameraAt(options, session.preset.camera, frame / options.fps, cameras[size_t(frame)]))
-      return commandFailed("the camera path passes straight above or below --camera-look-at at " +
-                           std::to_string(frame / options.fps) + " s");
+      return commandFailed(
+          "the camera path leaves 1e7 m from the origin or passes straight above or below "
+          "--camera-look-at at " +
+          std::to_string(frame / options.fps) + " s");
   }
   Renderer& renderer = *session.renderer;
   std::vector<float> previous;

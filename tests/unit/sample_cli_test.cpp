@@ -251,6 +251,10 @@ TEST_F(SampleCli, CameraAndSunValuesAreChecked) {
   expectRejected("--camera-look-at 1,2,3,4", "--camera-look-at must be x,y,z");
   expectRejected("--camera-position 0,-3,10 --camera-look-at 0,-3,10", "--camera-look-at");
   expectRejected("--camera-position 0,-3,10 --camera-look-at 0,-9,10", "straight above or below");
+  // A camera path checked whole before the first frame: no frame of it is left behind.
+  expectRejected("--frames 3 --fps 1 --camera-velocity 0,0,9e6", "camera path leaves 1e7 m",
+                 "render", "seq.png");
+  EXPECT_FALSE(fs::exists(dir_ / "seq_0000.png"));
 }
 
 // Parse errors exit 2 (as before CLI11), failures of the command itself 1; one line each.
