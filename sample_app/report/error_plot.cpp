@@ -80,7 +80,8 @@ class BuiltInDrawing {
     const std::vector<const PlotPoint*> front = panel.paretoFront();
     for (size_t i = 0; i < front.size(); ++i) {
       const int x = panel.px(front[i]->ms), y = panel.py(front[i]->error);
-      for (int r : {7, 8}) algo::render_box(image_, x - r, y - r, x + r, y + r, grey);
+      for (int r : {kParetoRingPx - 1, kParetoRingPx})
+        algo::render_box(image_, x - r, y - r, x + r, y + r, grey);
       if (i > 0) {  // a step: the best error reachable for this much time
         const int px = panel.px(front[i - 1]->ms), py = panel.py(front[i - 1]->error);
         for (int dash = px; dash < x; dash += 8)

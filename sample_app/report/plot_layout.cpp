@@ -57,19 +57,23 @@ struct Box {
 // Greedy placement: each label tries eight spots around its point, nearest first, and takes
 // the first that overlaps no placed label, no point and stays inside the plot area.
 void placeLabels(PlotPanel& panel) {
+  // A point's marker, or the ring round a point of the Pareto front (gnuplot's pt 6 ps 2).
   std::vector<Box> taken;
   for (const PlotSeries& s : panel.series)
-    for (const PlotPoint& p : s.points)
+    for (const PlotPoint& p : s.points) {
+      const int r = p.pareto ? kParetoRingPx : 4;
       taken.push_back(
-          {panel.px(p.ms) - 4, panel.py(p.error) - 4, panel.px(p.ms) + 4, panel.py(p.error) + 4});
+          {panel.px(p.ms) - r, panel.py(p.error) - r, panel.px(p.ms) + r, panel.py(p.error) + r});
+    }
   const Box area{panel.left, panel.top, panel.left + panel.width, panel.top + panel.height};
   for (PlotSeries& s : panel.series) {
     for (PlotPoint& p : s.points) {
       if (p.label.empty()) continue;
       const int w = kLabelCharPx * int(p.label.size()), h = kLabelFontPx;
       const int x = panel.px(p.ms), y = panel.py(p.error);
-      const int spots[][2] = {{6, -6 - h},      {6, 6},      {-6 - w, -6 - h}, {-6 - w, 6},
-                              {-w / 2, -8 - h}, {-w / 2, 8}, {8, -h / 2},      {-8 - w, -h / 2}};
+      const int d = p.pareto ? kParetoRingPx + 1 : 6;  // clear of the marker or ring
+      const int spots[][2] = {{d, -d - h},      {d, d},      {-d - w, -d - h}, {-d - w, d},
+                              {-w / 2, -d - h}, {-w / 2, d}, {d, -h / 2},      {-d - w, -h / 2}};
       for (const auto& spot : spots) {
         const Box box{x + spot[0], y + spot[1], x + spot[0] + w, y + spot[1] + h};
         if (box.x0 < area.x0 || box.x1 > area.x1 || box.y0 < area.y0 || box.y1 > area.y1) continue;

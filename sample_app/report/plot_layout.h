@@ -45,6 +45,7 @@ struct PlotLayout {
 // Label glyph metrics both renderers are set up to match (DejaVu Sans at this size).
 inline constexpr int kLabelFontPx = 11;
 inline constexpr int kLabelCharPx = 7;
+inline constexpr int kParetoRingPx = 9;  // radius of the ring that marks a Pareto point
 
 // Rows without a positive time and a positive finite error for their panel are left out.
 // False with a message when no row can be plotted.

@@ -91,7 +91,7 @@ TEST(ReportPlot, ParetoFrontIsThePointsNothingBeats) {
 TEST(ReportPlot, LabelsDoNotCollide) {
   std::vector<Row> rows;
   for (int i = 0; i < 40; ++i)
-    rows.push_back(row("god_rays", "m" + std::to_string(i % 4),
+    rows.push_back(row("god_rays", std::string(1, char('a' + i % 4)),
                        std::to_string(100 + i) + " samples", 1.0 + 0.02 * i, 0.1 + 0.001 * (i % 7),
                        0));
   ocean::report::PlotLayout layout;
@@ -104,8 +104,10 @@ TEST(ReportPlot, LabelsDoNotCollide) {
   std::vector<Box> labels, points;
   for (const auto& s : panel.series)
     for (const auto& p : s.points) {
+      // The marker, or the ring round a Pareto point, which labels must not cover either.
+      const int r = p.pareto ? ocean::report::kParetoRingPx : 4;
       points.push_back(
-          {panel.px(p.ms) - 4, panel.py(p.error) - 4, panel.px(p.ms) + 4, panel.py(p.error) + 4});
+          {panel.px(p.ms) - r, panel.py(p.error) - r, panel.px(p.ms) + r, panel.py(p.error) + r});
       if (p.labelled)
         labels.push_back({p.labelX, p.labelY - ocean::report::kLabelFontPx,
                           p.labelX + ocean::report::kLabelCharPx * int(p.label.size()), p.labelY});
