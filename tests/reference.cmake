@@ -41,3 +41,7 @@ postfx_add_test(reference_frame_units_tests GL
   LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy)
 target_include_directories(reference_frame_units_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
+# The report's plot: panels per effect, Pareto front, label placement, both drawings.
+postfx_add_test(report_plot_tests
+  SOURCES unit/report_plot_test.cpp
+  LIBS ocean_report)

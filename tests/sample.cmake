@@ -3,11 +3,14 @@ postfx_add_test(sample_render_tests GL
   LIBS ocean_host)
 postfx_add_test(sample_cli_tests
   SOURCES unit/sample_cli_test.cpp
-  LIBS ocean_host)
+  LIBS ocean_host nlohmann_json::nlohmann_json)
 target_compile_definitions(sample_cli_tests PRIVATE
   OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>"
   OCEAN_ASSETS="${CMAKE_BINARY_DIR}/assets")
 add_dependencies(sample_cli_tests ocean_sample)
 postfx_add_test(sample_model_tests
   SOURCES unit/sample_model_placement_test.cpp
+  LIBS ocean_host)
+postfx_add_test(sample_view_flags_tests GL
+  SOURCES gl/sample_view_flags_test.cpp
   LIBS ocean_host)

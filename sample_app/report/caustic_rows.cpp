@@ -162,6 +162,7 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
   flatRow.method = "no caustics (uniform light)";
   flatRow.setting = "-";
   flatRow.relativeRmse = flat.relativeRmse;
+  flatRow.affineRmse = flat.affineRmse;
   flatRow.note = "the error of drawing no caustic pattern at all";
   rows.push_back(flatRow);
   for (size_t k = 0; k < variants.size(); ++k) {
@@ -192,11 +193,9 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
                   seabed.streakRatio(binned), truthStreaks);
     row.note += streaks;
     const ErrorStats stats = compareWithReference(binned, truth);
-    if (v.physical) {
-      row.relativeRmse = stats.relativeRmse;
-    } else {
-      row.affineRmse = stats.affineRmse;  // omega has no absolute scale
-    }
+    if (v.physical) row.relativeRmse = stats.relativeRmse;  // omega has no absolute scale
+    // Every model's pattern error too: the plot's seabed panel compares them all on it.
+    row.affineRmse = stats.affineRmse;
     row.correlation = stats.correlation;
     rows.push_back(row);
   }

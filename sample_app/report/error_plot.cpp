@@ -3,138 +3,141 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
+#include <filesystem>
 
 #include <atomic_file.h>
+
+#include "gnuplot_plot.h"
+#include "plot_layout.h"
 
 namespace ocean::report {
 namespace {
 
 namespace algo = OIIO::ImageBufAlgo;
 
-constexpr int kWidth = 1000, kHeight = 640;
-constexpr int kLeft = 90, kRight = 330, kTop = 76, kBottom = 70;  // margins; legend on the right
 constexpr const char* kFont = "DejaVuSans";
-
-struct Point {
-  double ms, error;
-  std::string setting;
-};
-
-// Decade range [lo, hi] covering every value, at least one decade wide.
-void decades(const std::vector<double>& values, int& lo, int& hi) {
-  double mn = HUGE_VAL, mx = 0.0;
-  for (double v : values) mn = std::min(mn, v), mx = std::max(mx, v);
-  lo = int(std::floor(std::log10(mn)));
-  hi = int(std::ceil(std::log10(mx)));
-  if (hi <= lo) hi = lo + 1;
-}
 
 const float kPalette[][3] = {{0.12f, 0.47f, 0.71f}, {1.00f, 0.50f, 0.05f}, {0.17f, 0.63f, 0.17f},
                              {0.84f, 0.15f, 0.16f}, {0.58f, 0.40f, 0.74f}, {0.55f, 0.34f, 0.29f},
                              {0.89f, 0.47f, 0.76f}, {0.50f, 0.50f, 0.50f}, {0.74f, 0.74f, 0.13f},
-                             {0.09f, 0.75f, 0.81f}, {0.00f, 0.00f, 0.00f}, {0.10f, 0.10f, 0.55f},
-                             {0.80f, 0.00f, 0.80f}, {0.33f, 0.42f, 0.18f}};
+                             {0.09f, 0.75f, 0.81f}};
+
+// The fallback when gnuplot is absent: the same layout drawn with OpenImageIO's lines and text.
+class BuiltInDrawing {
+ public:
+  explicit BuiltInDrawing(const PlotLayout& layout)
+      : image_(OIIO::ImageSpec(layout.width, layout.height, 3, OIIO::TypeDesc::FLOAT)) {
+    const float white[3] = {1, 1, 1};
+    algo::fill(image_, white);
+    text(layout.width / 2, 24, layout.title, 18, algo::TextAlignX::Center);
+    for (const PlotPanel& panel : layout.panels) drawPanel(panel);
+  }
+  OIIO::ImageBuf& image() { return image_; }
+
+ private:
+  void text(int x, int y, const std::string& s, int size, algo::TextAlignX ax,
+            algo::TextAlignY ay = algo::TextAlignY::Center) {
+    if (!labels_) return;
+    const float black[3] = {0, 0, 0};
+    labels_ = algo::render_text(image_, x, y, s, size, kFont, black, ax, ay);
+    if (!labels_) (void)image_.geterror();  // no font: carry on unlabelled
+  }
+
+  void axes(const PlotPanel& panel) {
+    const float black[3] = {0, 0, 0}, grid[3] = {0.87f, 0.87f, 0.87f};
+    const int right = panel.left + panel.width, bottom = panel.top + panel.height;
+    for (int d = panel.x0; d <= panel.x1; ++d) {
+      for (int m = 1; m <= (d < panel.x1 ? 9 : 1); ++m) {
+        const int x = panel.px(m * std::pow(10.0, d));
+        algo::render_line(image_, x, panel.top, x, bottom, grid);
+      }
+      char label[32];
+      std::snprintf(label, sizeof(label), "%g", std::pow(10.0, d));
+      text(panel.px(std::pow(10.0, d)), bottom + 16, label, 13, algo::TextAlignX::Center);
+    }
+    for (int d = panel.y0; d <= panel.y1; ++d) {
+      for (int m = 1; m <= (d < panel.y1 ? 9 : 1); ++m) {
+        const int y = panel.py(m * std::pow(10.0, d));
+        algo::render_line(image_, panel.left, y, right, y, grid);
+      }
+      char label[32];
+      std::snprintf(label, sizeof(label), "%g", std::pow(10.0, d));
+      text(panel.left - 6, panel.py(std::pow(10.0, d)), label, 13, algo::TextAlignX::Right);
+    }
+    algo::render_box(image_, panel.left, panel.top, right, bottom, black);
+    text(panel.left + panel.width / 2, panel.top - 28, panel.title, 16, algo::TextAlignX::Center);
+    // OIIO draws no rotated text: the error definition sits above the plot area.
+    text(panel.left, panel.top - 10, "y: " + panel.errorAxis, 12, algo::TextAlignX::Left);
+    text(panel.left + panel.width / 2, bottom + 40, "GPU time per frame (ms, median)", 13,
+         algo::TextAlignX::Center);
+  }
+
+  void drawPanel(const PlotPanel& panel) {
+    axes(panel);
+    const float grey[3] = {0.25f, 0.25f, 0.25f};
+    const std::vector<const PlotPoint*> front = panel.paretoFront();
+    for (size_t i = 0; i < front.size(); ++i) {
+      const int x = panel.px(front[i]->ms), y = panel.py(front[i]->error);
+      for (int r : {kParetoRingPx - 1, kParetoRingPx})
+        algo::render_box(image_, x - r, y - r, x + r, y + r, grey);
+      if (i > 0) {  // a step: the best error reachable for this much time
+        const int px = panel.px(front[i - 1]->ms), py = panel.py(front[i - 1]->error);
+        for (int dash = px; dash < x; dash += 8)
+          algo::render_line(image_, dash, py, std::min(dash + 4, x), py, grey);
+        for (int dash = py; dash < y; dash += 8)
+          algo::render_line(image_, x, dash, x, std::min(dash + 4, y), grey);
+      }
+    }
+    for (size_t s = 0; s < panel.series.size(); ++s) {
+      const float* colour = kPalette[s % std::size(kPalette)];
+      const std::vector<PlotPoint>& points = panel.series[s].points;
+      for (size_t i = 0; i < points.size(); ++i) {
+        const int x = panel.px(points[i].ms), y = panel.py(points[i].error);
+        if (i > 0)
+          algo::render_line(image_, panel.px(points[i - 1].ms), panel.py(points[i - 1].error), x, y,
+                            {colour, 3}, true);
+        algo::render_box(image_, x - 3, y - 3, x + 3, y + 3, {colour, 3}, true);
+        if (points[i].labelled)
+          text(points[i].labelX, points[i].labelY, points[i].label, kLabelFontPx,
+               algo::TextAlignX::Left, algo::TextAlignY::Bottom);
+      }
+      const int ly = panel.top + 10 + int(s) * 22;
+      algo::render_box(image_, panel.legendX, ly - 5, panel.legendX + 12, ly + 5, {colour, 3},
+                       true);
+      text(panel.legendX + 20, ly, panel.series[s].method, 12, algo::TextAlignX::Left);
+    }
+    const int ly = panel.top + 10 + int(panel.series.size()) * 22;
+    for (int r : {5, 6})
+      algo::render_box(image_, panel.legendX + 6 - r, ly - r, panel.legendX + 6 + r, ly + r, grey);
+    text(panel.legendX + 20, ly, "Pareto front", 12, algo::TextAlignX::Left);
+  }
+
+  OIIO::ImageBuf image_;
+  bool labels_ = true;  // stays true while the font renders
+};
 
 }  // namespace
 
 bool writeErrorPlot(const std::string& path, const std::string& title, const std::vector<Row>& rows,
-                    std::string& error) {
-  std::vector<std::string> order;  // methods in first-appearance order
-  std::map<std::string, std::vector<Point>> series;
-  std::vector<double> times, errors;
-  for (const Row& row : rows) {
-    const double e = row.plottedError();
-    if (!(row.medianMs > 0.0) || !(e > 0.0) || !std::isfinite(e)) continue;
-    if (!series.count(row.method)) order.push_back(row.method);
-    series[row.method].push_back({row.medianMs, e, row.setting});
-    times.push_back(row.medianMs);
-    errors.push_back(e);
-  }
-  if (times.empty()) {
-    error = "nothing to plot: no row has both a time and an error";
-    return false;
-  }
-  int x0, x1, y0, y1;
-  decades(times, x0, x1);
-  decades(errors, y0, y1);
-  const int plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
-  auto px = [&](double ms) {
-    return kLeft + int(std::lround((std::log10(ms) - x0) / (x1 - x0) * plotW));
-  };
-  auto py = [&](double e) {
-    return kTop + plotH - int(std::lround((std::log10(e) - y0) / (y1 - y0) * plotH));
-  };
-
-  OIIO::ImageBuf image(OIIO::ImageSpec(kWidth, kHeight, 3, OIIO::TypeDesc::FLOAT));
-  const float white[3] = {1, 1, 1}, black[3] = {0, 0, 0}, grid[3] = {0.85f, 0.85f, 0.85f};
-  algo::fill(image, white);
-  bool labels = true;  // stays true while the font renders
-  auto text = [&](int x, int y, const std::string& s, int size, algo::TextAlignX ax,
-                  algo::TextAlignY ay) {
-    if (!labels) return;
-    labels = algo::render_text(image, x, y, s, size, kFont, black, ax, ay);
-    if (!labels) (void)image.geterror();  // no font: carry on unlabelled
-  };
-  // Decade grid lines (and minor 2..9 ticks) with labels.
-  for (int d = x0; d <= x1; ++d) {
-    for (int m = 1; m <= (d < x1 ? 9 : 1); ++m) {
-      const int x = px(m * std::pow(10.0, d));
-      algo::render_line(image, x, kTop, x, kTop + plotH, m == 1 ? grid : white);
-      if (m > 1) algo::render_line(image, x, kTop + plotH - 4, x, kTop + plotH, black);
+                    std::string& error, PlotBackend backend, std::string* used) {
+  PlotLayout layout;
+  if (!layoutErrorPlot(title, rows, layout, error)) return false;
+  OIIO::ImageBuf image;
+  std::string drawnBy = "built-in";
+  const std::string gnuplot = backend == PlotBackend::Auto ? findGnuplot() : "";
+  if (!gnuplot.empty()) {
+    const std::string script = std::filesystem::path(path).replace_extension(".gp").string();
+    std::string why;
+    if (drawWithGnuplot(gnuplot, layout, script, image, why)) {
+      drawnBy = "gnuplot";
+    } else {
+      std::fprintf(stderr, "report: %s; drawing the plot without it\n", why.c_str());
     }
-    char label[32];
-    std::snprintf(label, sizeof(label), "%g", std::pow(10.0, d));
-    text(px(std::pow(10.0, d)), kTop + plotH + 18, label, 14, algo::TextAlignX::Center,
-         algo::TextAlignY::Center);
   }
-  for (int d = y0; d <= y1; ++d) {
-    for (int m = 1; m <= (d < y1 ? 9 : 1); ++m) {
-      const int y = py(m * std::pow(10.0, d));
-      algo::render_line(image, kLeft, y, kLeft + plotW, y, m == 1 ? grid : white);
-      if (m > 1) algo::render_line(image, kLeft, y, kLeft + 4, y, black);
-    }
-    char label[32];
-    std::snprintf(label, sizeof(label), "%g", std::pow(10.0, d));
-    text(kLeft - 8, py(std::pow(10.0, d)), label, 14, algo::TextAlignX::Right,
-         algo::TextAlignY::Center);
-  }
-  algo::render_box(image, kLeft, kTop, kLeft + plotW, kTop + plotH, black);
-  text(kLeft + plotW / 2, kHeight - 18, "GPU time per frame (ms, median)", 16,
-       algo::TextAlignX::Center, algo::TextAlignY::Center);
-  text(12, kTop - 20, "relative RMSE vs reference (seed 002: after the best affine fit)", 16,
-       algo::TextAlignX::Left, algo::TextAlignY::Center);
-  text(kWidth / 2, 22, title, 18, algo::TextAlignX::Center, algo::TextAlignY::Center);
-
-  for (size_t s = 0; s < order.size(); ++s) {
-    const float* colour = kPalette[s % (sizeof(kPalette) / sizeof(kPalette[0]))];
-    std::vector<Point>& points = series[order[s]];
-    std::sort(points.begin(), points.end(),
-              [](const Point& a, const Point& b) { return a.ms < b.ms; });
-    for (size_t i = 0; i < points.size(); ++i) {
-      const int x = px(points[i].ms), y = py(points[i].error);
-      if (i > 0) {
-        algo::render_line(image, px(points[i - 1].ms), py(points[i - 1].error), x, y, {colour, 3},
-                          true);
-      }
-      algo::render_box(image, x - 3, y - 3, x + 3, y + 3, {colour, 3}, true);
-      // The setting's first number ("16" of "16 samples", "800" of "tau 800") by its point.
-      const std::string& setting = points[i].setting;
-      const size_t start = setting.find_first_of("0123456789");
-      if (start != std::string::npos) {
-        text(x + 6, y - 6, setting.substr(start, setting.find(' ', start) - start), 11,
-             algo::TextAlignX::Left, algo::TextAlignY::Bottom);
-      }
-    }
-    const int ly = kTop + 12 + int(s) * 24;
-    algo::render_box(image, kLeft + plotW + 20, ly - 5, kLeft + plotW + 32, ly + 5, {colour, 3},
-                     true);
-    text(kLeft + plotW + 40, ly, order[s], 14, algo::TextAlignX::Left, algo::TextAlignY::Center);
-  }
-
+  if (drawnBy != "gnuplot") image.copy(BuiltInDrawing(layout).image());
+  if (used) *used = drawnBy;
   return writeThroughTemporary(
       path,
       [&](const std::string& temporary, std::string& why) {

@@ -1,6 +1,7 @@
 #pragma once
-// The report's plot: error against GPU time, both axes logarithmic, one coloured poly-line per
-// method (its settings in order of cost), written as PNG through OpenImageIO.
+// The report's plot: error against GPU time, both axes logarithmic, one panel per effect with
+// its error definition on the y axis, one poly-line per method (its settings in order of cost)
+// and the panel's Pareto front; written as PNG through OpenImageIO.
 #include <string>
 #include <vector>
 
@@ -8,10 +9,15 @@
 
 namespace ocean::report {
 
-// Rows with a positive time and a positive finite plotted error become points; rows of the same
-// method form one series. Labels need a TrueType font (DejaVu Sans); without one the plot is
-// drawn unlabelled rather than not at all.
+enum class PlotBackend {
+  Auto,     // gnuplot when it is on PATH (and draws), else the built-in drawing
+  BuiltIn,  // lines and text drawn by OpenImageIO; labels need DejaVu Sans (else unlabelled)
+};
+
+// With gnuplot, its script is kept as `path` with the extension .gp. `used` (optional) says
+// which drawing was written: "gnuplot" or "built-in".
 bool writeErrorPlot(const std::string& path, const std::string& title, const std::vector<Row>& rows,
-                    std::string& error);
+                    std::string& error, PlotBackend backend = PlotBackend::Auto,
+                    std::string* used = nullptr);
 
 }  // namespace ocean::report

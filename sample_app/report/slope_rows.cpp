@@ -207,6 +207,7 @@ bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame, const SlopeSettin
       row.medianMs = c.physical.run.medianMs;
       row.floorMs = c.physical.run.floorMs;
       row.relativeRmse = c.physical.stats.relativeRmse;
+      row.affineRmse = c.physical.stats.affineRmse;  // the plot's slope panel compares on it
       row.correlation = c.physical.stats.correlation;
       char text[160];
       std::snprintf(text, sizeof(text),

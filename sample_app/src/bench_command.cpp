@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <glcontext/context.h>
+#include <nlohmann/json.hpp>
 
 #include "camera.h"
 #include "commands.h"
@@ -30,15 +31,6 @@ namespace ocean {
 namespace {
 
 constexpr int kWarmupFrames = 8;
-
-std::string jsonEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out;
-}
 
 // Renders warm-up + `frames` frames with time running, then a few more so that the measured
 // frames' queries resolve (the plugin's ring never stalls).
@@ -184,10 +176,10 @@ int runBench(const Options& options) {
     }
   }
 
-  std::ostringstream json;
-  json << "{\"device\": \"" << jsonEscape(context->renderer()) << "\", \"width\": " << options.width
-       << ", \"height\": " << options.height << ", \"preset\": \"" << options.preset
-       << "\", \"frames\": " << options.frames << ", \"passes\": [";
+  // nlohmann escapes the strings (a driver's renderer name may hold quotes or control bytes).
+  nlohmann::json json = {{"device", context->renderer()}, {"width", options.width},
+                         {"height", options.height},      {"preset", options.preset},
+                         {"frames", options.frames},      {"passes", nlohmann::json::array()}};
   std::printf("device: %s\n%dx%d, preset %s, %d frames (median after %d warm-up)\n\n",
               context->renderer().c_str(), options.width, options.height, options.preset.c_str(),
               options.frames, kWarmupFrames);
@@ -197,10 +189,9 @@ int runBench(const Options& options) {
     const double ratio = row.floorMs > 0.0 ? row.medianMs / row.floorMs : 0.0;
     std::printf("%-28s %12.3f %12.2f%s\n", row.name.c_str(), row.medianMs, ratio,
                 row.skipped ? "  (skipped)" : "");
-    json << (i ? ", " : "") << "{\"name\": \"" << row.name << "\", \"median_ms\": " << row.medianMs
-         << ", \"floor_ratio\": " << ratio << "}";
+    json["passes"].push_back(
+        {{"name", row.name}, {"median_ms", row.medianMs}, {"floor_ratio", ratio}});
   }
-  json << "]}\n";
 
   std::printf("\nwater spectrum update (GPU time per frame, memory held):\n");
   std::ostringstream waterTable;
@@ -211,7 +202,7 @@ int runBench(const Options& options) {
 
   if (!options.json.empty()) {
     std::ofstream file(options.json);
-    file << json.str();
+    file << json.dump(2) << '\n';
     if (!file) return commandFailed("cannot write '" + options.json + "'");
   }
   return 0;

@@ -1,16 +1,13 @@
 #include "headless_session.h"
 
 #include "scene_setup.h"
+#include "view_flags.h"
 
 namespace ocean {
 
 bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor,
                          HeadlessSession& session, std::string& error) {
-  std::string known;
-  if (!findPreset(options.preset, session.preset, known)) {
-    error = "unknown preset '" + options.preset + "' (known: " + known + ")";
-    return false;
-  }
+  if (!resolveView(options, session.preset, error)) return false;
   ocean_scene::Model& scene = session.scene;
   if (!buildScene(options.models, scene, error)) return false;
   session.context = glcontext::HeadlessContext::create(debug, error);

@@ -5,16 +5,21 @@
 #include "options.h"
 
 int main(int argc, char** argv) {
-  ocean::Options options;
-  std::string error;
-  if (!ocean::parseOptions(argc, argv, options, error)) {
-    std::fprintf(stderr, "ocean_sample: %s\n", error.c_str());
-    return 2;
+  const ocean::ParsedCommandLine parsed = ocean::parseCommandLine(argc, argv);
+  switch (parsed.outcome) {
+    case ocean::ParsedCommandLine::Outcome::Error:
+      std::fprintf(stderr, "ocean_sample: %s\n", parsed.text.c_str());
+      return 2;
+    case ocean::ParsedCommandLine::Outcome::Help:
+      std::fputs(parsed.text.c_str(), stdout);
+      return 0;
+    case ocean::ParsedCommandLine::Outcome::Run:
+      break;
   }
+  const ocean::Options& options = parsed.options;
   switch (options.command) {
     case ocean::Command::Help:
-      std::fputs(ocean::usage().c_str(), stdout);
-      return 0;
+      return 2;  // not produced by the parser: help is an outcome above
     case ocean::Command::Render:
       return ocean::runRender(options);
     case ocean::Command::View:

@@ -1,8 +1,11 @@
 #pragma once
 // Command-line options of ocean_sample. Parsing validates everything it can before any GL
 // work starts, so bad input fails fast with one line and leaves no output behind.
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 namespace ocean {
 
@@ -15,23 +18,33 @@ struct Options {
   double timeSeconds = 0.0;
   std::vector<std::string> models;  // extra .glb files placed in the scene
   std::string out = "ocean.png";
-  int frames = 60;             // bench: measured frames after warm-up
+  // bench: measured frames after warm-up; render: frames of the image sequence (1: one image)
+  int frames = 60;
+  double fps = 30.0;           // render: frames per second of the sequence's time
+  bool freezeTime = false;     // render --frames: time stays at --time (only the camera moves)
   std::string json;            // bench: JSON output path
   std::string only;            // bench: run only the variant rows whose name starts with this
   bool caustics = true;        // the plugin's seabed caustics
   bool godRays = true;         // the plugin's underwater god rays
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
   double tau = -1.0;           // caustics tightening; < 0 keeps the plugin's default
-  // Caustics model: false = seed 002 (the plugin's default), true = the wavefront area-ratio
-  // irradiance (seed 004, Feature::PhysicalCaustics), with this grid resolution.
+  // Caustics model: false = ray deviation (the plugin's default), true = the wavefront
+  // area-ratio irradiance (Feature::PhysicalCaustics), with this grid resolution.
   bool physicalCaustics = false;
   int causticsGrid = 256;
-  // Seed 002's world-axis tri-planar lookup on steep surfaces (Feature::TriplanarWalls).
+  // World-axis tri-planar lookup on steep surfaces (Feature::TriplanarWalls).
   bool triplanarWalls = false;
   // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
   int godRayResolution = 0;
   int waterResolution = 256;
   bool quick = false;  // report: a smoke run in a few minutes
+  // Camera and sun over the preset's (each unset keeps the preset's value); see view_flags.h.
+  std::optional<glm::dvec3> cameraPosition, cameraLookAt;  // metres, y up, water at y = 0
+  std::optional<double> fovDegrees;                        // vertical field of view
+  std::optional<double> sunAzimuthDegrees, sunElevationDegrees;
+  // render --frames: the camera's slow path, metres per second (with a look-at it keeps turning
+  // to the target)
+  std::optional<glm::dvec3> cameraVelocity;
   // reference: the traced frame (see frame_caustics_reference.h for each value's meaning)
   unsigned long long seed = 1;
   double noise = 0.05;            // target of the lit pixels' 99th-percentile noise
@@ -45,7 +58,14 @@ struct Options {
 
 inline constexpr int kMaxImageSide = 16384;
 
-bool parseOptions(int argc, const char* const* argv, Options& options, std::string& error);
-std::string usage();
+// What main does with the command line: run options.command, print `text` (the help asked
+// for) and exit 0, or print `text` (one line) and exit 2.
+struct ParsedCommandLine {
+  enum class Outcome { Run, Help, Error } outcome = Outcome::Error;
+  Options options;
+  std::string text;
+};
+
+ParsedCommandLine parseCommandLine(int argc, const char* const* argv);
 
 }  // namespace ocean

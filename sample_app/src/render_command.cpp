@@ -1,38 +1,86 @@
-// ocean_sample render: one headless frame to an image.
+// ocean_sample render: one headless frame to an image, or with --frames N an image sequence
+// with time running (and the camera on its slow path), each frame's change from the one before
+// on stdout.
+#include <algorithm>
 #include <cstdio>
 
 #include <glcontext/context.h>
 
 #include "camera.h"
 #include "commands.h"
+#include "frame_sequence.h"
 #include "headless_session.h"
 #include "image_output.h"
 #include "plugin_setup.h"
 #include "renderer.h"
 
 namespace ocean {
+namespace {
+
+// Renders the frame and fails on any GL error the driver logged.
+bool renderChecked(HeadlessSession& session, const FrameInput& input, std::string& error) {
+  if (!session.renderer->render(input, error)) return false;
+  for (const auto& message : session.context->debugLog().take()) {
+    if (message.type == GL_DEBUG_TYPE_ERROR) {
+      error = glcontext::debugMessageString(message);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 int runRender(const Options& options) {
   std::string error;
-  // Checked before any work so a bad path fails fast and leaves nothing behind.
-  if (!checkOutputPath(options.out, error)) return commandFailed(error);
+  const bool sequence = options.frames > 1;
+  // Checked before any work so a bad path fails fast and leaves nothing behind (every frame of
+  // a sequence goes to the same directory with the same extension).
+  const std::string firstName =
+      sequence ? sequenceFrameName(options.out, 0, options.frames) : options.out;
+  if (!checkOutputPath(firstName, error)) return commandFailed(error);
   HeadlessSession session;
   if (!openHeadlessSession(options, /*debug=*/true, /*benchmarkFloor=*/false, session, error)) {
     return commandFailed(error);
   }
-  const Preset& preset = session.preset;
-  Renderer& renderer = *session.renderer;
-  glcontext::HeadlessContext& context = *session.context;
-
-  FrameInput input{preset.camera, preset.sun, options.timeSeconds};
-  if (!renderer.render(input, error)) return commandFailed(error);
-  for (const auto& message : context.debugLog().take()) {
-    if (message.type == GL_DEBUG_TYPE_ERROR)
-      return commandFailed(glcontext::debugMessageString(message));
+  // The whole camera path is checked before the first frame is written.
+  std::vector<Camera> cameras(size_t(options.frames));
+  for (int frame = 0; frame < options.frames; ++frame) {
+    if (!cameraAt(options, session.preset.camera, frame / options.fps, cameras[size_t(frame)]))
+      return commandFailed(
+          "the camera path leaves 1e7 m from the origin or passes straight above or below "
+          "--camera-look-at at " +
+          std::to_string(frame / options.fps) + " s");
   }
-  const std::vector<float> radiance = renderer.readRadiance();
-  if (!writeImage(options.out, options.width, options.height, renderer.readColor(), &radiance,
-                  error)) {
-    return commandFailed(error);
+  Renderer& renderer = *session.renderer;
+  std::vector<float> previous;
+  double changeSum = 0.0, changeMax = 0.0;
+  for (int frame = 0; frame < options.frames; ++frame) {
+    const double seconds = frame / options.fps;
+    const FrameInput input{cameras[size_t(frame)], session.preset.sun,
+                           options.timeSeconds + (options.freezeTime ? 0.0 : seconds)};
+    if (!renderChecked(session, input, error)) return commandFailed(error);
+    std::vector<float> radiance = renderer.readRadiance();
+    const std::string name =
+        sequence ? sequenceFrameName(options.out, frame, options.frames) : options.out;
+    if (!writeImage(name, options.width, options.height, renderer.readColor(), &radiance, error))
+      return commandFailed(error);
+    if (!previous.empty()) {
+      const double change = relativeFrameChange(previous, radiance);
+      changeSum += change;
+      changeMax = std::max(changeMax, change);
+      std::printf("frame %d: %s, change from the previous frame %.5f\n", frame, name.c_str(),
+                  change);
+    } else if (sequence) {
+      std::printf("frame 0: %s\n", name.c_str());
+    }
+    previous = std::move(radiance);
+  }
+  if (sequence) {
+    std::printf(
+        "frame-to-frame change: mean %.5f, max %.5f (mean |luminance difference| / mean "
+        "luminance) over %d frames at %g fps\n",
+        changeSum / (options.frames - 1), changeMax, options.frames, options.fps);
   }
   return 0;
 }

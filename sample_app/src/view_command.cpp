@@ -12,6 +12,7 @@
 #include "plugin_setup.h"
 #include "renderer.h"
 #include "scene_setup.h"
+#include "view_flags.h"
 
 namespace ocean {
 namespace {
@@ -70,11 +71,7 @@ void moveCamera(GLFWwindow* window, ViewState& state, double dt) {
 int runView(const Options& options) {
   std::string error, known;
   ViewState state;
-  if (!findPreset(options.preset, state.preset, known)) {
-    std::fprintf(stderr, "ocean_sample: unknown preset '%s' (known: %s)\n", options.preset.c_str(),
-                 known.c_str());
-    return 1;
-  }
+  if (!resolveView(options, state.preset, error)) return commandFailed(error);
   ocean_scene::Model scene;
   if (!buildScene(options.models, scene, error)) {
     return commandFailed(error);

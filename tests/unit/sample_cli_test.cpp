@@ -14,6 +14,8 @@
 #include <sstream>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "image_output.h"
 
 #include "gltf_test_files.h"
@@ -67,9 +69,10 @@ class SampleCli : public ::testing::Test {
                       const std::string& command = "render",
                       const std::string& outName = "out.png") {
     const fs::path out = dir_ / outName;
-    const RunResult result = runSample(command + " --width 64 --height 36 --water-resolution 16 " +
-                                           arguments + " --out " + out.string(),
-                                       dir_);
+    // compare renders nothing, so it offers no scene options (issue 19: each command its own).
+    const std::string size =
+        command == "compare" ? " " : " --width 64 --height 36 --water-resolution 16 ";
+    const RunResult result = runSample(command + size + arguments + " --out " + out.string(), dir_);
     EXPECT_FALSE(result.signalled) << arguments;
     EXPECT_NE(result.exitCode, 0) << arguments;
     EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1)
@@ -83,6 +86,10 @@ class SampleCli : public ::testing::Test {
       }
     }
   }
+
+  // The mean frame-to-frame change of a short sequence at 30 and at 480 fps: a frame that
+  // follows time and camera smoothly changes about 16 times less per 16 times shorter step.
+  void expectChangeFollowsTheStep(const std::string& arguments);
 
   fs::path writeFile(const std::string& name, const std::string& bytes) {
     const fs::path path = dir_ / name;
@@ -233,6 +240,160 @@ TEST_F(SampleCli, OutputDirectoryThatRefusesFilesFailsUpFront) {
       << "one line: " << result.stderrText;
   EXPECT_EQ(result.stderrText.find("partial"), std::string::npos)
       << "names the internal temporary: " << result.stderrText;
+}
+
+// Issue 19: the camera and sun flags are checked up front like every other value.
+TEST_F(SampleCli, CameraAndSunValuesAreChecked) {
+  expectRejected("--fov 0", "--fov must be a number of degrees in [5, 150]");
+  expectRejected("--fov inf", "--fov");
+  expectRejected("--sun-elevation -5", "--sun-elevation must be a number of degrees in [1, 90]");
+  expectRejected("--sun-azimuth nan", "--sun-azimuth");
+  expectRejected("--camera-position 1,2", "--camera-position must be x,y,z");
+  expectRejected("--camera-position 1,nan,3", "--camera-position");
+  expectRejected("--camera-look-at 1,2,3,4", "--camera-look-at must be x,y,z");
+  expectRejected("--camera-position 0,-3,10 --camera-look-at 0,-3,10", "--camera-look-at");
+  expectRejected("--camera-position 0,-3,10 --camera-look-at 0,-9,10", "straight above or below");
+  // A camera path checked whole before the first frame: no frame of it is left behind.
+  expectRejected("--frames 3 --fps 1 --camera-velocity 0,0,9e6", "camera path leaves 1e7 m",
+                 "render", "seq.png");
+  EXPECT_FALSE(fs::exists(dir_ / "seq_0000.png"));
+}
+
+// Parse errors exit 2 (as before CLI11), failures of the command itself 1; one line each.
+TEST_F(SampleCli, ExitCodesAndOneLineErrors) {
+  RunResult result = runSample("render --width", dir_);
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(result.stderrText, "ocean_sample: option --width needs a value\n");
+  result = runSample("compare --width 64", dir_);
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.stderrText.find("option --width is not one of compare's"), std::string::npos)
+      << result.stderrText;
+  result = runSample("report --width 64", dir_);
+  EXPECT_EQ(result.exitCode, 2) << "report sizes its own frames; --width would be ignored";
+  result = runSample("render stray", dir_);
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.stderrText.find("unexpected argument 'stray'"), std::string::npos)
+      << result.stderrText;
+  result = runSample("paint", dir_);
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(result.stderrText, "ocean_sample: unknown command 'paint' (try --help)\n");
+  result = runSample("", dir_);
+  EXPECT_EQ(result.exitCode, 2);
+  result = runSample(
+      "render --width 64 --height 36 --preset lagoon --out " + (dir_ / "l.png").string(), dir_);
+  EXPECT_EQ(result.exitCode, 1) << "a preset is checked by the command, which fails with 1";
+  for (const RunResult& r : {runSample("render --width", dir_), runSample("paint", dir_)}) {
+    EXPECT_EQ(std::count(r.stderrText.begin(), r.stderrText.end(), '\n'), 1) << r.stderrText;
+  }
+}
+
+// --help of each command lists that command's options and no other's; the top-level help
+// lists the commands.
+TEST_F(SampleCli, HelpPerCommand) {
+  RunResult result = runSample("--help", dir_);
+  EXPECT_EQ(result.exitCode, 0);
+  for (const char* command : {"render", "view", "bench", "report", "reference", "compare"})
+    EXPECT_NE(result.stdoutText.find(command), std::string::npos) << command;
+  result = runSample("render --help", dir_);
+  EXPECT_EQ(result.exitCode, 0);
+  for (const char* flag : {"--camera-position", "--camera-look-at", "--fov", "--sun-azimuth",
+                           "--sun-elevation", "--frames", "--fps", "--caustics-model"})
+    EXPECT_NE(result.stdoutText.find(flag), std::string::npos) << flag;
+  EXPECT_EQ(result.stdoutText.find("--plugin"), std::string::npos);
+  result = runSample("compare --help", dir_);
+  EXPECT_EQ(result.exitCode, 0);
+  EXPECT_NE(result.stdoutText.find("--reference"), std::string::npos);
+  EXPECT_EQ(result.stdoutText.find("--width"), std::string::npos);
+  result = runSample("bench -h", dir_);
+  EXPECT_NE(result.stdoutText.find("--json"), std::string::npos);
+  EXPECT_NE(result.stdoutText.find("--sun-elevation"), std::string::npos);
+  EXPECT_TRUE(result.stderrText.empty()) << result.stderrText;
+}
+
+// Bench's JSON is written by nlohmann-json: it parses, and carries the run's size and one
+// entry per timed pass with a name and a non-negative median.
+TEST_F(SampleCli, BenchJsonParses) {
+  const fs::path json = dir_ / "bench.json";
+  const RunResult result = runSample(
+      "bench --width 32 --height 18 --water-resolution 16 --frames 1 --only none --json " +
+          json.string(),
+      dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  std::ifstream file(json);
+  const nlohmann::json parsed = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/false);
+  ASSERT_FALSE(parsed.is_discarded()) << "not JSON";
+  EXPECT_EQ(parsed.value("width", 0), 32);
+  EXPECT_EQ(parsed.value("height", 0), 18);
+  EXPECT_EQ(parsed.value("preset", ""), "seabed");
+  EXPECT_TRUE(parsed["device"].is_string());
+  ASSERT_TRUE(parsed["passes"].is_array());
+  bool caustics = false;
+  for (const nlohmann::json& pass : parsed["passes"]) {
+    ASSERT_TRUE(pass["name"].is_string());
+    ASSERT_TRUE(pass["median_ms"].is_number());
+    EXPECT_GE(pass["median_ms"].get<double>(), 0.0);
+    caustics = caustics || pass["name"] == "caustics";
+  }
+  EXPECT_TRUE(caustics) << parsed.dump();
+}
+
+// The mean frame-to-frame change `render --frames` prints.
+double meanFrameChange(const std::string& stdoutText) {
+  const std::string key = "frame-to-frame change: mean ";
+  const size_t at = stdoutText.find(key);
+  return at == std::string::npos ? -1.0 : std::atof(stdoutText.c_str() + at + key.size());
+}
+
+constexpr const char* kSequence =
+    "render --width 64 --height 36 --water-resolution 16 --frames 3 --time 12.5";
+
+void SampleCli::expectChangeFollowsTheStep(const std::string& arguments) {
+  double change[2] = {};
+  for (int i = 0; i < 2; ++i) {
+    const RunResult result =
+        runSample(std::string(kSequence) + " " + arguments + " --fps " + (i ? "480" : "30") +
+                      " --out " + (dir_ / (i ? "fast.png" : "slow.png")).string(),
+                  dir_);
+    ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    change[i] = meanFrameChange(result.stdoutText);
+  }
+  EXPECT_GT(change[0], 0.0) << arguments;
+  EXPECT_LT(change[1], 0.25 * change[0])
+      << arguments << ": 30 fps " << change[0] << ", 480 fps " << change[1];
+}
+
+// Issue 19, item 3: --frames N writes N numbered images and nothing under the plain name.
+TEST_F(SampleCli, RenderFramesWritesANumberedSequence) {
+  const RunResult result =
+      runSample("render --width 48 --height 27 --water-resolution 16 --frames 3 --fps 30 --out " +
+                    (dir_ / "seq.exr").string(),
+                dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  for (const char* name : {"seq_0000.exr", "seq_0001.exr", "seq_0002.exr"})
+    EXPECT_TRUE(fs::exists(dir_ / name)) << name;
+  EXPECT_FALSE(fs::exists(dir_ / "seq.exr"));
+  EXPECT_FALSE(fs::exists(dir_ / "seq_0003.exr"));
+  EXPECT_GT(meanFrameChange(result.stdoutText), 0.0) << "time runs: " << result.stdoutText;
+}
+
+// Flicker: the image follows time smoothly, so 16 times shorter steps change each frame far
+// less (a smooth signal: about 16 times less; per-frame noise or popping would not shrink).
+// 0.25 leaves room for the parts of the pattern that move faster than linearly over a step.
+// The camera moves slowly too, as in a game, so a grid that moved with it would show here.
+TEST_F(SampleCli, FramesDoNotFlicker) {
+  expectChangeFollowsTheStep("--camera-velocity 0.2,0,-0.1");
+}
+
+// With time frozen the frame depends on the camera alone: a still camera gives identical
+// frames (change exactly 0), and a slowly moving one changes each frame in proportion to its
+// step, as above (the god-ray grid and the water lookups are snapped to the world, so a moving
+// camera does not make them swim).
+TEST_F(SampleCli, FramesWithTimeFrozenChangeOnlyWithTheCamera) {
+  const RunResult still =
+      runSample(std::string(kSequence) + " --freeze-time --out " + (dir_ / "s.png").string(), dir_);
+  ASSERT_EQ(still.exitCode, 0) << still.stderrText;
+  EXPECT_EQ(meanFrameChange(still.stdoutText), 0.0) << still.stdoutText;
+  expectChangeFollowsTheStep("--freeze-time --camera-velocity 0.2,0,-0.1");
 }
 
 TEST_F(SampleCli, RenderWritesAReadablePng) {

@@ -1,0 +1,317 @@
+// ocean_sample's command line on CLI11: which command offers which option, the help of each,
+// and the one-line errors. What each option means and how its value is checked is in
+// option_values.cpp; CLI11 only splits the command line, so every refusal reads the same
+// whichever step finds it.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <map>
+
+#include "option_values.h"
+#include "options.h"
+
+namespace ocean {
+namespace {
+
+// The options of the scene a frame is rendered from (render, view, bench, report, reference).
+constexpr std::string_view kSceneOptions[] = {"--preset",
+                                              "--width",
+                                              "--height",
+                                              "--time",
+                                              "--model",
+                                              "--water-resolution",
+                                              "--no-caustics",
+                                              "--no-god-rays",
+                                              "--no-object-caustics",
+                                              "--tau",
+                                              "--caustics-model",
+                                              "--caustics-grid",
+                                              "--god-rays-resolution",
+                                              "--triplanar-walls",
+                                              "--camera-position",
+                                              "--camera-look-at",
+                                              "--fov",
+                                              "--sun-azimuth",
+                                              "--sun-elevation"};
+
+constexpr std::string_view kSceneFooter = R"(
+presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
+the sun), above (above the water looking down), waterline (camera 3 cm above the water).
+--camera-position and --camera-look-at replace the preset's camera (either alone keeps the
+other from the preset); the look-at point is centred in the image and must not be straight
+above or below the camera. --sun-azimuth/--sun-elevation replace the preset's sun.
+
+caustics models: ray-deviation (default; exp(-tau a^2), a the refracted ray's deviation from
+flat water, one lookup per cascade and pixel; "seed002" is its former name) or physical (true
+irradiance from the wavefront area ratio; --caustics-grid 64..1024, default 256). Every
+surface looks the water up where its light entered, along the refracted sun; with
+--triplanar-walls steep surfaces blend in world-axis projections instead.
+
+--model FILE[@x,y,z][:fit=M|none]: a glTF (.glb/.gltf) added as glass or metal casters. By
+default its bounding box is scaled to 1.5 m and set on the sand in a row before the camera;
+@x,y,z puts the box's centre at x, z with its bottom y metres above the sand; :fit=M scales its
+largest side to M metres (0.01..100), :fit=none keeps the file's size. Glass is a material
+with KHR_materials_transmission and metallic < 0.5 (transmission x (1 - metallic) weighs its
+caustic, the base colour tints it, KHR_materials_volume absorbs along the path, thickness 0 is
+a thin wall that does not focus, roughness widens it); metal (metallic >= 0.5) and ior 0 are
+mirrors. Draco and meshopt compression are decoded; an embedded base-colour texture is averaged
+into the colour, other textures are not used (a warning names them).)";
+
+struct CommandSpec {
+  std::string_view name;
+  Command command;
+  std::string_view summary;               // one line, in the list of commands
+  std::string_view description;           // the command's own --help, wrapped
+  std::vector<std::string_view> options;  // beside the scene options where `scene` is set
+  bool scene;
+  std::string_view out;  // --out's default
+  int frames;            // --frames' default
+  std::string_view footer;
+};
+
+const std::vector<CommandSpec>& commands() {
+  static const std::vector<CommandSpec> all = {
+      {"render",
+       Command::Render,
+       "one frame (or a sequence) headless to PNG/EXR",
+       "Renders one frame headless (EGL) and writes it through OpenImageIO: .png (tone-mapped) "
+       "or .exr (linear radiance). With --frames N > 1: N frames with time running at --fps, "
+       "written as OUT with the frame number before the extension (ocean_0000.png, ...), the "
+       "camera moving at --camera-velocity (with --freeze-time only the camera moves), and each "
+       "frame's change from the one before "
+       "printed.",
+       {"--out", "--frames", "--fps", "--camera-velocity", "--freeze-time"},
+       true,
+       "ocean.png",
+       1,
+       kSceneFooter},
+      {"view",
+       Command::View,
+       "the scene in a window",
+       "Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, G god rays, T pauses "
+       "time, 1-4 switch presets, Esc quits.",
+       {},
+       true,
+       "",
+       60,
+       kSceneFooter},
+      {"bench",
+       Command::Bench,
+       "per-pass GPU time and ratio to the floor pass",
+       "Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a "
+       "floor pass that reads the same inputs and writes the same outputs with no math; also "
+       "each variant (caustics_all_cascades, caustics_triplanar_walls, god_rays[_half|_quarter]"
+       "_<n>, caustics_physical_<n>, object_caustics_<map>_<grid>_<iterations>).",
+       {"--frames", "--json", "--only"},
+       true,
+       "",
+       60,
+       kSceneFooter},
+      {"report",
+       Command::Report,
+       "error against GPU time of every method and setting",
+       "Error against run time of every method and quality setting: each pass timed (median, "
+       "with its floor) and compared with a CPU reference of the same frame. Writes "
+       "DIR/error_vs_time.csv, .md and .png (default DIR: report). The size is the report's "
+       "own (320x180, --quick 160x90).",
+       {"--out", "--quick"},
+       true,
+       "report",
+       60,
+       kSceneFooter},
+      {"reference",
+       Command::Reference,
+       "the frame with its caustic light traced (EXR)",
+       "Renders the same frame as render with the plugin's seabed caustic light replaced by "
+       "traced caustic light in the same units (sun photons through the frame's own water "
+       "texture against the scene's triangles, Embree; an Epanechnikov density estimate on a "
+       "disc of max(K x the pixel's footprint, M metres)). Batches are added, at least 8, until "
+       "the 99th percentile of the lit pixels' noise is below N, at most B. Deterministic for a "
+       "seed on any thread count. Writes linear radiance to OUT.exr with channels caustic.E, "
+       "caustic.noise and caustic.lit.",
+       {"--out", "--seed", "--noise", "--kernel", "--min-kernel", "--max-batches", "--threads"},
+       true,
+       "reference.exr",
+       60,
+       kSceneFooter},
+      {"compare",
+       Command::Compare,
+       "plugin frame against traced frame: error, correlation, side by side",
+       "P: render --out P.exr, R: reference --out R.exr, B: render --no-caustics --out B.exr "
+       "(same preset, size and time). Over R's lit underwater pixels it prints the relative "
+       "RMSE and Pearson correlation of the added light (P - B against R - B) and writes OUT "
+       "(default compare.png): the three frames above, the two added lights and their "
+       "difference below (red: plugin brighter, blue: darker).",
+       {"--plugin", "--reference", "--base", "--out"},
+       false,
+       "compare.png",
+       60,
+       ""},
+  };
+  return all;
+}
+
+// The options a command offers: its own, then the scene's, each once.
+std::vector<std::string_view> offered(const CommandSpec& spec) {
+  std::vector<std::string_view> flags = spec.options;
+  if (spec.scene) {
+    for (std::string_view flag : kSceneOptions) {
+      // report sizes its frames itself: a --width there would be silently ignored.
+      if (spec.command == Command::Report && (flag == "--width" || flag == "--height")) continue;
+      if (std::find(flags.begin(), flags.end(), flag) == flags.end()) flags.push_back(flag);
+    }
+  }
+  return flags;
+}
+
+// `text` broken into lines of at most 94 characters at spaces.
+std::string wrapped(std::string_view text) {
+  std::string out, line;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > 94) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + std::string(word);
+    start = end + 1;
+  }
+  return out + line + "\n";
+}
+
+// What CLI11 collected for one command, before any value is checked.
+struct Collected {
+  std::map<std::string_view, std::vector<std::string>> values;
+  std::map<std::string_view, bool> flags;
+};
+
+void addOptions(CLI::App& app, const CommandSpec& spec, Collected& collected) {
+  for (std::string_view flag : offered(spec)) {
+    if (const ValueOption* option = findValueOption(flag)) {
+      app.add_option(std::string(flag), collected.values[flag], std::string(option->help))
+          ->type_name(std::string(option->typeName))
+          ->expected(1)
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    } else if (const FlagOption* switchOption = findFlagOption(flag)) {
+      app.add_flag(std::string(flag), collected.flags[flag], std::string(switchOption->help));
+    }
+  }
+  app.footer(wrapped(spec.description) + "\n" + std::string(spec.footer));
+  // Unknown arguments are named by parseCommandLine in our own words.
+  app.allow_extras();
+}
+
+std::string oneLine(std::string text) {
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+ParsedCommandLine failure(std::string message) {
+  ParsedCommandLine parsed;
+  parsed.outcome = ParsedCommandLine::Outcome::Error;
+  parsed.text = oneLine(std::move(message));
+  return parsed;
+}
+
+}  // namespace
+
+ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
+  if (argc < 2) return failure("no command given (try --help)");
+  CLI::App app("ocean_sample: the ocean scene that hosts the postfx underwater-lighting plugin.",
+               "ocean_sample");
+  app.require_subcommand(0, 1);
+  app.allow_extras();  // options before the command: named below in our own words
+  std::map<std::string_view, Collected> collected;
+  for (const CommandSpec& spec : commands()) {
+    CLI::App* sub = app.add_subcommand(std::string(spec.name), std::string(spec.summary));
+    addOptions(*sub, spec, collected[spec.name]);
+  }
+  // After the commands, which would otherwise inherit it.
+  app.footer("Each command has its own help: ocean_sample COMMAND --help.");
+  const std::string_view first = argv[1];
+  if (first == "help") {
+    ParsedCommandLine parsed;
+    parsed.outcome = ParsedCommandLine::Outcome::Help;
+    parsed.text = app.help();
+    return parsed;
+  }
+  const bool known = std::any_of(commands().begin(), commands().end(),
+                                 [&](const CommandSpec& c) { return c.name == first; });
+  if (!first.starts_with("-") && !known)
+    return failure("unknown command '" + std::string(first) + "' (try --help)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    ParsedCommandLine parsed;
+    parsed.outcome = ParsedCommandLine::Outcome::Help;
+    const auto chosen = app.get_subcommands();
+    parsed.text = chosen.empty() ? app.help() : chosen.front()->help();
+    return parsed;
+  } catch (const CLI::ParseError& e) {
+    // "--width: 1 required W missing" is CLI11's way of saying the value is missing.
+    const std::string what = e.what();
+    const size_t colon = what.find(':');
+    if (e.get_name() == "ArgumentMismatch" && colon != std::string::npos)
+      return failure("option " + what.substr(0, colon) + " needs a value");
+    return failure(what + " (try --help)");
+  }
+  // Arguments before the command belong to no command.
+  const auto early = app.remaining();
+  if (!early.empty()) {
+    const std::string flag = early.front().substr(0, early.front().find('='));
+    return failure(findValueOption(flag) || findFlagOption(flag)
+                       ? "option " + flag + " goes after the command (try --help)"
+                       : "unknown option '" + flag + "' (try --help)");
+  }
+  const auto chosen = app.get_subcommands();
+  if (chosen.empty()) return failure("no command given (try --help)");
+  const CLI::App& sub = *chosen.front();
+  const CommandSpec& spec =
+      *std::find_if(commands().begin(), commands().end(),
+                    [&](const CommandSpec& c) { return c.name == sub.get_name(); });
+
+  ParsedCommandLine parsed;
+  Options& options = parsed.options;
+  options.command = spec.command;
+  if (!spec.out.empty()) options.out = std::string(spec.out);
+  options.frames = spec.frames;
+  const Collected& given = collected.at(spec.name);
+  // In the order of the table, so the first refusal is the same whatever order the user typed.
+  for (const ValueOption& option : valueOptions()) {
+    const auto found = given.values.find(option.flag);
+    if (found == given.values.end()) continue;
+    const std::vector<std::string>& texts = found->second;
+    if (texts.size() > 1 && !option.repeatable)
+      return failure("option " + std::string(option.flag) + " is given twice");
+    std::string error;
+    for (const std::string& text : texts) {
+      if (!option.apply(text, options, error)) return failure(error);
+    }
+  }
+  for (const FlagOption& option : flagOptions()) {
+    const auto found = given.flags.find(option.flag);
+    if (found != given.flags.end() && found->second) option.apply(options);
+  }
+  // After the values: in "--width --model x" the news is that --width got "--model".
+  const std::string help = " (try ocean_sample " + std::string(spec.name) + " --help)";
+  for (const std::string& extra : sub.remaining()) {
+    if (extra.starts_with("-")) {
+      const std::string flag = extra.substr(0, extra.find('='));
+      const bool elsewhere = findValueOption(flag) || findFlagOption(flag);
+      return failure((elsewhere
+                          ? "option " + flag + " is not one of " + std::string(spec.name) + "'s"
+                          : "unknown option '" + flag + "'") +
+                     help);
+    }
+    return failure("unexpected argument '" + extra + "'" + help);
+  }
+  parsed.outcome = ParsedCommandLine::Outcome::Run;
+  return parsed;
+}
+
+}  // namespace ocean

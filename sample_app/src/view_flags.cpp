@@ -1,0 +1,41 @@
+#include "view_flags.h"
+
+#include <cmath>
+
+namespace ocean {
+
+bool lookAlong(const glm::dvec3& direction, double& yaw, double& pitch) {
+  const double length = glm::length(direction);
+  if (!(length > 1e-6)) return false;
+  const glm::dvec3 d = direction / length;
+  // Camera::rotation() crosses the world up with the view direction: within a degree of
+  // vertical the image would spin with the last bits of x and z.
+  if (std::abs(d.y) > std::cos(glm::radians(1.0))) return false;
+  pitch = std::asin(d.y);
+  yaw = std::atan2(-d.x, -d.z);  // Camera::forward(): (-sin yaw cos pitch, ., -cos yaw cos pitch)
+  return true;
+}
+
+bool resolveView(const Options& options, Preset& preset, std::string& error) {
+  std::string known;
+  if (!findPreset(options.preset, preset, known)) {
+    error = "unknown preset '" + options.preset + "' (known: " + known + ")";
+    return false;
+  }
+  Camera& camera = preset.camera;
+  if (options.cameraPosition) camera.position = *options.cameraPosition;
+  if (options.cameraLookAt &&
+      !lookAlong(*options.cameraLookAt - camera.position, camera.yaw, camera.pitch)) {
+    error =
+        "--camera-look-at must differ from the camera position and not be straight above or "
+        "below it";
+    return false;
+  }
+  if (options.fovDegrees) camera.fovY = glm::radians(*options.fovDegrees);
+  if (options.sunAzimuthDegrees) preset.sun.azimuth = glm::radians(*options.sunAzimuthDegrees);
+  if (options.sunElevationDegrees)
+    preset.sun.elevation = glm::radians(*options.sunElevationDegrees);
+  return true;
+}
+
+}  // namespace ocean
