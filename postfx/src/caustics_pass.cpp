@@ -13,8 +13,10 @@ namespace postfx::detail {
 std::string shaderDefines(const CreateDesc& desc) {
   auto flag = [&desc](Feature f) { return hasFeature(desc.features, f) ? "1" : "0"; };
   std::string d;
-  d += "#define POSTFX_DEPTH_CONVENTION " + std::to_string(desc.depthConvention) + "\n";
-  d += "#define POSTFX_NORMAL_ENCODING " + std::to_string(desc.normalEncoding) + "\n";
+  d += "#define POSTFX_DEPTH_CONVENTION " + std::to_string(static_cast<int>(desc.depthConvention)) +
+       "\n";
+  d += "#define POSTFX_NORMAL_ENCODING " + std::to_string(static_cast<int>(desc.normalEncoding)) +
+       "\n";
   d += std::string("#define POSTFX_DISPERSION ") + flag(Feature::Dispersion) + "\n";
   d += std::string("#define POSTFX_SHADOW_MASK ") + flag(Feature::ShadowMask) + "\n";
   d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(Feature::RawCausticOutput) + "\n";
@@ -191,8 +193,9 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   }
   if (hasFeature(desc_.features, Feature::ShadowMask)) {
     glBindTextureUnit(kShadowUnit, frame.shadow.depth.texture);
-    glBindSampler(kShadowUnit, frame.shadow.depthConvention == 0 ? shadowReverseSampler_
-                                                                 : shadowForwardSampler_);
+    glBindSampler(kShadowUnit, frame.shadow.depthConvention == DepthConvention::ReverseZ
+                                   ? shadowReverseSampler_
+                                   : shadowForwardSampler_);
   }
   if (irradiance != 0) {
     glBindTextureUnit(kIrradianceUnit, irradiance);

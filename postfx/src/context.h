@@ -15,17 +15,12 @@
 namespace postfx {
 
 struct Context {
-  enum PassIndex { kCausticsPass = 0, kFloorPass = 1 };
-
   CreateDesc desc;
   detail::CausticsPass caustics;
   detail::GodRaysPass godRays;
   detail::GodRayGridPivot godRayPivot;
-  int godRaysPass = -1;  // timer index of "god_rays" (after the floor when there is one); -1: off
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
-  int irradiancePass = -1;  // timer index of "caustics_irradiance"; -1: no PhysicalCaustics
   detail::ObjectCausticsPass objectCaustics;
-  int objectCausticsPass = -1;  // timer index of "object_caustics"; -1: feature off
   detail::GpuTimers timers;
   std::string error;
 };

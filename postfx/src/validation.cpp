@@ -1,5 +1,8 @@
 #include "validation.h"
 
+#include "convention_checks.h"
+#include "gl_enum_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -36,10 +39,18 @@ bool inRange(const glm::vec3& v, double lo, double hi) {
   return inRange(v.x, lo, hi) && inRange(v.y, lo, hi) && inRange(v.z, lo, hi);
 }
 
-std::string formatName(GLenum format) {
+}  // namespace
+
+std::string number(double value) {
   std::ostringstream s;
-  s << "0x" << std::hex << format;
+  s << value;
   return s.str();
+}
+
+namespace {
+
+std::string formatName(GLenum format) {
+  return glEnumName(format);
 }
 
 struct TextureFacts {
@@ -103,7 +114,7 @@ constexpr std::initializer_list<GLenum> kDepthFormats = {
     GL_DEPTH_COMPONENT16,  GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
     GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
 
-std::initializer_list<GLenum> normalFormats(int encoding) {
+std::initializer_list<GLenum> normalFormats(NormalEncoding encoding) {
   static constexpr std::initializer_list<GLenum> octahedral = {
       GL_RG16_SNORM, GL_RG8_SNORM, GL_RG16F, GL_RG32F, GL_RGBA16_SNORM, GL_RGBA16F, GL_RGBA32F};
   static constexpr std::initializer_list<GLenum> xyz = {
@@ -111,7 +122,9 @@ std::initializer_list<GLenum> normalFormats(int encoding) {
       GL_RGB16_SNORM, GL_RGBA16_SNORM, GL_RGBA8_SNORM, GL_R11F_G11F_B10F};
   static constexpr std::initializer_list<GLenum> unorm = {GL_RGBA8, GL_RGB8, GL_RGB10_A2, GL_RGBA16,
                                                           GL_RGB16};
-  return encoding == 0 ? octahedral : (encoding == 1 ? xyz : unorm);
+  return encoding == NormalEncoding::Octahedral
+             ? octahedral
+             : (encoding == NormalEncoding::WorldXyz ? xyz : unorm);
 }
 
 Result checkDepthMode(const char* field, GLuint texture, std::string& error) {
@@ -196,14 +209,14 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }
-  if (desc.depthConvention < 0 || desc.depthConvention > 2) {
-    error =
-        "CreateDesc.depthConvention must be 0, 1 or 2, got " + std::to_string(desc.depthConvention);
+  if (!isDepthConvention(desc.depthConvention)) {
+    error = "CreateDesc.depthConvention " + std::to_string(static_cast<int>(desc.depthConvention)) +
+            " is not a DepthConvention";
     return Result::InvalidArgument;
   }
-  if (desc.normalEncoding < 0 || desc.normalEncoding > 2) {
-    error =
-        "CreateDesc.normalEncoding must be 0, 1 or 2, got " + std::to_string(desc.normalEncoding);
+  if (!isNormalEncoding(desc.normalEncoding)) {
+    error = "CreateDesc.normalEncoding " + std::to_string(static_cast<int>(desc.normalEncoding)) +
+            " is not a NormalEncoding";
     return Result::InvalidArgument;
   }
   if (desc.waterTexture != WaterTextureType::Array2D &&
@@ -294,9 +307,13 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (hasFeature(create.features, Feature::ShadowMask)) {
     const SunShadowMap& shadow = frame.shadow;
     if (!finite(shadow.worldToLightClip)) return fail("shadow.worldToLightClip is not finite");
-    if (shadow.depthConvention < 0 || shadow.depthConvention > 2)
-      return fail("shadow.depthConvention must be 0, 1 or 2");
-    if (!inRange(shadow.bias, 0.0, 1.0)) return fail("shadow.bias must be in [0, 1]");
+    if (!isDepthConvention(shadow.depthConvention))
+      return fail("shadow.depthConvention is not a DepthConvention");
+    if (!inRange(shadow.bias, 0.0, kMaxShadowBias))
+      return fail("shadow.bias must be in [0, " + number(kMaxShadowBias) + "] m");
+    if (!inRange(shadow.normalOffsetTexels, 0.0, kMaxShadowNormalOffset))
+      return fail("shadow.normalOffsetTexels must be in [0, " + number(kMaxShadowNormalOffset) +
+                  "] texels");
   }
 
   const CausticsSettings& s = frame.caustics;
@@ -311,7 +328,7 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
   if (!inRange(s.minCascadeContrast, 0.0, 1.0))
     return fail("caustics.minCascadeContrast must be in [0, 1]");
-  if (s.model != CausticsModel::Seed002 && s.model != CausticsModel::WavefrontAreaRatio)
+  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio)
     return fail("caustics.model is not a CausticsModel");
   if (s.model == CausticsModel::WavefrontAreaRatio &&
       !hasFeature(create.features, Feature::PhysicalCaustics))

@@ -19,6 +19,9 @@ inline constexpr double kMaxWorldCoordinate = 1e9;
 inline std::string worldExtentText() {
   return "1e9";
 }
+// A range bound as a message prints it: shortest round-trip form ("100", "0.5", "1e+06").
+std::string number(double value);
+
 // Sun::direction is normalised by the plugin; lengths outside this range are refused.
 inline constexpr double kMinSunLength = 1e-6, kMaxSunLength = 1e6;
 

@@ -83,7 +83,7 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
       frame.godRays.resolution = variant.resolution;
       frame.godRays.sampling = variant.sampling;
       PassRun run;
-      if (!runPass(create, frame, "god_rays", target, settings.timedFrames, run, error))
+      if (!runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames, run, error))
         return false;
       const ErrorStats stats = compareWithReference(flatten(run.image), dense);
       Row row;

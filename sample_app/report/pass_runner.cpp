@@ -19,7 +19,7 @@ ReportTarget::~ReportTarget() {
   glDeleteTextures(1, &texture_);
 }
 
-bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* passName,
+bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,
              const ReportTarget& target, int timedFrames, PassRun& out, std::string& error) {
   create.features = create.features | postfx::Feature::BenchmarkFloor;
   postfx::Context* context = nullptr;
@@ -39,11 +39,9 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* pas
   }
   if (ok) {
     const postfx::FrameStats& stats = postfx::stats(*context);
-    out.medianMs = passMedianMs(stats, passName);
-    out.floorMs = passMedianMs(stats, "floor");
-    out.medianMsByPass.clear();
-    for (int i = 0; i < stats.passCount; ++i)
-      out.medianMsByPass[stats.passes[i].name] = stats.passes[i].medianMs;
+    out.medianMs = stats.pass(pass).medianMs;
+    out.floorMs = stats.pass(postfx::Pass::Floor).medianMs;
+    out.stats = stats;
     glClearTexImage(target.texture(), 0, GL_RGBA, GL_FLOAT, zero);
     ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
   }

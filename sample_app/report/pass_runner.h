@@ -5,7 +5,6 @@
 // for the image the error is computed from.
 #include <epoxy/gl.h>
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -15,10 +14,10 @@
 namespace ocean::report {
 
 struct PassRun {
-  double medianMs = 0.0, floorMs = 0.0;  // of the named pass and of the floor
-  // Every pass the run timed, by name (e.g. "caustics_irradiance" beside "caustics"): one run
-  // prices a method made of several passes.
-  std::map<std::string, double> medianMsByPass;
+  double medianMs = 0.0, floorMs = 0.0;  // of the pass asked for and of the floor
+  // Every pass the run timed (e.g. CausticsIrradiance beside Caustics): one run prices a method
+  // made of several passes.
+  postfx::FrameStats stats;
   std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order
   std::vector<float> raw;        // raw caustic factor (with Feature::RawCausticOutput)
   // The object caustic map of the last frame (rgb, row v = 0 first) and where it lies; empty
@@ -44,7 +43,7 @@ class ReportTarget {
 };
 
 // `frame`'s target is replaced by `target`; BenchmarkFloor is added to `create.features`.
-bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* passName,
+bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,
              const ReportTarget& target, int timedFrames, PassRun& out, std::string& error);
 
 }  // namespace ocean::report

@@ -92,7 +92,7 @@ void main() {
   }
   float visibility = 1.0;
 #if POSTFX_SHADOW_MASK
-  visibility = sunVisibility(p);
+  visibility = sunVisibility(p, n);
   if (!(visibility > 0.0)) {
     emitNothing();
     return;

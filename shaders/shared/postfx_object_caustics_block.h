@@ -27,7 +27,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
   vec4 lightUp;              // xyz: map v axis (unit); w: half side of the map region (m)
   vec4 grid;             // x: grid size, y: map size, z: splat sigma (map texels), w: flux per ray
   vec4 receiver;         // x: 1 = [-1,1] depth convention, y: window depth of "no receiver" (far),
-                         // z: receiver depth tolerance (window units), w: unused
+                         // z: receiver tolerance (m along the light), w: unused
   vec4 cameraOffset;     // xyz: camera - anchor (m); w: water level - anchor y (m)
   vec4 viewport;         // 1/width, 1/height, width, height
   vec4 projection;       // P[0][0], P[1][1], P[2][0], P[2][1]

@@ -304,7 +304,7 @@ Output Runner::run(const Knobs& k) {
   light[3][3] = 1.0;
   frame.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
   frame.shadow.worldToLightClip = light;
-  frame.shadow.depthConvention = 1;
+  frame.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
 
   scene.clearTarget(glm::vec4(0.0f));
   const postfx::Result result = postfx::dispatch(*state_->fx, frame);

@@ -158,17 +158,17 @@ TEST_F(PostfxBadInputTest, CreateRejectsUnknownAndInvalid) {
   EXPECT_EQ(fx, nullptr);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("unknown feature"), std::string::npos);
   desc.features = postfx::Feature::Caustics;
-  desc.depthConvention = 7;
+  desc.depthConvention = static_cast<postfx::DepthConvention>(7);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("depthConvention"), std::string::npos);
-  desc.depthConvention = 0;
+  desc.depthConvention = postfx::DepthConvention::ReverseZ;
   for (int slots : {0, postfx::kMaxCascades + 1}) {
     desc.maxWaterCascades = slots;
     EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
     EXPECT_NE(std::string(postfx::lastError(nullptr)).find("maxWaterCascades"), std::string::npos);
   }
   desc.maxWaterCascades = postfx::kMaxCascades;
-  desc.normalEncoding = -1;
+  desc.normalEncoding = static_cast<postfx::NormalEncoding>(-1);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_STREQ(postfx::toString(Result::SizeMismatch), "SizeMismatch");
 }

@@ -164,7 +164,7 @@ TEST_F(PostfxCausticsTest, ShadowMapMasksCaustics) {
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
   frame.sun.direction = {0.0, 1.0, 0.0};
   frame.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
-  frame.shadow.depthConvention = 2;
+  frame.shadow.depthConvention = postfx::DepthConvention::ForwardNegOneToOne;
   frame.shadow.worldToLightClip =
       glm::ortho(-50.0, 50.0, -50.0, 50.0, 1.0, 300.0) *
       glm::lookAt(glm::dvec3(0, 100, 0), glm::dvec3(0, 0, 0), glm::dvec3(0, 0, -1));
@@ -297,7 +297,7 @@ TEST_F(PostfxCausticsTest, SkipsWhenNothingIsUnderwaterInView) {
   for (int i = 0; i < 6; ++i) ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
   glFinish();
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
-  const postfx::PassStats& caustics = postfx::stats(*fx).passes[0];
+  const postfx::PassStats& caustics = postfx::stats(*fx).pass(postfx::Pass::Caustics);
   EXPECT_TRUE(caustics.skipped);
   EXPECT_EQ(caustics.lastMs, 0.0);
   EXPECT_EQ(caustics.medianMs, 0.0);

@@ -26,12 +26,6 @@ class PostfxObjectCausticsHostTest : public testsupport::GlTest {
   HostState host_;
 };
 
-int passIndex(const postfx::FrameStats& stats, const char* name) {
-  for (int i = 0; i < stats.passCount; ++i)
-    if (std::string(stats.passes[i].name) == name) return i;
-  return -1;
-}
-
 postfx::CasterMesh glassCaster(const GlMesh& mesh) {
   postfx::CasterMaterial glass;
   glass.ior = 1.5f;
@@ -65,10 +59,8 @@ TEST_F(PostfxObjectCausticsHostTest, GlassWithoutWaterRunsWithItsFloor) {
 
   // With it: same host state before and after every frame, the floor timed, the same image.
   auto timed = makeObjectContext(Feature::BenchmarkFloor);
-  const int floor = passIndex(postfx::stats(*timed), "floor");
-  const int objects = objectPassIndex(postfx::stats(*timed));
-  ASSERT_GE(floor, 0);
-  ASSERT_GE(objects, 0);
+  ASSERT_TRUE(postfx::stats(*timed).pass(postfx::Pass::Floor).present);
+  ASSERT_TRUE(postfx::stats(*timed).pass(postfx::Pass::ObjectCaustics).present);
   host_.set();
   const GlSnapshot before = snapshotGlState();
   for (int i = 0; i < 6; ++i) {
@@ -80,8 +72,8 @@ TEST_F(PostfxObjectCausticsHostTest, GlassWithoutWaterRunsWithItsFloor) {
   host.scene.clearTarget(background);
   ASSERT_EQ(postfx::dispatch(*timed, frame), Result::Ok) << postfx::lastError(timed.get());
   const std::vector<glm::vec4> withFloor = readRgba(host.scene.target, w, h);
-  const postfx::PassStats& f = postfx::stats(*timed).passes[floor];
-  const postfx::PassStats& o = postfx::stats(*timed).passes[objects];
+  const postfx::PassStats& f = postfx::stats(*timed).pass(postfx::Pass::Floor);
+  const postfx::PassStats& o = postfx::stats(*timed).pass(postfx::Pass::ObjectCaustics);
   int differing = 0;
   for (size_t i = 0; i < reference.size(); ++i) differing += withFloor[i] != reference[i] ? 1 : 0;
   std::printf(

@@ -44,8 +44,8 @@ TEST_F(ReferenceUnitsTest, FlatWaterReferenceLightIsThePluginsAddedLight) {
   const auto added = postfxtest::readRgba(scene.target, spec.width, spec.height);
 
   postfx::CreateDesc create;
-  create.depthConvention = spec.depthConvention;
-  create.normalEncoding = spec.normalEncoding;
+  create.depthConvention = static_cast<postfx::DepthConvention>(spec.depthConvention);
+  create.normalEncoding = static_cast<postfx::NormalEncoding>(spec.normalEncoding);
   GBufferCopy gbuffer;
   std::string error;
   ASSERT_TRUE(readGBuffer(create, frame, gbuffer, error)) << error;

@@ -11,14 +11,14 @@
 #include <glm/glm.hpp>
 
 #include <postfx/casters.h>
+#include <postfx/conventions.h>
 #include <postfx/settings.h>
 
 namespace postfx {
 
-using GlName = std::uint32_t;  // a GL object name (GLuint)
-using GlEnum = std::uint32_t;  // a GL enum (GLenum)
-
 inline constexpr int kMaxCascades = 4;
+inline constexpr float kMaxShadowBias = 100.0f;         // m, SunShadowMap::bias
+inline constexpr float kMaxShadowNormalOffset = 16.0f;  // texels, SunShadowMap::normalOffsetTexels
 
 struct TextureRef {
   GlName texture = 0;
@@ -103,11 +103,17 @@ struct SunShadowMap {
   // World-space to light clip-space matrix (light projection * light view), in DOUBLE, with the
   // world translation included. The plugin rebases it onto the camera in double precision.
   glm::dmat4 worldToLightClip{1.0};
-  // Depth convention the shadow map was rendered with. 0 = reverse-Z, 1 = forward [0,1],
-  // 2 = forward [-1,1] (the values of gbuffer::DepthConvention).
-  int depthConvention = 1;
-  // Window-space depth bias pushed toward the light before the comparison, [0, 1].
-  float bias = 0.0005f;
+  DepthConvention depthConvention = DepthConvention::ForwardZeroToOne;  // it was rendered with
+  // Metres the receiver is moved toward the light before the comparison, [0, kMaxShadowBias]:
+  // one value for any depth range. For the receiver map of the object caustics, the most a
+  // pixel may lie off the receiver surface along the light to receive caustic light.
+  float bias = 0.02f;
+  // Normal offset: a surface point is moved along its G-buffer normal by this many of the map's
+  // texels (their world size at the point, from worldToLightClip and the texture's size), times
+  // the sine of its angle to the light, [0, kMaxShadowNormalOffset]. 1.5 clears the 2x2 PCF
+  // footprint (sqrt(2) texels) at any angle: no acne on walls or at grazing light. Sun shadow
+  // map only (the god rays' points in the water have no normal; the receiver map ignores it).
+  float normalOffsetTexels = 1.5f;
 };
 
 // Feature::ObjectCaustics inputs (see postfx/casters.h for what the host does around the pass).

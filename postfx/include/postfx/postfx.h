@@ -21,10 +21,10 @@
 // is refused (InvalidArgument). Conditional rendering cannot be queried in GL 4.5: inside it
 // the plugin's draws are subject to the host's query, so do not call dispatch() there.
 // The library never prints, aborts or throws.
+#include <postfx/diagnostics.h>
 #include <postfx/frame_desc.h>
 #include <postfx/result.h>
 #include <postfx/settings.h>
-#include <postfx/stats.h>
 
 namespace postfx {
 
@@ -62,11 +62,8 @@ enum class WaterTextureType {
 
 struct CreateDesc {  // fixed for the context's life
   Feature features = Feature::Caustics;
-  // Host G-buffer conventions; values of gbuffer::DepthConvention / gbuffer::NormalEncoding:
-  // depth 0 = reverse-Z [0,1] (recommended), 1 = forward [0,1], 2 = forward [-1,1] (GL default);
-  // normals 0 = octahedral RG, 1 = world xyz float/snorm, 2 = world xyz UNORM (n * 0.5 + 0.5).
-  int depthConvention = 0;
-  int normalEncoding = 0;
+  DepthConvention depthConvention = DepthConvention::ReverseZ;  // of FrameDesc::depth
+  NormalEncoding normalEncoding = NormalEncoding::Octahedral;   // of FrameDesc::normal
   WaterTextureType waterTexture = WaterTextureType::Array2D;
   // Most water cascades a frame will give (WaterSurface::cascadeCount <= this), [1,
   // kMaxCascades]; ignored with Single2D (one). Each slot is a lookup written into the shaders:
@@ -108,12 +105,7 @@ Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 // rather than abort the process). Null is a no-op.
 void destroy(Context* context) noexcept;
 
-// The message of the last failed call on `context`, or, for null, of the last failed create()
-// on this thread. Empty after success. Valid until the next call on the same context/thread.
-const char* lastError(const Context* context) noexcept;
-
-// Per-pass GPU timings, updated by each dispatch() from queries that have completed.
-const FrameStats& stats(const Context& context) noexcept;
+// lastError() and stats(): postfx/diagnostics.h.
 
 // With Feature::RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last
 // dispatched target holding the caustic factor (mean of R,G,B) before albedo,

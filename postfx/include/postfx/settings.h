@@ -18,7 +18,7 @@ enum class CausticsModel {
   // Covers a camera-centred square window (windowSize); outside it, and across the window's
   // outer eighth, it fades to RayDeviation.
   WavefrontAreaRatio,
-  Seed002 = RayDeviation,  // the former name of RayDeviation
+  Seed002 [[deprecated("named for a paper: use RayDeviation")]] = RayDeviation,
 };
 
 struct CausticsSettings {
