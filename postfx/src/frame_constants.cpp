@@ -72,6 +72,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   // nothing where up.y > 1e-6.
   const double upY = std::max(up.y, 1e-6);
   b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / upY, 0.0);
+  if (frame.viewExtinction == ViewExtinction::Plugin)
+    b.viewExtinction = glm::vec4(surface.absorption + surface.scattering, 0.0f);
   const double kx = up.x / upY, kz = up.z / upY;
   // No water texture (accepted only for object caustics alone): no cascade is read, by the floor
   // either.

@@ -175,6 +175,8 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   // Same water-column model as the seabed caustics: Beer-Lambert along the refracted sun.
   const double cosT = std::max(-f.direction.y, 1e-3);
   b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
+  if (frame.viewExtinction == ViewExtinction::Plugin)
+    b.viewExtinction = glm::vec4(frame.water.absorption + frame.water.scattering, 0.0f);
   for (int c = 0; c < objects.casterCount && c < POSTFX_MAX_CASTERS; ++c) {
     const CasterMaterial& m = objects.casters[c].material;
     const bool reflective = m.type == CasterMaterialType::Reflective;

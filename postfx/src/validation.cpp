@@ -316,6 +316,14 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
                   "] texels");
   }
 
+  if (frame.viewExtinction != ViewExtinction::Plugin &&
+      frame.viewExtinction != ViewExtinction::Host)
+    return fail("viewExtinction is not a ViewExtinction");
+  if (frame.viewExtinction == ViewExtinction::Host &&
+      hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled)
+    return fail(
+        "viewExtinction Host with god rays enabled: a fog after dispatch would attenuate the "
+        "shafts a second time (use ViewExtinction::Plugin and fog before dispatch)");
   const CausticsSettings& s = frame.caustics;
   if (!inRange(s.tau, 0.0, 1e6)) return fail("caustics.tau must be in [0, 1e6]");
   if (!inRange(s.reflectionWeight, 0.0, 1.0))

@@ -69,7 +69,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.depth = {targets.depth(), GL_DEPTH_COMPONENT32F};
   desc.normal = {targets.normal(), GL_RG16_SNORM};
   desc.albedo = {targets.albedo(), GL_SRGB8_ALPHA8};
-  desc.target = {targets.hdr(), GL_RGBA16F};
+  desc.target = {frame.target, GL_RGBA16F};
   desc.camera.position = frame.input.camera.position;
   desc.camera.view = frame.input.camera.viewRotation();
   desc.camera.projection = glm::mat4(frame.projection);

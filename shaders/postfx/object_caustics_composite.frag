@@ -47,6 +47,13 @@ void main() {
     float depthBelow = max(u.cameraOffset.w - p.y, 0.0);
     light *= exp(-u.waterAbsorption.rgb * depthBelow);
   }
+  // ViewExtinction::Plugin: from the receiver to the camera, the part of the ray under water.
+  float receiverDepth = u.cameraOffset.w - p.y;
+  if (receiverDepth > 0.0) {
+    float submerged = submergedViewLength(length(p - u.cameraOffset.xyz), receiverDepth,
+                                          u.cameraOffset.w - u.cameraOffset.y);
+    light *= exp(-u.viewExtinction.rgb * submerged);
+  }
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   outLight = vec4(albedo * light, 0.0);
 }

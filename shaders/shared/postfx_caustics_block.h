@@ -28,6 +28,7 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
   vec4 eta;                 // 1 / IOR for R, G, B; w: tri-planar sharpness
   vec4 lightScale;          // sun irradiance * intensity (rgb); w: min cascade contrast
   vec4 absorptionPerDepth;  // absorption / cos(theta_t), per metre of depth (rgb); w: unused
+  vec4 viewExtinction;      // rgb: sigma_t along the view ray (1/m), 0 with ViewExtinction::Host
   vec4 oblique;             // refractedUp.xz / refractedUp.y (x, y); z: lod bias; w: cascades
   vec4 cascadeAxes[POSTFX_MAX_CASCADES];     // fract((camera - water origin) / tile) along x, y,
                                              // z; w: 1 / tile (1/m)
@@ -49,7 +50,7 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
 #ifdef __cplusplus
 };
 static_assert(sizeof(CausticsBlock) ==
-                  2 * 64 + 10 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 3 * 16,
+                  2 * 64 + 11 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 3 * 16,
               "CausticsBlock must match its std140 layout");
 #else
 }

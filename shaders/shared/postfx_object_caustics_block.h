@@ -35,12 +35,13 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
                          // w: back-surface (exit) iterations
   vec4 lightScale;       // rgb: sun irradiance * intensity; w: unused
   vec4 waterAbsorption;  // rgb: water absorption / cos(theta_t) per metre of depth; w: unused
+  vec4 viewExtinction;   // rgb: sigma_t along the view ray (1/m), 0 with ViewExtinction::Host
   // Per caster i: [2i] x: 0 refractive / 1 reflective, y: IOR relative to the outer medium;
   // [2i+1] rgb: absorption per metre (refractive) or F0 (reflective).
   vec4 materials[2 * POSTFX_MAX_CASTERS];
 #ifdef __cplusplus
 };
-static_assert(sizeof(ObjectCausticsBlock) == 4 * 64 + 11 * 16 + 2 * POSTFX_MAX_CASTERS * 16,
+static_assert(sizeof(ObjectCausticsBlock) == 4 * 64 + 12 * 16 + 2 * POSTFX_MAX_CASTERS * 16,
               "ObjectCausticsBlock must match its std140 layout");
 #else
 }

@@ -79,7 +79,8 @@ TEST_F(ReferenceUnitsTest, FlatWaterReferenceLightIsThePluginsAddedLight) {
     ASSERT_TRUE(receivers.valid[i] && traced.lit[i]) << "pixel " << i;
     const double depth = receivers.depthBelow(i);
     const glm::vec3 exact =
-        referenceCausticLight(units, gbuffer.albedo[i], depth, traced.flatIrradiance[i]);
+        referenceCausticLight(units, gbuffer.albedo[i], depth, traced.flatIrradiance[i],
+                              glm::length(gbuffer.viewPosition[i]));
     for (int ch = 0; ch < 3; ++ch) {
       const double plugin = double(added[i][ch]);
       ASSERT_GT(plugin, 0.0);

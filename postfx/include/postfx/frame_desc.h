@@ -129,6 +129,20 @@ struct ObjectCausticsFrame {
   ObjectCausticsSettings settings;
 };
 
+// Who attenuates the light the plugin adds along the view ray, from the lit point (or, for god
+// rays, each in-scattering sample) to the camera, by exp(-sigma_t * submerged length),
+// sigma_t = WaterSurface::absorption + scattering: exactly one of the two, never both.
+enum class ViewExtinction : std::uint8_t {
+  // The plugin (default). Caustic light arrives attenuated and god rays carry their own
+  // per-sample extinction: apply your underwater fog to your own lit buffer BEFORE dispatch and
+  // leave what dispatch adds unfogged.
+  Plugin,
+  // Your fog, applied to the whole target AFTER dispatch: caustic light is added unattenuated.
+  // God rays are in-scattered light that no after-the-fact fog can attenuate right, so a frame
+  // with god rays to draw is refused (InvalidArgument) in this mode.
+  Host,
+};
+
 struct FrameDesc {
   // Host G-buffer, GL_TEXTURE_2D, all the same size (the size of `target`).
   TextureRef depth;   // GL_DEPTH_COMPONENT16/24/32/32F or DEPTH24_STENCIL8/DEPTH32F_STENCIL8
@@ -143,8 +157,9 @@ struct FrameDesc {
   WaterSurface water;
   SunShadowMap shadow;
   CausticsSettings caustics;
-  GodRaySettings godRays;              // read only with Feature::GodRays
-  ObjectCausticsFrame objectCaustics;  // read only with Feature::ObjectCaustics
+  GodRaySettings godRays;                                  // read only with Feature::GodRays
+  ObjectCausticsFrame objectCaustics;                      // read only with Feature::ObjectCaustics
+  ViewExtinction viewExtinction = ViewExtinction::Plugin;  // all the light dispatch() adds
 };
 
 }  // namespace postfx
