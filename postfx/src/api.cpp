@@ -1,6 +1,7 @@
 // The public entry points: validation first, GL work only once everything is known good, and
 // no exception ever crossing the API boundary.
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 #include <glkit/current_context.h>
 
@@ -67,7 +68,7 @@ bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
 // The object caustics, timed as their own pass, after the seabed caustics and god rays.
 void drawObjectCaustics(Context& context, const FrameDesc& frame, int width, int height) {
   DebugGroup group("postfx.object_caustics");
-  if (hasFeature(context.desc.features, Feature::BenchmarkFloor)) glFinish();
+  if (hasFeature(context.desc.features, testing::BenchmarkFloor)) glFinish();
   context.timers.begin(Pass::ObjectCaustics);
   context.objectCaustics.draw(frame, width, height);
   context.timers.end(Pass::ObjectCaustics);
@@ -96,7 +97,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
-  const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
+  const bool floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
   // The floor runs whenever some timed pass does, so that every pass has its ratio.
   const bool fullScreen = caustics || godRays || (objects && floor);
@@ -113,7 +114,9 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   detail::GodRayGridPivot pivot = context.godRayPivot;
   shared::GodRaysBlock godBlock{};
   if (godRays) {
-    godBlock = detail::buildGodRaysBlock(frame, width, height, pivot);
+    godBlock = detail::buildGodRaysBlock(
+        frame, width, height, pivot,
+        context.godRaySampling == testing::GodRaySampling::UniformAlongRay);
     if (!detail::allFinite(godBlock))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
@@ -289,7 +292,7 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     if (r != Result::Ok) return r;
     std::array<bool, kPassCount> present{};
     present[int(Pass::Caustics)] = hasFeature(desc.features, Feature::Caustics);
-    present[int(Pass::Floor)] = hasFeature(desc.features, Feature::BenchmarkFloor);
+    present[int(Pass::Floor)] = hasFeature(desc.features, testing::BenchmarkFloor);
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
@@ -352,6 +355,8 @@ ObjectCausticMap objectCausticMap(const Context& context) noexcept {
   return context.objectCaustics.map();
 }
 
+namespace testing {
+
 GlName rawCausticTexture(const Context& context) noexcept {
   return context.caustics.rawTexture();
 }
@@ -369,5 +374,17 @@ CausticIrradianceInfo causticIrradiance(const Context& context) noexcept {
     info.layerDepth[k] = static_cast<float>(l.depth[k]);
   return info;
 }
+
+Result setGodRaySampling(Context& context, GodRaySampling sampling) noexcept {
+  if (sampling != GodRaySampling::WorldGrid && sampling != GodRaySampling::UniformAlongRay) {
+    context.error = "setGodRaySampling: not a GodRaySampling";
+    return Result::InvalidArgument;
+  }
+  context.error.clear();
+  context.godRaySampling = sampling;
+  return Result::Ok;
+}
+
+}  // namespace testing
 
 }  // namespace postfx

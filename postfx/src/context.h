@@ -4,6 +4,7 @@
 #include <string>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 #include "caustics_pass.h"
 #include "godrays_constants.h"
@@ -19,6 +20,7 @@ struct Context {
   detail::CausticsPass caustics;
   detail::GodRaysPass godRays;
   detail::GodRayGridPivot godRayPivot;
+  testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
   detail::ObjectCausticsPass objectCaustics;
   detail::GpuTimers timers;

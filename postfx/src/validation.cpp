@@ -199,8 +199,6 @@ Result validateGodRays(const GodRaySettings& g, std::string& error) {
   if (g.resolution != GodRayResolution::Full && g.resolution != GodRayResolution::Half &&
       g.resolution != GodRayResolution::Quarter)
     return fail("godRays.resolution is not a GodRayResolution");
-  if (g.sampling != GodRaySampling::WorldGrid && g.sampling != GodRaySampling::UniformAlongRay)
-    return fail("godRays.sampling is not a GodRaySampling");
   return Result::Ok;
 }
 

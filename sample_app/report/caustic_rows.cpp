@@ -1,4 +1,5 @@
 #include "caustic_rows.h"
+#include <postfx/testing.h>
 
 #include <epoxy/gl.h>
 
@@ -88,7 +89,7 @@ std::vector<double> FlatSeabedComparison::binRaw(const std::vector<float>& raw) 
 bool FlatSeabedComparison::run(postfx::CreateDesc create, const postfx::CausticsSettings& caustics,
                                int timedFrames, PassRun& out, std::vector<double>& binned,
                                std::string& error) const {
-  create.features = create.features | postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+  create.features = create.features | postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
   create.depthConvention = postfx::DepthConvention::ReverseZ;
   create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   postfx::FrameDesc frame = frame_;

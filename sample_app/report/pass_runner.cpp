@@ -1,4 +1,5 @@
 #include "pass_runner.h"
+#include <postfx/testing.h>
 
 #include <object_caustics_metrics.h>
 #include <plugin_setup.h>
@@ -20,13 +21,15 @@ ReportTarget::~ReportTarget() {
 }
 
 bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,
-             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error) {
-  create.features = create.features | postfx::Feature::BenchmarkFloor;
+             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error,
+             postfx::testing::GodRaySampling sampling) {
+  create.features = create.features | postfx::testing::BenchmarkFloor;
   postfx::Context* context = nullptr;
   if (postfx::create(create, context) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return false;
   }
+  postfx::testing::setGodRaySampling(*context, sampling);
   frame.target = {target.texture(), GL_RGBA32F};
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   bool ok = true;
@@ -53,7 +56,7 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pa
     glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels * sizeof(glm::vec4)),
                       out.image.data());
     out.raw.clear();
-    if (const GLuint raw = postfx::rawCausticTexture(*context)) {
+    if (const GLuint raw = postfx::testing::rawCausticTexture(*context)) {
       out.raw.resize(pixels);
       glGetTextureImage(raw, 0, GL_RED, GL_FLOAT, GLsizei(pixels * sizeof(float)), out.raw.data());
     }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 #include <glm/glm.hpp>
 
 namespace ocean::report {
@@ -19,7 +20,7 @@ struct PassRun {
   // made of several passes.
   postfx::FrameStats stats;
   std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order
-  std::vector<float> raw;        // raw caustic factor (with Feature::RawCausticOutput)
+  std::vector<float> raw;        // raw caustic factor (with postfx::testing::RawCausticOutput)
   // The object caustic map of the last frame (rgb, row v = 0 first) and where it lies; empty
   // and texture 0 when the object caustics did not run.
   std::vector<glm::dvec3> objectMap;
@@ -43,7 +44,9 @@ class ReportTarget {
 };
 
 // `frame`'s target is replaced by `target`; BenchmarkFloor is added to `create.features`.
+// `sampling`: the god-ray test hook (postfx/testing.h) for the context.
 bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,
-             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error);
+             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error,
+             postfx::testing::GodRaySampling sampling = postfx::testing::GodRaySampling::WorldGrid);
 
 }  // namespace ocean::report

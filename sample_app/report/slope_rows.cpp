@@ -1,4 +1,5 @@
 #include "slope_rows.h"
+#include <postfx/testing.h>
 
 #include <epoxy/gl.h>
 
@@ -26,7 +27,7 @@ bool runVariant(const postfx::FrameDesc& frame, postfx::Feature features, const 
                 double scale, const std::vector<double>& truth, int timedFrames, SlopeLookup& out,
                 std::string& error) {
   postfx::CreateDesc create;
-  create.features = features | postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+  create.features = features | postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
   create.depthConvention = postfx::DepthConvention::ReverseZ;
   create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   const ReportTarget target(plane.desc.width, plane.desc.height);

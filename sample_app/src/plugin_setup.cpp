@@ -1,4 +1,5 @@
 #include "plugin_setup.h"
+#include <postfx/testing.h>
 
 #include "caster_admission.h"
 
@@ -23,7 +24,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   postfx::CreateDesc desc;
   desc.features = postfx::Feature::Caustics | postfx::Feature::ShadowMask |
                   postfx::Feature::Dispersion | postfx::Feature::GodRays;
-  if (benchmarkFloor) desc.features = desc.features | postfx::Feature::BenchmarkFloor;
+  if (benchmarkFloor) desc.features = desc.features | postfx::testing::BenchmarkFloor;
   // The physical model's GL resources exist only when it is asked for.
   if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::PhysicalCaustics;
   if (options.objectCaustics) {

@@ -6,6 +6,7 @@
 //   * Ok with every added value finite and no GL error;
 // and either way the next ordinary frame must be bit-identical to a fresh context's.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <cstring>
@@ -187,14 +188,14 @@ class PostfxFuzzTest : public testsupport::GlTest {
 TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
   const Spec specs[] = {
       {"reverse-Z, octahedral: caustics + god rays + shadow + raw + dispersion",
-       Feature::Caustics | Feature::GodRays | Feature::ShadowMask | Feature::RawCausticOutput |
-           Feature::Dispersion,
+       Feature::Caustics | Feature::GodRays | Feature::ShadowMask |
+           postfx::testing::RawCausticOutput | Feature::Dispersion,
        0, 0},
       {"forward [0,1], xyz: physical caustics + god rays + tri-planar walls",
        Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics | Feature::TriplanarWalls,
        1, 1},
       {"forward [-1,1], xyz UNORM: caustics + object caustics + floor",
-       Feature::Caustics | Feature::ObjectCaustics | Feature::BenchmarkFloor, 2, 2},
+       Feature::Caustics | Feature::ObjectCaustics | postfx::testing::BenchmarkFloor, 2, 2},
       {"reverse-Z, xyz: object caustics + god rays", Feature::ObjectCaustics | Feature::GodRays, 0,
        1},
   };
@@ -266,7 +267,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
       return readRgba(host.scene.target, w, h);
     };
     auto rawOutput = [&](postfx::Context& context) {
-      const GLuint t = postfx::rawCausticTexture(context);
+      const GLuint t = postfx::testing::rawCausticTexture(context);
       return t != 0 ? readRed(t, w, h) : std::vector<float>();
     };
     Result r = Result::InvalidArgument;
@@ -448,7 +449,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
                 g.dither = !g.dither;
                 break;
               default:
-                g.sampling = static_cast<postfx::GodRaySampling>(wildInt(rng, 0));
+                g.intensity = wildFloat(rng, 1.5f);
             }
             break;
           }

@@ -1,6 +1,7 @@
 // Bad input: each case returns its Result with a message naming the problem, leaves every GL
 // state as the host set it, and draws nothing into the host's target.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <functional>
@@ -97,7 +98,7 @@ TEST_F(PostfxBadInputTest, EachCaseFailsCleanly) {
 
   postfx::Context* fx = nullptr;
   postfx::CreateDesc desc;
-  desc.features = postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+  desc.features = postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
   ASSERT_EQ(postfx::create(desc, fx), Result::Ok) << postfx::lastError(nullptr);
   const glm::vec4 marker(0.125f, 0.25f, 0.5f, 1.0f);
   for (const BadCase& c : cases) {

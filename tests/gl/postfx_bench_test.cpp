@@ -2,6 +2,7 @@
 // vs floor GPU time at 1280x720 on a synthetic underwater G-buffer. The budget is
 // caustics / floor <= 2.0; the sample app's `bench` is the reference measurement.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <string>
@@ -23,7 +24,7 @@ TEST_F(PostfxBench, DISABLED_FloorRatioAt720p) {
   postfxtest::Scene scene(spec, GL_RGBA16F);
   const GLuint water = postfxtest::makeWaterTexture(256, 3, 0.01);
   {
-    auto fx = postfxtest::makeContext(postfx::Feature::Caustics | postfx::Feature::BenchmarkFloor);
+    auto fx = postfxtest::makeContext(postfx::Feature::Caustics | postfx::testing::BenchmarkFloor);
     const postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3, {}, -0.5);
     for (int i = 0; i < 40; ++i) {
       ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);

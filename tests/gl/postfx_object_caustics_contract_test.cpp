@@ -2,6 +2,7 @@
 // GL state untouched, extreme cases stay finite and conserve energy, the composite adds exactly
 // the map's light on receivers only, and the temporal filter leaves no trail.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <cstdint>
@@ -302,7 +303,7 @@ TEST_F(PostfxObjectCausticsContractTest, HostStateSurvivesThePass) {
   postfx::Context* raw = nullptr;
   postfx::CreateDesc desc;
   desc.features = postfx::Feature::ObjectCaustics | postfx::Feature::Caustics |
-                  postfx::Feature::GodRays | postfx::Feature::BenchmarkFloor;
+                  postfx::Feature::GodRays | postfx::testing::BenchmarkFloor;
   host_.set();
   GlSnapshot before = snapshotGlState();
   ASSERT_EQ(postfx::create(desc, raw), Result::Ok) << postfx::lastError(nullptr);

@@ -2,6 +2,7 @@
 // the passes that sample it (seabed caustics, god rays) do; and the benchmark floor runs beside
 // the object caustics alone, adding exactly nothing, so that their cost has a floor ratio too.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <string>
@@ -58,7 +59,7 @@ TEST_F(PostfxObjectCausticsHostTest, GlassWithoutWaterRunsWithItsFloor) {
   for (const glm::vec4& v : reference) lit += v.g > background.g + 1e-3f ? 1 : 0;
 
   // With it: same host state before and after every frame, the floor timed, the same image.
-  auto timed = makeObjectContext(Feature::BenchmarkFloor);
+  auto timed = makeObjectContext(postfx::testing::BenchmarkFloor);
   ASSERT_TRUE(postfx::stats(*timed).pass(postfx::Pass::Floor).present);
   ASSERT_TRUE(postfx::stats(*timed).pass(postfx::Pass::ObjectCaustics).present);
   host_.set();
@@ -106,8 +107,8 @@ TEST_F(PostfxObjectCausticsHostTest, WaterTextureIsRequiredOnlyWhereItIsSampled)
   const Feature all = Feature::ObjectCaustics | Feature::Caustics | Feature::GodRays;
   const Case cases[] = {
       {"objects only, no water", Feature::ObjectCaustics, true, true, 0, Result::Ok},
-      {"objects only, floor, no water", Feature::ObjectCaustics | Feature::BenchmarkFloor, true,
-       true, 0, Result::Ok},
+      {"objects only, floor, no water", Feature::ObjectCaustics | postfx::testing::BenchmarkFloor,
+       true, true, 0, Result::Ok},
       {"all, caustics and god rays off", all, false, false, 0, Result::Ok},
       {"all, caustics on, no water", all, true, false, 0, Result::MissingTexture},
       {"all, god rays on, no water", all, false, true, 0, Result::MissingTexture},

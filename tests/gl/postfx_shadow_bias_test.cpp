@@ -15,6 +15,7 @@
 
 #include <flat_gbuffer.h>
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 #include "gl_fixture.h"
 
@@ -78,14 +79,14 @@ glm::dmat4 orthoFor(postfx::DepthConvention convention) {
 
 std::vector<float> rawFactor(postfx::Feature features, const postfx::FrameDesc& frame) {
   postfx::CreateDesc create;
-  create.features = features | postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+  create.features = features | postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
   create.normalEncoding = postfx::NormalEncoding::WorldXyz;  // the PlaneGbuffer's
   postfx::Context* fx = nullptr;
   EXPECT_EQ(postfx::create(create, fx), postfx::Result::Ok) << postfx::lastError(nullptr);
   if (!fx) return {};
   EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx);
   std::vector<float> raw(size_t(kSize) * kSize);
-  glGetTextureImage(postfx::rawCausticTexture(*fx), 0, GL_RED, GL_FLOAT,
+  glGetTextureImage(postfx::testing::rawCausticTexture(*fx), 0, GL_RED, GL_FLOAT,
                     GLsizei(raw.size() * sizeof(float)), raw.data());
   postfx::destroy(fx);
   return raw;

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 namespace postfxtest {
 
@@ -26,6 +27,6 @@ inline ContextPtr makeContext(postfx::Feature features, int depthConvention = 0,
 }
 
 inline constexpr postfx::Feature kRaw =
-    postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+    postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
 
 }  // namespace postfxtest

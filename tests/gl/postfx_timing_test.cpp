@@ -1,6 +1,7 @@
 // Per-pass GPU timing: non-stalling timestamp pairs in a ring; results appear a few dispatches
 // later, skipped passes report 0 ms, the floor pass is timed beside the caustics.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <string>
 
@@ -17,7 +18,7 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   spec.lookDirection = {0.0, -0.6, -1.0};
   postfxtest::Scene scene(spec);
   const GLuint water = postfxtest::makeWaterTexture(32, 2, 0.01);
-  auto fx = postfxtest::makeContext(postfx::Feature::Caustics | postfx::Feature::BenchmarkFloor);
+  auto fx = postfxtest::makeContext(postfx::Feature::Caustics | postfx::testing::BenchmarkFloor);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
 
   const postfx::FrameStats& s = postfx::stats(*fx);

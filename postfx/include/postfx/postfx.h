@@ -4,9 +4,11 @@
 //   postfx::CreateDesc createDesc;              // features, G-buffer conventions
 //   postfx::Context* fx = nullptr;
 //   if (postfx::create(createDesc, fx) != postfx::Result::Ok) log(postfx::lastError(nullptr));
-//   ... every frame, after lighting, before tone mapping:
-//   postfx::dispatch(*fx, frameDesc);           // adds caustics into frameDesc.target
-//   ... postfx::stats(*fx).passes[i].medianMs
+//   ... every frame, after lighting and your underwater fog, before tone mapping:
+//   postfx::dispatch(*fx, frameDesc);           // adds light, view-attenuated, into .target
+//   ... postfx::stats(*fx).pass(postfx::Pass::Caustics).medianMs   (postfx/diagnostics.h)
+// What is added, in which units, and who attenuates it along the view ray:
+// FrameDesc::viewExtinction (postfx/frame_desc.h) and the README's "Composition in your frame".
 //   postfx::destroy(fx);
 //
 // Threading and GL: every call needs the host's GL 4.5 context current on the calling thread.
@@ -31,13 +33,12 @@ namespace postfx {
 // Decided at create(): each becomes a shader #define, so a feature that is off costs nothing.
 enum class Feature : std::uint32_t {
   None = 0,
-  Caustics = 1u << 0,          // seabed caustics (seed 002, section 4)
-  GodRays = 1u << 1,           // underwater light shafts (seed 002, section 4, eq. 2)
-  ObjectCaustics = 1u << 2,    // light-map caustics of glass/metal casters (seeds 000, 003)
-  Dispersion = 1u << 3,        // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
-  ShadowMask = 1u << 4,        // mask caustics by the host's sun shadow map (FrameDesc::shadow)
-  RawCausticOutput = 1u << 5,  // also write the raw caustic factor to rawCausticTexture()
-  BenchmarkFloor = 1u << 6,    // also run and time the "floor" pass (benchmarks only: see below)
+  Caustics = 1u << 0,        // seabed caustics (seed 002, section 4)
+  GodRays = 1u << 1,         // underwater light shafts (seed 002, section 4, eq. 2)
+  ObjectCaustics = 1u << 2,  // light-map caustics of glass/metal casters (seeds 000, 003)
+  Dispersion = 1u << 3,      // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
+  ShadowMask = 1u << 4,      // mask caustics by the host's sun shadow map (FrameDesc::shadow)
+  // 1u << 5 and 1u << 6: test and benchmark hooks, postfx/testing.h.
   PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio (seed 004); its pass
                                // is timed as "caustics_irradiance"
   // Seed 002's full tri-planar lookup: steep surfaces (more than ~30 degrees from horizontal
@@ -94,11 +95,6 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // caustics (postfx/casters.h; timed as "object_caustics") run last, skipped (0 ms) with no
 // caster, objectCaustics.settings.enabled off, the sun at/below the horizon, or no caster inside
 // the receiver map's view.
-// With Feature::BenchmarkFloor, a "floor" pass runs first whenever any timed pass runs (caustics,
-// god rays or object caustics): a full-screen pass that reads the G-buffer, the water cascades
-// (when a water texture is given) and the shadow map, and writes the same outputs with no math
-// (adds exactly 0), so that e.g. caustics.medianMs / floor.medianMs measures the shader's cost
-// independently of the machine.
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
 // Deletes the context's GL objects (current GL context required; without one they are leaked
@@ -106,27 +102,6 @@ Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 void destroy(Context* context) noexcept;
 
 // lastError() and stats(): postfx/diagnostics.h.
-
-// With Feature::RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last
-// dispatched target holding the caustic factor (mean of R,G,B) before albedo,
-// irradiance, intensity and absorption; 0 where no caustics (sky, above water, back-facing,
-// shadowed, pass skipped). The factor is in [0, 1] in the RayDeviation model and in
-// [0, maxIrradiance] in the WavefrontAreaRatio model. Returns 0 without the feature or before
-// the first dispatch.
-GlName rawCausticTexture(const Context& context) noexcept;
-
-// The WavefrontAreaRatio model's irradiance of the most recent frame that computed it.
-struct CausticIrradianceInfo {
-  // Plugin-owned GL_TEXTURE_2D_ARRAY, GL_R32F, resolution^2 texels x layers: irradiance on a
-  // horizontal receiver relative to flat water (flat water gives 1), clamped, no absorption.
-  // 0 without Feature::PhysicalCaustics or before the first frame in that model.
-  GlName texture = 0;
-  int resolution = 0, layers = 0;
-  glm::dvec2 windowOrigin{0.0};  // world xz of the corner of texel (0, 0) (m)
-  double windowSize = 0.0;       // m; texel (i, j) covers origin + [i, i+1) * size / resolution
-  float layerDepth[8] = {};      // m below the water level, per layer
-};
-CausticIrradianceInfo causticIrradiance(const Context& context) noexcept;
 
 // With Feature::ObjectCaustics: the caustic map of the last dispatch that ran the pass, for
 // hosts that composite it themselves (forward passes, water volumes) and for tests. A

@@ -95,16 +95,6 @@ enum class GodRayResolution {
   Quarter = 4,  // 1/16 of the march cost; shafts visibly softer
 };
 
-// How the god-ray march places its samples along each view ray.
-enum class GodRaySampling {
-  // Seed 002 section 4: where the ray crosses the planes of a world-snapped grid. The samples
-  // stay put in the world when the camera moves, so the shafts do not crawl or flicker.
-  WorldGrid,
-  // sampleCount points evenly spread along the ray: slides with the camera (flickers). Kept for
-  // comparisons (the temporal-stability test) only.
-  UniformAlongRay,
-};
-
 // Per-frame tuning of the god rays (Feature::GodRays), a plain struct with defaults. Every float
 // must be finite and inside its documented range, or dispatch() returns InvalidArgument and
 // draws nothing. The light they add is in-scattered sunlight (see godrays.frag for the model):
@@ -136,7 +126,6 @@ struct GodRaySettings {
   // Shift the grid per pixel by a 4x4 ordered-dither phase that is fixed on screen and in time:
   // breaks the banding of few samples into fine static noise, without temporal flicker.
   bool dither = false;
-  GodRaySampling sampling = GodRaySampling::WorldGrid;
 };
 
 }  // namespace postfx

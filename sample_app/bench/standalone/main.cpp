@@ -15,6 +15,7 @@
 
 #include <glcontext/context.h>
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 #include <postfx/water/ocean.h>
 #include <nlohmann/json.hpp>
 
@@ -113,7 +114,7 @@ std::vector<Config> configurations() {
 bool run(const Config& config, const Options& options, const postfx::bench::SeabedGbuffer& gbuffer,
          postfx::water::Ocean& ocean, Row& row, std::string& error) {
   postfx::CreateDesc create;
-  create.features = config.features | postfx::Feature::BenchmarkFloor;
+  create.features = config.features | postfx::testing::BenchmarkFloor;
   create.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
   create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   create.maxWaterCascades = ocean.cascadeCount();
