@@ -186,8 +186,8 @@ Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
     return fail("objectCaustics.receivers.worldToLightClip is not invertible");
   if (!isDepthConvention(rec.depthConvention))
     return fail("objectCaustics.receivers.depthConvention is not a DepthConvention");
-  if (!inRange(rec.bias, 0.0, kMaxShadowBias))
-    return fail("objectCaustics.receivers.bias must be in [0, " + number(kMaxShadowBias) + "] m");
+  if (!within(rec.bias, kShadowBiasRange))
+    return fail("objectCaustics.receivers.bias must be in " + rangeText(kShadowBiasRange) + " m");
   return checkDepthTexture("objectCaustics.receivers.depth", rec.depth, error);
 }
 
