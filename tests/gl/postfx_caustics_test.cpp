@@ -121,6 +121,8 @@ TEST_F(PostfxCausticsTest, BeerLambertPerChannelAlongDepth) {
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 1);
   frame.sun.direction = {0.0, 1.0, 0.0};  // zenith: the path length is the depth itself
   frame.water.absorption = {0.4f, 0.07f, 0.02f};
+  // The sun path alone: the view path's factor is PostfxCompositionTest's.
+  frame.viewExtinction = postfx::ViewExtinction::Host;
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const auto hdr = postfxtest::readRgba(scene.target, spec.width, spec.height);
   const glm::vec3 sigma = frame.water.absorption;
