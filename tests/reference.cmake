@@ -45,3 +45,9 @@ target_include_directories(reference_frame_units_tests PRIVATE ${CMAKE_SOURCE_DI
 postfx_add_test(report_plot_tests
   SOURCES unit/report_plot_test.cpp
   LIBS ocean_report)
+
+# SunShadowMap's bias in metres and normal offset in texels on planes shadowing themselves
+# (a wall, 60 degree slopes, a floor under a grazing sun), through the report's plane G-buffer.
+postfx_add_test(postfx_shadow_bias_tests GL
+  SOURCES gl/postfx_shadow_bias_test.cpp
+  LIBS ocean_report glm::glm postfx::epoxy)

@@ -120,8 +120,8 @@ int main() {
 
   postfx::CreateDesc create;
   create.features = postfx::Feature::Caustics;
-  create.depthConvention = 1;  // forward [0,1]
-  create.normalEncoding = 1;   // world xyz float
+  create.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   create.maxWaterCascades = 1;
   postfx::Context* fx = nullptr;
   if (postfx::create(create, fx) != postfx::Result::Ok) {

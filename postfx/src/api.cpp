@@ -1,9 +1,11 @@
 // The public entry points: validation first, GL work only once everything is known good, and
 // no exception ever crossing the API boundary.
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 #include <glkit/current_context.h>
 
+#include <array>
 #include <memory>
 #include <new>
 
@@ -58,18 +60,18 @@ bool godRaysHaveWork(const Context& context, const FrameDesc& frame) {
 // nothing can land anywhere.
 bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
   const ObjectCausticsFrame& o = frame.objectCaustics;
-  return context.objectCausticsPass >= 0 && o.settings.enabled && o.casterCount > 0 &&
-         o.settings.intensity > 0.0f && frame.sun.direction.y > 0.0 &&
+  return hasFeature(context.desc.features, Feature::ObjectCaustics) && o.settings.enabled &&
+         o.casterCount > 0 && o.settings.intensity > 0.0f && frame.sun.direction.y > 0.0 &&
          detail::castersInReceiverView(o);
 }
 
 // The object caustics, timed as their own pass, after the seabed caustics and god rays.
 void drawObjectCaustics(Context& context, const FrameDesc& frame, int width, int height) {
   DebugGroup group("postfx.object_caustics");
-  if (hasFeature(context.desc.features, Feature::BenchmarkFloor)) glFinish();
-  context.timers.begin(context.objectCausticsPass);
+  if (hasFeature(context.desc.features, testing::BenchmarkFloor)) glFinish();
+  context.timers.begin(Pass::ObjectCaustics);
   context.objectCaustics.draw(frame, width, height);
-  context.timers.end(context.objectCausticsPass);
+  context.timers.end(Pass::ObjectCaustics);
 }
 
 Result refuse(std::string& error, const char* message) {
@@ -84,7 +86,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   detail::ValidatedTextures textures;
   r = detail::validateFrameTextures(context.desc, frame, textures, error);
   if (r != Result::Ok) return r;
-  if (context.objectCausticsPass >= 0) {
+  if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
     r = detail::validateObjectCaustics(frame, error);
     if (r != Result::Ok) return r;
   }
@@ -95,7 +97,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
-  const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
+  const bool floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
   // The floor runs whenever some timed pass does, so that every pass has its ratio.
   const bool fullScreen = caustics || godRays || (objects && floor);
@@ -112,7 +114,9 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   detail::GodRayGridPivot pivot = context.godRayPivot;
   shared::GodRaysBlock godBlock{};
   if (godRays) {
-    godBlock = detail::buildGodRaysBlock(frame, width, height, pivot);
+    godBlock = detail::buildGodRaysBlock(
+        frame, width, height, pivot,
+        context.godRaySampling == testing::GodRaySampling::UniformAlongRay);
     if (!detail::allFinite(godBlock))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
@@ -164,23 +168,22 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   }
 
   context.timers.beginFrame();
-  if (context.irradiancePass >= 0) {
+  if (hasFeature(context.desc.features, Feature::PhysicalCaustics)) {
     const double clamped = context.irradiance.pollClampCounts();
     if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
     if (!physical) {
-      context.timers.markSkipped(context.irradiancePass);
-      if (frame.caustics.model == CausticsModel::Seed002)
+      context.timers.markSkipped(Pass::CausticsIrradiance);
+      if (frame.caustics.model == CausticsModel::RayDeviation)
         context.timers.setClampedFluxFraction(0.0);
     }
   }
   if (!caustics) {
-    context.timers.markSkipped(Context::kCausticsPass);
+    context.timers.markSkipped(Pass::Caustics);
     context.caustics.clearRaw(width, height);
   }
-  if (!godRays && context.godRaysPass >= 0) context.timers.markSkipped(context.godRaysPass);
-  if (!objects && context.objectCausticsPass >= 0)
-    context.timers.markSkipped(context.objectCausticsPass);
-  if (!fullScreen && floor) context.timers.markSkipped(Context::kFloorPass);
+  if (!godRays) context.timers.markSkipped(Pass::GodRays);
+  if (!objects) context.timers.markSkipped(Pass::ObjectCaustics);
+  if (!fullScreen && floor) context.timers.markSkipped(Pass::Floor);
 
   if (fullScreen) {
     // The god rays draw under the caustics pass's state (its units, samplers and block).
@@ -191,9 +194,9 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
       // framebuffer, then the caustics pass's state is set again.
       DebugGroup irradianceGroup("postfx.caustics_irradiance");
       if (floor) glFinish();
-      context.timers.begin(context.irradiancePass);
+      context.timers.begin(Pass::CausticsIrradiance);
       context.irradiance.draw(frame, textures);
-      context.timers.end(context.irradiancePass);
+      context.timers.end(Pass::CausticsIrradiance);
       context.caustics.bindState(frame, textures, context.irradiance.texture());
     }
     // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass.
@@ -203,23 +206,23 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
     if (floor) {
       DebugGroup floorGroup("postfx.floor");
       glFinish();
-      context.timers.begin(Context::kFloorPass);
+      context.timers.begin(Pass::Floor);
       context.caustics.drawFloor();
-      context.timers.end(Context::kFloorPass);
+      context.timers.end(Pass::Floor);
     }
     if (caustics) {
       DebugGroup causticsGroup("postfx.caustics");
       if (floor) glFinish();
-      context.timers.begin(Context::kCausticsPass);
+      context.timers.begin(Pass::Caustics);
       context.caustics.drawCaustics();
-      context.timers.end(Context::kCausticsPass);
+      context.timers.end(Pass::Caustics);
     }
     if (godRays) {
       DebugGroup godRaysGroup("postfx.god_rays");
       if (floor) glFinish();
-      context.timers.begin(context.godRaysPass);
+      context.timers.begin(Pass::GodRays);
       context.godRays.draw(frame, width, height);
-      context.timers.end(context.godRaysPass);
+      context.timers.end(Pass::GodRays);
       context.godRays.finish();
       context.godRayPivot = pivot;
     }
@@ -231,6 +234,22 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
 }
 
 }  // namespace
+
+const char* toString(Pass pass) noexcept {
+  switch (pass) {
+    case Pass::CausticsIrradiance:
+      return "caustics_irradiance";
+    case Pass::Floor:
+      return "floor";
+    case Pass::Caustics:
+      return "caustics";
+    case Pass::GodRays:
+      return "god_rays";
+    case Pass::ObjectCaustics:
+      return "object_caustics";
+  }
+  return "unknown";
+}
 
 const char* toString(Result result) noexcept {
   switch (result) {
@@ -244,8 +263,6 @@ const char* toString(Result result) noexcept {
       return "UnsupportedFormat";
     case Result::SizeMismatch:
       return "SizeMismatch";
-    case Result::NotImplemented:
-      return "NotImplemented";
     case Result::ShaderCompileFailed:
       return "ShaderCompileFailed";
     case Result::GlError:
@@ -273,28 +290,25 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     context->desc = desc;
     r = context->caustics.init(desc, createError);
     if (r != Result::Ok) return r;
-    const bool floor = hasFeature(desc.features, Feature::BenchmarkFloor);
-    int passCount = floor ? 2 : 1;
-    const char* names[kMaxPasses] = {"caustics", "floor", "", "", ""};
+    std::array<bool, kPassCount> present{};
+    present[int(Pass::Caustics)] = hasFeature(desc.features, Feature::Caustics);
+    present[int(Pass::Floor)] = hasFeature(desc.features, testing::BenchmarkFloor);
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
-      context->godRaysPass = passCount;
-      names[passCount++] = "god_rays";
+      present[int(Pass::GodRays)] = true;
     }
     if (hasFeature(desc.features, Feature::PhysicalCaustics)) {
       r = context->irradiance.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
-      context->irradiancePass = passCount;
-      names[passCount++] = "caustics_irradiance";
+      present[int(Pass::CausticsIrradiance)] = true;
     }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
       r = context->objectCaustics.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
-      context->objectCausticsPass = passCount;
-      names[passCount++] = "object_caustics";
+      present[int(Pass::ObjectCaustics)] = true;
     }
-    context->timers.init(passCount, names);
+    context->timers.init(present);
     out = context.release();
     return Result::Ok;
   } catch (const std::bad_alloc&) {
@@ -341,6 +355,8 @@ ObjectCausticMap objectCausticMap(const Context& context) noexcept {
   return context.objectCaustics.map();
 }
 
+namespace testing {
+
 GlName rawCausticTexture(const Context& context) noexcept {
   return context.caustics.rawTexture();
 }
@@ -358,5 +374,17 @@ CausticIrradianceInfo causticIrradiance(const Context& context) noexcept {
     info.layerDepth[k] = static_cast<float>(l.depth[k]);
   return info;
 }
+
+Result setGodRaySampling(Context& context, GodRaySampling sampling) noexcept {
+  if (sampling != GodRaySampling::WorldGrid && sampling != GodRaySampling::UniformAlongRay) {
+    context.error = "setGodRaySampling: not a GodRaySampling";
+    return Result::InvalidArgument;
+  }
+  context.error.clear();
+  context.godRaySampling = sampling;
+  return Result::Ok;
+}
+
+}  // namespace testing
 
 }  // namespace postfx

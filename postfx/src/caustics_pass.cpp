@@ -1,5 +1,7 @@
 #include "caustics_pass.h"
 
+#include <postfx/testing.h>
+
 #include "host_target.h"
 
 #include <string>
@@ -13,11 +15,13 @@ namespace postfx::detail {
 std::string shaderDefines(const CreateDesc& desc) {
   auto flag = [&desc](Feature f) { return hasFeature(desc.features, f) ? "1" : "0"; };
   std::string d;
-  d += "#define POSTFX_DEPTH_CONVENTION " + std::to_string(desc.depthConvention) + "\n";
-  d += "#define POSTFX_NORMAL_ENCODING " + std::to_string(desc.normalEncoding) + "\n";
+  d += "#define POSTFX_DEPTH_CONVENTION " + std::to_string(static_cast<int>(desc.depthConvention)) +
+       "\n";
+  d += "#define POSTFX_NORMAL_ENCODING " + std::to_string(static_cast<int>(desc.normalEncoding)) +
+       "\n";
   d += std::string("#define POSTFX_DISPERSION ") + flag(Feature::Dispersion) + "\n";
   d += std::string("#define POSTFX_SHADOW_MASK ") + flag(Feature::ShadowMask) + "\n";
-  d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(Feature::RawCausticOutput) + "\n";
+  d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(testing::RawCausticOutput) + "\n";
   d += std::string("#define POSTFX_PHYSICAL ") + flag(Feature::PhysicalCaustics) + "\n";
   d += std::string("#define POSTFX_TRIPLANAR_WALLS ") + flag(Feature::TriplanarWalls) + "\n";
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
@@ -57,7 +61,7 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
                            defines, "postfx.caustics", program, error))
     return Result::ShaderCompileFailed;
   caustics_ = glkit::Program(program);
-  if (hasFeature(desc.features, Feature::BenchmarkFloor)) {
+  if (hasFeature(desc.features, testing::BenchmarkFloor)) {
     if (!glkit::buildProgram(shaderLibrary(),
                              {{GL_VERTEX_SHADER, "postfx/fullscreen.vert"},
                               {GL_FRAGMENT_SHADER, "postfx/floor.frag"}},
@@ -68,7 +72,7 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
     floor_ = glkit::Program(program);
   }
 
-  const bool raw = hasFeature(desc.features, Feature::RawCausticOutput);
+  const bool raw = hasFeature(desc.features, testing::RawCausticOutput);
   const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glCreateFramebuffers(1, &framebuffer_);
   glkit::label(GL_FRAMEBUFFER, framebuffer_, "postfx.caustics.framebuffer");
@@ -120,7 +124,7 @@ void CausticsPass::release() {
 }
 
 void CausticsPass::ensureRaw(int width, int height) {
-  if (!hasFeature(desc_.features, Feature::RawCausticOutput)) return;
+  if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
   if (rawTexture_ != 0 && rawWidth_ == width && rawHeight_ == height) return;
   if (rawTexture_ != 0) glDeleteTextures(1, &rawTexture_);
   glCreateTextures(GL_TEXTURE_2D, 1, &rawTexture_);
@@ -136,7 +140,7 @@ void CausticsPass::ensureRaw(int width, int height) {
 }
 
 void CausticsPass::clearRaw(int width, int height) {
-  if (!hasFeature(desc_.features, Feature::RawCausticOutput)) return;
+  if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
   ensureRaw(width, height);
   // A texture operation: no framebuffer, scissor or mask state involved.
   glClearTexImage(rawTexture_, 0, GL_RED, GL_FLOAT, nullptr);
@@ -191,8 +195,9 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   }
   if (hasFeature(desc_.features, Feature::ShadowMask)) {
     glBindTextureUnit(kShadowUnit, frame.shadow.depth.texture);
-    glBindSampler(kShadowUnit, frame.shadow.depthConvention == 0 ? shadowReverseSampler_
-                                                                 : shadowForwardSampler_);
+    glBindSampler(kShadowUnit, frame.shadow.depthConvention == DepthConvention::ReverseZ
+                                   ? shadowReverseSampler_
+                                   : shadowForwardSampler_);
   }
   if (irradiance != 0) {
     glBindTextureUnit(kIrradianceUnit, irradiance);

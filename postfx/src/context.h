@@ -4,6 +4,7 @@
 #include <string>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 #include "caustics_pass.h"
 #include "godrays_constants.h"
@@ -15,17 +16,13 @@
 namespace postfx {
 
 struct Context {
-  enum PassIndex { kCausticsPass = 0, kFloorPass = 1 };
-
   CreateDesc desc;
   detail::CausticsPass caustics;
   detail::GodRaysPass godRays;
   detail::GodRayGridPivot godRayPivot;
-  int godRaysPass = -1;  // timer index of "god_rays" (after the floor when there is one); -1: off
+  testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
-  int irradiancePass = -1;  // timer index of "caustics_irradiance"; -1: no PhysicalCaustics
   detail::ObjectCausticsPass objectCaustics;
-  int objectCausticsPass = -1;  // timer index of "object_caustics"; -1: feature off
   detail::GpuTimers timers;
   std::string error;
 };

@@ -4,7 +4,11 @@
 #include <cmath>
 
 #include <gbuffer/codec.h>
+
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "convention_checks.h"
+#include "shadow_light.h"
 
 #include "block_check.h"
 #include "irradiance_layout.h"
@@ -46,8 +50,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   b.viewToWorld = glm::mat4(glm::mat3(viewToWorldRotation(camera.view)));
   b.viewport = glm::vec4(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height),
                          static_cast<float>(width), static_cast<float>(height));
-  const gbuffer::ProjectionParams params = gbuffer::projectionParams(
-      camera.projection, static_cast<gbuffer::DepthConvention>(create.depthConvention));
+  const gbuffer::ProjectionParams params =
+      gbuffer::projectionParams(camera.projection, toGbuffer(create.depthConvention));
   b.projection = params.xy;
   const double levelRelative = surface.level - camera.position.y;
   const double radiansPerPixel = 2.0 / (std::abs(camera.projection[1][1]) * height);
@@ -68,6 +72,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   // nothing where up.y > 1e-6.
   const double upY = std::max(up.y, 1e-6);
   b.absorptionPerDepth = glm::vec4(glm::dvec3(surface.absorption) / upY, 0.0);
+  if (frame.viewExtinction == ViewExtinction::Plugin)
+    b.viewExtinction = glm::vec4(surface.absorption + surface.scattering, 0.0f);
   const double kx = up.x / upY, kz = up.z / upY;
   // No water texture (accepted only for object caustics alone): no cascade is read, by the floor
   // either.
@@ -103,8 +109,22 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
                                     glm::translate(glm::dmat4(1.0), camera.position));
   }
   // Reverse-Z stores larger depths nearer the light, so "toward the light" is +bias there.
-  const float bias = frame.shadow.depthConvention == 0 ? frame.shadow.bias : -frame.shadow.bias;
-  b.shadowParams = glm::vec4(bias, frame.shadow.depthConvention == 2 ? 1.0f : 0.0f, 0.0f, 0.0f);
+  const SunShadowMap& map = frame.shadow;
+  b.shadowParams =
+      glm::vec4(map.bias, map.depthConvention == DepthConvention::ForwardNegOneToOne ? 1.0f : 0.0f,
+                0.0f, 0.0f);
+  if (shadow) {
+    const ShadowLight light = shadowLight(map.worldToLightClip, map.depthConvention);
+    const glm::dvec3 relative = light.vector - camera.position;
+    b.shadowLight = light.perspective
+                        ? glm::vec4(saturatedFloat(relative.x), saturatedFloat(relative.y),
+                                    saturatedFloat(relative.z), 1.0f)
+                        : glm::vec4(glm::vec3(light.vector), 0.0f);
+    const glm::dvec2 perTexel =
+        clipUnitsToMetres(map.worldToLightClip) * double(map.normalOffsetTexels);
+    b.shadowNormalOffset =
+        glm::vec4(saturatedFloat(perTexel.x), saturatedFloat(perTexel.y), 0.0f, 0.0f);
+  }
   if (physicalCausticsActive(create, frame)) {
     const IrradianceLayout l = irradianceLayout(frame);
     b.irradianceWindow =

@@ -52,7 +52,7 @@ const glm::dvec3& GodRayGridPivot::follow(const GodRayGrid& grid, double spacing
 }
 
 shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int height,
-                                       GodRayGridPivot& pivot) {
+                                       GodRayGridPivot& pivot, bool uniformSampling) {
   shared::GodRaysBlock b{};
   const GodRaySettings& s = frame.godRays;
   const WaterSurface& water = frame.water;
@@ -66,8 +66,7 @@ shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int he
       frame.camera.position - pivot.follow(grid, spacing, frame.camera.position);
   b.gridOffset = glm::vec4(static_cast<float>(godRayGridPhase(glm::dot(camera, grid.x), spacing)),
                            static_cast<float>(godRayGridPhase(glm::dot(camera, grid.z), spacing)),
-                           s.sampling == GodRaySampling::UniformAlongRay ? 1.0f : 0.0f,
-                           s.dither ? 1.0f : 0.0f);
+                           uniformSampling ? 1.0f : 0.0f, s.dither ? 1.0f : 0.0f);
   b.fade = glm::vec4(s.surfaceFadeDistance, s.depthFadeDistance, s.maxDistance, 0.0f);
   const glm::dvec3 extinction = glm::dvec3(water.absorption) + glm::dvec3(water.scattering);
   b.extinction = glm::vec4(glm::vec3(extinction), 0.0f);

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 #include "shared_math.h"
 
@@ -60,8 +61,9 @@ inline int godRayReducedSize(int size, GodRayResolution resolution) {
 }
 
 // `width` x `height`: the target's. `pivot` follows the camera (see GodRayGridPivot); pass a
-// copy of the context's and keep it only once the frame is drawn.
+// copy of the context's and keep it only once the frame is drawn. `uniformSampling`: the test
+// hook testing::GodRaySampling::UniformAlongRay instead of the world grid.
 shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int height,
-                                       GodRayGridPivot& pivot);
+                                       GodRayGridPivot& pivot, bool uniformSampling = false);
 
 }  // namespace postfx::detail

@@ -8,14 +8,16 @@ GpuTimers::~GpuTimers() {
   release();
 }
 
-void GpuTimers::init(int passCount, const char* const* names) {
+void GpuTimers::init(const std::array<bool, kPassCount>& present) {
   release();
-  passCount_ = std::min(passCount, kMaxPasses);
   stats_ = FrameStats{};
-  stats_.passCount = passCount_;
-  for (int p = 0; p < passCount_; ++p) stats_.passes[p].name = names[p];
+  for (int p = 0; p < kPassCount; ++p) {
+    stats_.passes[p].present = present[p];
+    anyPass_ = anyPass_ || present[p];
+  }
   for (auto& frame : queries_)
-    for (int p = 0; p < passCount_; ++p) {
+    for (int p = 0; p < kPassCount; ++p) {
+      if (!present[p]) continue;
       glCreateQueries(GL_TIMESTAMP, 2, frame[p].data());
       glCreateQueries(GL_TIME_ELAPSED, 1, &frame[p][2]);
     }
@@ -30,12 +32,12 @@ void GpuTimers::release() {
   slots_ = {};
   history_ = {};
   frame_ = oldest_ = 0;
-  passCount_ = 0;
+  anyPass_ = false;
 }
 
 bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
   // All of a frame or none of it, so "last" always describes one frame.
-  for (int p = 0; p < passCount_; ++p) {
+  for (int p = 0; p < kPassCount; ++p) {
     const bool elapsed = slot.state[p] == SlotState::IssuedElapsed;
     if (!elapsed && slot.state[p] != SlotState::IssuedTimestamps) continue;
     GLuint available = GL_FALSE;
@@ -43,7 +45,7 @@ bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
                         &available);
     if (available != GL_TRUE) return false;
   }
-  for (int p = 0; p < passCount_; ++p) {
+  for (int p = 0; p < kPassCount; ++p) {
     if (slot.state[p] == SlotState::IssuedElapsed) {
       GLuint64 ns = 0;
       glGetQueryObjectui64v(queries_[slotIndex][p][2], GL_QUERY_RESULT, &ns);
@@ -79,7 +81,7 @@ void GpuTimers::record(int pass, double ms, bool skipped) {
 }
 
 void GpuTimers::beginFrame() {
-  if (passCount_ == 0) return;
+  if (!anyPass_) return;
   glBindBuffer(GL_QUERY_BUFFER, 0);
   while (oldest_ < frame_) {
     const int index = static_cast<int>(oldest_ % kTimerRingDepth);
@@ -98,12 +100,12 @@ void GpuTimers::beginFrame() {
   slot.open = true;
 }
 
-void GpuTimers::begin(int pass) {
-  if (pass >= passCount_) return;
+void GpuTimers::begin(Pass pass) {
+  if (!has(pass)) return;
   GLint hostQuery = 0;
   glGetQueryiv(GL_TIME_ELAPSED, GL_CURRENT_QUERY, &hostQuery);
   elapsedActive_ = hostQuery == 0;
-  const auto& queries = queries_[frame_ % kTimerRingDepth][pass];
+  const auto& queries = queries_[frame_ % kTimerRingDepth][static_cast<int>(pass)];
   if (elapsedActive_) {
     glBeginQuery(GL_TIME_ELAPSED, queries[2]);
   } else {
@@ -111,25 +113,26 @@ void GpuTimers::begin(int pass) {
   }
 }
 
-void GpuTimers::end(int pass) {
-  if (pass >= passCount_) return;
+void GpuTimers::end(Pass pass) {
+  if (!has(pass)) return;
   const int index = static_cast<int>(frame_ % kTimerRingDepth);
+  const int p = static_cast<int>(pass);
   if (elapsedActive_) {
     glEndQuery(GL_TIME_ELAPSED);
-    slots_[index].state[pass] = SlotState::IssuedElapsed;
+    slots_[index].state[p] = SlotState::IssuedElapsed;
   } else {
-    glQueryCounter(queries_[index][pass][1], GL_TIMESTAMP);
-    slots_[index].state[pass] = SlotState::IssuedTimestamps;
+    glQueryCounter(queries_[index][p][1], GL_TIMESTAMP);
+    slots_[index].state[p] = SlotState::IssuedTimestamps;
   }
 }
 
-void GpuTimers::markSkipped(int pass) {
-  if (pass >= passCount_) return;
-  slots_[frame_ % kTimerRingDepth].state[pass] = SlotState::Skipped;
+void GpuTimers::markSkipped(Pass pass) {
+  if (!has(pass)) return;
+  slots_[frame_ % kTimerRingDepth].state[static_cast<int>(pass)] = SlotState::Skipped;
 }
 
 void GpuTimers::endFrame() {
-  if (passCount_ == 0) return;
+  if (!anyPass_) return;
   ++frame_;
   ++stats_.framesDispatched;
 }

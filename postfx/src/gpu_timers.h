@@ -11,7 +11,7 @@
 #include <array>
 #include <cstdint>
 
-#include <postfx/stats.h>
+#include <postfx/diagnostics.h>
 
 namespace postfx::detail {
 
@@ -22,16 +22,17 @@ class GpuTimers {
   GpuTimers& operator=(const GpuTimers&) = delete;
   ~GpuTimers();
 
-  // Names are static strings; creates the query objects (DSA, no binding changes).
-  void init(int passCount, const char* const* names);
+  // Creates the query objects of the passes the context has (DSA, no binding changes).
+  void init(const std::array<bool, kPassCount>& present);
   void release();
 
   // Reads every completed frame in order, then opens a slot for this frame. Binds
   // GL_QUERY_BUFFER to 0 while reading (so results land in client memory): call under a guard.
   void beginFrame();
-  void begin(int pass);        // timestamp before the pass's GL work
-  void end(int pass);          // timestamp after it
-  void markSkipped(int pass);  // the pass had nothing to do this frame: it resolves to 0 ms
+  // A pass the context does not have is ignored by all three.
+  void begin(Pass pass);        // timestamp before the pass's GL work
+  void end(Pass pass);          // timestamp after it
+  void markSkipped(Pass pass);  // the pass had nothing to do this frame: it resolves to 0 ms
   void endFrame();
 
   const FrameStats& stats() const { return stats_; }
@@ -41,7 +42,7 @@ class GpuTimers {
  private:
   enum class SlotState : std::uint8_t { Empty, IssuedTimestamps, IssuedElapsed, Skipped };
   struct Slot {
-    std::array<SlotState, kMaxPasses> state{};
+    std::array<SlotState, kPassCount> state{};
     bool open = false;  // frame dispatched, timings not yet read
   };
   struct History {
@@ -52,12 +53,13 @@ class GpuTimers {
   bool tryResolve(Slot& slot, int slotIndex);
   void record(int pass, double ms, bool skipped);
 
-  int passCount_ = 0;
+  bool has(Pass pass) const { return stats_.pass(pass).present; }
+  bool anyPass_ = false;
   // Per frame and pass: timestamp begin, timestamp end, time elapsed.
-  std::array<std::array<std::array<GLuint, 3>, kMaxPasses>, kTimerRingDepth> queries_{};
+  std::array<std::array<std::array<GLuint, 3>, kPassCount>, kTimerRingDepth> queries_{};
   bool elapsedActive_ = false;
   std::array<Slot, kTimerRingDepth> slots_{};
-  std::array<History, kMaxPasses> history_{};
+  std::array<History, kPassCount> history_{};
   std::uint64_t frame_ = 0;   // frames begun
   std::uint64_t oldest_ = 0;  // oldest frame not yet resolved or dropped
   FrameStats stats_;

@@ -1,5 +1,7 @@
 #include "memory_estimate.h"
 
+#include <postfx/testing.h>
+
 #include "godrays_constants.h"
 
 namespace postfx::detail {
@@ -18,7 +20,7 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
             const FramePasses& passes) {
   Terms t;
   const std::uint64_t pixels = static_cast<std::uint64_t>(width) * std::uint64_t(height);
-  if (hasFeature(create.features, Feature::RawCausticOutput)) t.raw = pixels * 2;  // R16F
+  if (hasFeature(create.features, testing::RawCausticOutput)) t.raw = pixels * 2;  // R16F
   if (passes.godRays && frame.godRays.resolution != GodRayResolution::Full)
     t.godRays = static_cast<std::uint64_t>(godRayReducedSize(width, frame.godRays.resolution)) *
                 std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) * 8;  // RGBA16F

@@ -6,6 +6,8 @@
 
 #include <gbuffer/codec.h>
 
+#include "convention_checks.h"
+
 #include "block_check.h"
 #include "frame_constants.h"
 
@@ -158,14 +160,15 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   const double cell = 2.0 * f.halfGrid / s.gridSize, texel = 2.0 * f.halfMap / s.mapSize;
   b.grid = glm::vec4(float(s.gridSize), float(s.mapSize), s.splatRadius,
                      float((cell * cell) / (texel * texel)));
-  const int conv = objects.receivers.depthConvention;
+  const DepthConvention conv = objects.receivers.depthConvention;
   b.receiver =
-      glm::vec4(conv == 2 ? 1.0f : 0.0f, conv == 0 ? 0.0f : 1.0f, objects.receivers.bias, 0.0f);
+      glm::vec4(conv == DepthConvention::ForwardNegOneToOne ? 1.0f : 0.0f,
+                conv == DepthConvention::ReverseZ ? 0.0f : 1.0f, objects.receivers.bias, 0.0f);
   const glm::dvec3 cameraOffset = frame.camera.position - f.anchor;
   b.cameraOffset = glm::vec4(glm::vec3(cameraOffset), float(frame.water.level - f.anchor.y));
   b.viewport = glm::vec4(1.0f / float(width), 1.0f / float(height), float(width), float(height));
-  const gbuffer::ProjectionParams params = gbuffer::projectionParams(
-      frame.camera.projection, static_cast<gbuffer::DepthConvention>(create.depthConvention));
+  const gbuffer::ProjectionParams params =
+      gbuffer::projectionParams(frame.camera.projection, toGbuffer(create.depthConvention));
   b.projection = params.xy;
   b.depthParams = glm::vec4(params.z, f.underwater ? 1.0f : 0.0f, float(s.exitIterations));
   b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
@@ -174,6 +177,8 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
   b.splatScale = glm::vec4(float(1.0 / texel), kMaxRoughSplatSigma, 0.0f, 0.0f);
   const bool dispersion = hasFeature(create.features, Feature::Dispersion);
+  if (frame.viewExtinction == ViewExtinction::Plugin)
+    b.viewExtinction = glm::vec4(frame.water.absorption + frame.water.scattering, 0.0f);
   for (int c = 0; c < objects.casterCount && c < POSTFX_MAX_CASTERS; ++c) {
     const CasterMaterial& m = objects.casters[c].material;
     const bool reflective = m.type == CasterMaterialType::Reflective;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "convention_checks.h"
 #include "object_caustics_frame.h"
 #include "validation.h"
 
@@ -33,13 +34,13 @@ GLint64 bufferSize(GLuint buffer) {
   return size;
 }
 
-int indexBytes(GLenum type) {
+int indexBytes(IndexType type) {
   switch (type) {
-    case GL_UNSIGNED_INT:
+    case IndexType::UnsignedInt:
       return 4;
-    case GL_UNSIGNED_SHORT:
+    case IndexType::UnsignedShort:
       return 2;
-    case GL_UNSIGNED_BYTE:
+    case IndexType::UnsignedByte:
       return 1;
     default:
       return 0;
@@ -96,7 +97,8 @@ Result checkCaster(int index, const CasterMesh& m, std::string& error) {
   if (indexed) {
     const int bytes = indexBytes(m.indexType);
     if (bytes == 0)
-      return fail(".indexType must be GL_UNSIGNED_INT, GL_UNSIGNED_SHORT or GL_UNSIGNED_BYTE");
+      return fail(".indexType " + std::to_string(static_cast<std::uint32_t>(m.indexType)) +
+                  " is not an IndexType (UnsignedInt, UnsignedShort or UnsignedByte)");
     const GLint64 indexBufferBytes = bufferSize(m.indexBuffer);
     if (indexBufferBytes < 0)
       return fail(".indexBuffer " + std::to_string(m.indexBuffer) + " is not a buffer name",
@@ -191,9 +193,10 @@ Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
     return fail("objectCaustics.receivers.worldToLightClip is not finite");
   if (!(std::abs(glm::determinant(rec.worldToLightClip)) > 1e-300))
     return fail("objectCaustics.receivers.worldToLightClip is not invertible");
-  if (rec.depthConvention < 0 || rec.depthConvention > 2)
-    return fail("objectCaustics.receivers.depthConvention must be 0, 1 or 2");
-  if (!inRange(rec.bias, 0.0, 1.0)) return fail("objectCaustics.receivers.bias must be in [0, 1]");
+  if (!isDepthConvention(rec.depthConvention))
+    return fail("objectCaustics.receivers.depthConvention is not a DepthConvention");
+  if (!within(rec.bias, kShadowBiasRange))
+    return fail("objectCaustics.receivers.bias must be in " + rangeText(kShadowBiasRange) + " m");
   return checkDepthTexture("objectCaustics.receivers.depth", rec.depth, error);
 }
 

@@ -1,5 +1,8 @@
 #include "validation.h"
 
+#include "convention_checks.h"
+#include "gl_enum_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -36,10 +39,18 @@ bool inRange(const glm::vec3& v, double lo, double hi) {
   return inRange(v.x, lo, hi) && inRange(v.y, lo, hi) && inRange(v.z, lo, hi);
 }
 
-std::string formatName(GLenum format) {
+}  // namespace
+
+std::string number(double value) {
   std::ostringstream s;
-  s << "0x" << std::hex << format;
+  s << value;
   return s.str();
+}
+
+namespace {
+
+std::string formatName(GLenum format) {
+  return glEnumName(format);
 }
 
 struct TextureFacts {
@@ -103,7 +114,7 @@ constexpr std::initializer_list<GLenum> kDepthFormats = {
     GL_DEPTH_COMPONENT16,  GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
     GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
 
-std::initializer_list<GLenum> normalFormats(int encoding) {
+std::initializer_list<GLenum> normalFormats(NormalEncoding encoding) {
   static constexpr std::initializer_list<GLenum> octahedral = {
       GL_RG16_SNORM, GL_RG8_SNORM, GL_RG16F, GL_RG32F, GL_RGBA16_SNORM, GL_RGBA16F, GL_RGBA32F};
   static constexpr std::initializer_list<GLenum> xyz = {
@@ -111,7 +122,9 @@ std::initializer_list<GLenum> normalFormats(int encoding) {
       GL_RGB16_SNORM, GL_RGBA16_SNORM, GL_RGBA8_SNORM, GL_R11F_G11F_B10F};
   static constexpr std::initializer_list<GLenum> unorm = {GL_RGBA8, GL_RGB8, GL_RGB10_A2, GL_RGBA16,
                                                           GL_RGB16};
-  return encoding == 0 ? octahedral : (encoding == 1 ? xyz : unorm);
+  return encoding == NormalEncoding::Octahedral
+             ? octahedral
+             : (encoding == NormalEncoding::WorldXyz ? xyz : unorm);
 }
 
 Result checkDepthMode(const char* field, GLuint texture, std::string& error) {
@@ -173,21 +186,24 @@ Result validateGodRays(const GodRaySettings& g, std::string& error) {
     error = std::move(message);
     return Result::InvalidArgument;
   };
-  if (g.sampleCount < 4 || g.sampleCount > 64)
-    return fail("godRays.sampleCount must be in [4, 64], got " + std::to_string(g.sampleCount));
-  if (!inRange(g.gridSpacing, 0.01f, 1e3))
-    return fail("godRays.gridSpacing must be in [0.01, 1e3] m");
-  if (!inRange(g.intensity, 0.0, 1e4)) return fail("godRays.intensity must be in [0, 1e4]");
-  if (!inRange(g.surfaceFadeDistance, 0.0, 1e4))
-    return fail("godRays.surfaceFadeDistance must be in [0, 1e4] m");
-  if (!inRange(g.depthFadeDistance, 0.0, 1e5))
-    return fail("godRays.depthFadeDistance must be in [0, 1e5] m");
-  if (!inRange(g.maxDistance, 0.1, 1e5)) return fail("godRays.maxDistance must be in [0.1, 1e5] m");
+  auto outside = [&fail](const char* field, auto range, const char* unit) {
+    return fail(std::string("godRays.") + field + " must be in " + rangeText(range) + unit);
+  };
+  if (!kGodRaySampleCountRange.contains(g.sampleCount))
+    return fail("godRays.sampleCount must be in " + rangeText(kGodRaySampleCountRange) + ", got " +
+                std::to_string(g.sampleCount));
+  if (!within(g.gridSpacing, kGridSpacingRange))
+    return outside("gridSpacing", kGridSpacingRange, " m");
+  if (!within(g.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
+  if (!within(g.surfaceFadeDistance, kFadeDepthRange))
+    return outside("surfaceFadeDistance", kFadeDepthRange, " m");
+  if (!within(g.depthFadeDistance, kDepthFadeDistanceRange))
+    return outside("depthFadeDistance", kDepthFadeDistanceRange, " m");
+  if (!within(g.maxDistance, kMaxMarchDistanceRange))
+    return outside("maxDistance", kMaxMarchDistanceRange, " m");
   if (g.resolution != GodRayResolution::Full && g.resolution != GodRayResolution::Half &&
       g.resolution != GodRayResolution::Quarter)
     return fail("godRays.resolution is not a GodRayResolution");
-  if (g.sampling != GodRaySampling::WorldGrid && g.sampling != GodRaySampling::UniformAlongRay)
-    return fail("godRays.sampling is not a GodRaySampling");
   return Result::Ok;
 }
 
@@ -196,14 +212,14 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }
-  if (desc.depthConvention < 0 || desc.depthConvention > 2) {
-    error =
-        "CreateDesc.depthConvention must be 0, 1 or 2, got " + std::to_string(desc.depthConvention);
+  if (!isDepthConvention(desc.depthConvention)) {
+    error = "CreateDesc.depthConvention " + std::to_string(static_cast<int>(desc.depthConvention)) +
+            " is not a DepthConvention";
     return Result::InvalidArgument;
   }
-  if (desc.normalEncoding < 0 || desc.normalEncoding > 2) {
-    error =
-        "CreateDesc.normalEncoding must be 0, 1 or 2, got " + std::to_string(desc.normalEncoding);
+  if (!isNormalEncoding(desc.normalEncoding)) {
+    error = "CreateDesc.normalEncoding " + std::to_string(static_cast<int>(desc.normalEncoding)) +
+            " is not a NormalEncoding";
     return Result::InvalidArgument;
   }
   if (desc.waterTexture != WaterTextureType::Array2D &&
@@ -255,12 +271,14 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   // The length is formed from components already bounded, so its square cannot overflow (a
   // sun of (0, 1e300, 0) once had an infinite length and was normalised to zero).
   const Sun& sun = frame.sun;
-  if (!inRange(sun.direction.x, -kMaxSunLength, kMaxSunLength) ||
-      !inRange(sun.direction.y, -kMaxSunLength, kMaxSunLength) ||
-      !inRange(sun.direction.z, -kMaxSunLength, kMaxSunLength) ||
-      !inRange(glm::length(sun.direction), kMinSunLength, kMaxSunLength))
-    return fail("sun.direction must be finite with a length in [1e-6, 1e6] (it is normalised)");
-  if (!inRange(sun.irradiance, 0.0, 1e9)) return fail("sun.irradiance must be in [0, 1e9]");
+  const double maxSun = kSunLengthRange.max;
+  if (!inRange(sun.direction.x, -maxSun, maxSun) || !inRange(sun.direction.y, -maxSun, maxSun) ||
+      !inRange(sun.direction.z, -maxSun, maxSun) ||
+      !within(glm::length(sun.direction), kSunLengthRange))
+    return fail("sun.direction must be finite with a length in " + rangeText(kSunLengthRange) +
+                " (it is normalised)");
+  if (!within(sun.irradiance, kIrradianceRange))
+    return fail("sun.irradiance must be in " + rangeText(kIrradianceRange));
 
   const WaterSurface& water = frame.water;
   if (!std::isfinite(water.level)) return fail("water.level is not finite");
@@ -276,56 +294,76 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
     return fail("water.cascadeCount must be in [1, " + std::to_string(maxCascades) +
                 "] (CreateDesc.maxWaterCascades), got " + std::to_string(water.cascadeCount));
   for (int c = 0; c < water.cascadeCount; ++c)
-    if (!inRange(water.tileSize[c], 1e-3, 1e7))
-      return fail("water.tileSize[" + std::to_string(c) + "] must be in [1e-3, 1e7] m");
+    if (!within(water.tileSize[c], kTileSizeRange))
+      return fail("water.tileSize[" + std::to_string(c) + "] must be in " +
+                  rangeText(kTileSizeRange) + " m");
   for (int c = 0; c < water.cascadeCount; ++c) {
-    if (!inRange(water.rmsLaplacian[c], 0.0, 1e9))
-      return fail("water.rmsLaplacian[" + std::to_string(c) + "] must be in [0, 1e9] 1/m");
-    if (!inRange(water.longestWavelength[c], 0.0, 1e9))
-      return fail("water.longestWavelength[" + std::to_string(c) + "] must be in [0, 1e9] m");
+    if (!within(water.rmsLaplacian[c], kWaveStatisticRange))
+      return fail("water.rmsLaplacian[" + std::to_string(c) + "] must be in " +
+                  rangeText(kWaveStatisticRange) + " 1/m");
+    if (!within(water.longestWavelength[c], kWaveStatisticRange))
+      return fail("water.longestWavelength[" + std::to_string(c) + "] must be in " +
+                  rangeText(kWaveStatisticRange) + " m");
   }
-  if (!inRange(water.ior, 1.0, 3.0)) return fail("water.ior must be in [1, 3]");
-  if (hasFeature(create.features, Feature::Dispersion) && !inRange(water.iorRgb, 1.0, 3.0))
-    return fail("water.iorRgb must be in [1, 3]");
-  if (!inRange(water.absorption, 0.0, 1e3)) return fail("water.absorption must be in [0, 1e3]");
-  if (hasFeature(create.features, Feature::GodRays) && !inRange(water.scattering, 0.0, 1e3))
-    return fail("water.scattering must be in [0, 1e3]");
+  if (!within(water.ior, kIorRange)) return fail("water.ior must be in " + rangeText(kIorRange));
+  if (hasFeature(create.features, Feature::Dispersion) && !within(water.iorRgb, kIorRange))
+    return fail("water.iorRgb must be in " + rangeText(kIorRange));
+  if (!within(water.absorption, kWaterCoefficientRange))
+    return fail("water.absorption must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
+  if (hasFeature(create.features, Feature::GodRays) &&
+      !within(water.scattering, kWaterCoefficientRange))
+    return fail("water.scattering must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
 
   if (hasFeature(create.features, Feature::ShadowMask)) {
     const SunShadowMap& shadow = frame.shadow;
     if (!finite(shadow.worldToLightClip)) return fail("shadow.worldToLightClip is not finite");
-    if (shadow.depthConvention < 0 || shadow.depthConvention > 2)
-      return fail("shadow.depthConvention must be 0, 1 or 2");
-    if (!inRange(shadow.bias, 0.0, 1.0)) return fail("shadow.bias must be in [0, 1]");
+    if (!isDepthConvention(shadow.depthConvention))
+      return fail("shadow.depthConvention is not a DepthConvention");
+    if (!within(shadow.bias, kShadowBiasRange))
+      return fail("shadow.bias must be in " + rangeText(kShadowBiasRange) + " m");
+    if (!within(shadow.normalOffsetTexels, kShadowNormalOffsetRange))
+      return fail("shadow.normalOffsetTexels must be in " + rangeText(kShadowNormalOffsetRange) +
+                  " texels");
   }
 
+  if (frame.viewExtinction != ViewExtinction::Plugin &&
+      frame.viewExtinction != ViewExtinction::Host)
+    return fail("viewExtinction is not a ViewExtinction");
+  if (frame.viewExtinction == ViewExtinction::Host &&
+      hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled)
+    return fail(
+        "viewExtinction Host with god rays enabled: a fog after dispatch would attenuate the "
+        "shafts a second time (use ViewExtinction::Plugin and fog before dispatch)");
   const CausticsSettings& s = frame.caustics;
-  if (!inRange(s.tau, 0.0, 1e6)) return fail("caustics.tau must be in [0, 1e6]");
-  if (!inRange(s.reflectionWeight, 0.0, 1.0))
-    return fail("caustics.reflectionWeight must be in [0, 1]");
-  if (!inRange(s.intensity, 0.0, 1e4)) return fail("caustics.intensity must be in [0, 1e4]");
-  if (!inRange(s.surfaceFadeDepth, 0.0, 1e4))
-    return fail("caustics.surfaceFadeDepth must be in [0, 1e4] m");
-  if (!inRange(s.triplanarSharpness, 1.0, 32.0))
-    return fail("caustics.triplanarSharpness must be in [1, 32]");
-  if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
-  if (!inRange(s.minCascadeContrast, 0.0, 1.0))
-    return fail("caustics.minCascadeContrast must be in [0, 1]");
-  if (s.model != CausticsModel::Seed002 && s.model != CausticsModel::WavefrontAreaRatio)
+  auto outside = [&fail](const char* field, auto range, const char* unit) {
+    return fail(std::string("caustics.") + field + " must be in " + rangeText(range) + unit);
+  };
+  if (!within(s.tau, kTauRange)) return outside("tau", kTauRange, "");
+  if (!within(s.reflectionWeight, kUnitRange)) return outside("reflectionWeight", kUnitRange, "");
+  if (!within(s.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
+  if (!within(s.surfaceFadeDepth, kFadeDepthRange))
+    return outside("surfaceFadeDepth", kFadeDepthRange, " m");
+  if (!within(s.triplanarSharpness, kTriplanarSharpnessRange))
+    return outside("triplanarSharpness", kTriplanarSharpnessRange, "");
+  if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", kLodBiasRange, "");
+  if (!within(s.minCascadeContrast, kUnitRange))
+    return outside("minCascadeContrast", kUnitRange, "");
+  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio)
     return fail("caustics.model is not a CausticsModel");
   if (s.model == CausticsModel::WavefrontAreaRatio &&
       !hasFeature(create.features, Feature::PhysicalCaustics))
     return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");
-  if (s.gridResolution < 64 || s.gridResolution > 1024)
-    return fail("caustics.gridResolution must be in [64, 1024], got " +
+  if (!kGridResolutionRange.contains(s.gridResolution))
+    return fail("caustics.gridResolution must be in " + rangeText(kGridResolutionRange) + ", got " +
                 std::to_string(s.gridResolution));
-  if (!inRange(s.windowSize, 1.0, 1e4)) return fail("caustics.windowSize must be in [1, 1e4] m");
-  if (s.depthLayers < 1 || s.depthLayers > 8)
-    return fail("caustics.depthLayers must be in [1, 8], got " + std::to_string(s.depthLayers));
-  if (!inRange(s.maxReceiverDepth, 0.01, 1e4))
-    return fail("caustics.maxReceiverDepth must be in [0.01, 1e4] m");
-  if (!inRange(s.maxIrradiance, 1.0, 1e4))
-    return fail("caustics.maxIrradiance must be in [1, 1e4]");
+  if (!within(s.windowSize, kWindowSizeRange)) return outside("windowSize", kWindowSizeRange, " m");
+  if (!kDepthLayersRange.contains(s.depthLayers))
+    return fail("caustics.depthLayers must be in " + rangeText(kDepthLayersRange) + ", got " +
+                std::to_string(s.depthLayers));
+  if (!within(s.maxReceiverDepth, kMaxReceiverDepthRange))
+    return outside("maxReceiverDepth", kMaxReceiverDepthRange, " m");
+  if (!within(s.maxIrradiance, kMaxIrradianceRange))
+    return outside("maxIrradiance", kMaxIrradianceRange, "");
   if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }

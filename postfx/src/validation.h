@@ -19,8 +19,23 @@ inline constexpr double kMaxWorldCoordinate = 1e9;
 inline std::string worldExtentText() {
   return "1e9";
 }
-// Sun::direction is normalised by the plugin; lengths outside this range are refused.
-inline constexpr double kMinSunLength = 1e-6, kMaxSunLength = 1e6;
+// A range bound as a message prints it: shortest round-trip form ("100", "0.5", "1e+06").
+std::string number(double value);
+
+// The range as a message prints it, "[0, 1e6]".
+template <typename T>
+std::string rangeText(Range<T> r) {
+  return "[" + number(double(r.min)) + ", " + number(double(r.max)) + "]";
+}
+// Whether the value (every component of a vector) lies in the range; NaN never does.
+template <typename T>
+bool within(double value, Range<T> r) {
+  return value >= double(r.min) && value <= double(r.max);
+}
+template <typename T>
+bool within(const glm::vec3& v, Range<T> r) {
+  return within(v.x, r) && within(v.y, r) && within(v.z, r);
+}
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error);
 

@@ -19,11 +19,13 @@ double viewDistance(double ndcZ, const glm::dmat4& projection) {
 }  // namespace
 
 bool frustumReachesBelowWater(const glm::dmat3& viewToWorld, const glm::dmat4& projection,
-                              int depthConvention, double levelRelative) {
+                              DepthConvention depthConvention, double levelRelative) {
   if (levelRelative >= 0.0) return true;  // the camera itself is at or under the level
   // NDC depth of the near and far planes per convention (0 reverse-Z, 1 fwd [0,1], 2 fwd [-1,1]).
-  const double nearNdc = depthConvention == 0 ? 1.0 : (depthConvention == 1 ? 0.0 : -1.0);
-  const double farNdc = depthConvention == 0 ? 0.0 : 1.0;
+  const bool reverse = depthConvention == DepthConvention::ReverseZ;
+  const double nearNdc =
+      reverse ? 1.0 : (depthConvention == DepthConvention::ForwardZeroToOne ? 0.0 : -1.0);
+  const double farNdc = reverse ? 0.0 : 1.0;
   const double nearDistance = viewDistance(nearNdc, projection);
   const double farDistance = viewDistance(farNdc, projection);
   if (!std::isfinite(nearDistance)) return true;  // not a projection we understand: run

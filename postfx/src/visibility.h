@@ -2,6 +2,8 @@
 // The CPU test that lets dispatch() skip the caustics pass when it has nothing to do.
 #include <glm/glm.hpp>
 
+#include <postfx/conventions.h>
+
 namespace postfx::detail {
 
 // True when some point of the view frustum lies below the water level: the camera is under it,
@@ -9,6 +11,6 @@ namespace postfx::detail {
 // depth along a downward edge). `levelRelative` = water level - camera y (m). Conservative: a
 // true result may still find every pixel above the water, a false one never misses a pixel.
 bool frustumReachesBelowWater(const glm::dmat3& viewToWorld, const glm::dmat4& projection,
-                              int depthConvention, double levelRelative);
+                              DepthConvention depthConvention, double levelRelative);
 
 }  // namespace postfx::detail

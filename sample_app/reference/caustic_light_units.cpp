@@ -16,16 +16,22 @@ CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame) {
   units.lightScale = frame.sun.irradiance * frame.caustics.intensity;
   units.absorptionPerDepth = glm::vec3(glm::dvec3(frame.water.absorption) / units.upY);
   units.fadeDepth = frame.caustics.surfaceFadeDepth;
+  if (frame.viewExtinction == postfx::ViewExtinction::Plugin)
+    units.viewExtinction = frame.water.absorption + frame.water.scattering;
+  units.levelRelative = static_cast<float>(frame.water.level - frame.camera.position.y);
   return units;
 }
 
 glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
-                                double depthBelow, double tracedIrradiance) {
+                                double depthBelow, double tracedIrradiance, double viewDistance) {
   const float depth = static_cast<float>(depthBelow);
   const float bracket = static_cast<float>(tracedIrradiance * units.upY);
   return postfx::shared::sanitizeAlbedo(albedo) * units.lightScale *
          postfx::shared::causticTransmittance(units.absorptionPerDepth, depth) *
-         (bracket * postfx::shared::causticSurfaceFade(depth, units.fadeDepth));
+         (bracket * postfx::shared::causticSurfaceFade(depth, units.fadeDepth)) *
+         glm::exp(-units.viewExtinction *
+                  postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
+                                                      units.levelRelative));
 }
 
 }  // namespace ocean::reference

@@ -2,6 +2,7 @@
 // The light the plugin's seabed-caustics pass adds to a pixel, in its own units, with its
 // caustic factor replaced by traced irradiance. The plugin (shaders/postfx/caustics.frag) adds
 //     albedo * E_sun * intensity * exp(-absorption d / u.y) * fade(d) * [omega * (n.u) * vis]
+//     * exp(-sigma_t * submerged view length)   (FrameDesc::viewExtinction Plugin only)
 // for a receiver d metres under the level, u the unperturbed refracted sun reversed, n the
 // G-buffer normal, vis its shadow-map visibility and omega its caustic factor (1 for flat
 // water). The bracket is the caustic irradiance relative to flat water's on a horizontal
@@ -23,12 +24,15 @@ struct CausticLightUnits {
   glm::vec3 absorptionPerDepth{0.0f};  // absorption / u.y (1/m)
   float fadeDepth = 0.0f;              // CausticsSettings::surfaceFadeDepth
   double upY = 1.0;                    // u.y
+  glm::vec3 viewExtinction{0.0f};      // sigma_t with ViewExtinction::Plugin, else 0 (1/m)
+  float levelRelative = 0.0f;          // water level - camera height (m)
 };
 
 CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame);
 
 // What the plugin would add with its caustic factor replaced by `tracedIrradiance` E.
+// `viewDistance`: metres from the camera to the receiver.
 glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
-                                double depthBelow, double tracedIrradiance);
+                                double depthBelow, double tracedIrradiance, double viewDistance);
 
 }  // namespace ocean::reference

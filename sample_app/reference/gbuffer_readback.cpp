@@ -56,6 +56,8 @@ bool readGBuffer(const postfx::CreateDesc& create, const postfx::FrameDesc& fram
   }
   const gbuffer::ProjectionParams params = gbuffer::projectionParams(
       frame.camera.projection, static_cast<gbuffer::DepthConvention>(create.depthConvention));
+  const int depthConvention = static_cast<int>(create.depthConvention);
+  const int normalEncoding = static_cast<int>(create.normalEncoding);
   out.width = width;
   out.height = height;
   out.viewPosition.assign(n, glm::dvec3(0.0));
@@ -66,13 +68,13 @@ bool readGBuffer(const postfx::CreateDesc& create, const postfx::FrameDesc& fram
     for (int x = 0; x < width; ++x) {
       const size_t i = static_cast<size_t>(y) * width + x;
       out.albedo[i] = glm::vec3(albedo[i]);
-      if (gbuffer::shared::isSkyDepth(depth[i], create.depthConvention)) continue;
+      if (gbuffer::shared::isSkyDepth(depth[i], depthConvention)) continue;
       out.sky[i] = 0;
       const glm::vec2 uv(static_cast<float>((x + 0.5) / width),
                          static_cast<float>((y + 0.5) / height));
       out.viewPosition[i] = glm::dvec3(gbuffer::shared::viewPositionFromDepth(
-          uv, depth[i], params.xy, params.z, create.depthConvention));
-      out.normal[i] = glm::dvec3(gbuffer::shared::decodeNormal(normal[i], create.normalEncoding));
+          uv, depth[i], params.xy, params.z, depthConvention));
+      out.normal[i] = glm::dvec3(gbuffer::shared::decodeNormal(normal[i], normalEncoding));
     }
   }
   return true;

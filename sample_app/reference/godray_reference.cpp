@@ -71,7 +71,8 @@ struct Frame {
   double log2TexelsPerMetre[postfx::kMaxCascades] = {};
   glm::dvec3 sigmaS{0.0}, sigmaT{0.0}, sunPath{0.0}, lightScale{0.0};
   bool shadow = false, shadowReverseZ = false, shadowNegOne = false;
-  double shadowBias = 0.0;
+  double shadowBias = 0.0;            // m toward the light
+  glm::dvec3 towardShadowLight{0.0};  // the orthographic map's light (unit)
   bool footprintLod = true;
   glm::dvec3 gridX{1.0, 0.0, 0.0}, gridZ{0.0, 0.0, 1.0};  // godRayGrid(): x', z' plane normals
   double gridSpacing = 1.0;
@@ -82,7 +83,7 @@ Frame foldFrame(const postfx::CreateDesc& create, const postfx::FrameDesc& f,
   Frame r;
   r.width = in.width;
   r.height = in.height;
-  r.convention = create.depthConvention;
+  r.convention = static_cast<int>(create.depthConvention);
   r.camera = f.camera.position;
   r.sun = glm::normalize(f.sun.direction);
   r.up = -refract(-r.sun, glm::dvec3(0.0, 1.0, 0.0), 1.0 / double(f.water.ior));
@@ -114,9 +115,16 @@ Frame foldFrame(const postfx::CreateDesc& create, const postfx::FrameDesc& f,
   r.lightScale = glm::dvec3(f.sun.irradiance) * double(f.godRays.intensity);
   r.shadow = postfx::hasFeature(create.features, postfx::Feature::ShadowMask) && !in.shadow.empty();
   r.lightClip = f.shadow.worldToLightClip;
-  r.shadowReverseZ = f.shadow.depthConvention == 0;
-  r.shadowNegOne = f.shadow.depthConvention == 2;
-  r.shadowBias = r.shadowReverseZ ? f.shadow.bias : -f.shadow.bias;
+  r.shadowReverseZ = f.shadow.depthConvention == postfx::DepthConvention::ReverseZ;
+  r.shadowNegOne = f.shadow.depthConvention == postfx::DepthConvention::ForwardNegOneToOne;
+  r.shadowBias = f.shadow.bias;
+  // The map is orthographic here: clip x and y stay put along the light; growing depth leads
+  // away from it unless reverse-Z (the plugin's shadowLight(), restated for the reference).
+  const glm::dmat4& m = r.lightClip;
+  glm::dvec3 axis = glm::normalize(
+      glm::cross(glm::dvec3(m[0][0], m[1][0], m[2][0]), glm::dvec3(m[0][1], m[1][1], m[2][1])));
+  if (glm::dot(axis, glm::dvec3(m[0][2], m[1][2], m[2][2])) < 0.0) axis = -axis;
+  r.towardShadowLight = r.shadowReverseZ ? axis : -axis;
   r.footprintLod = footprintLod;
   r.gridX = r.reference;
   r.gridZ = glm::normalize(glm::cross(r.gridX, r.up));
@@ -130,11 +138,11 @@ glm::dvec3 source(const Frame& f, const GodRayInputs& in, const glm::dvec3& p, d
   double rho = participation(depthBelow, f.surfaceFade, f.depthFade);
   if (!(rho > 0.0)) return glm::dvec3(0.0);
   if (f.shadow) {
-    const glm::dvec4 clip = f.lightClip * glm::dvec4(p, 1.0);
+    const glm::dvec4 clip = f.lightClip * glm::dvec4(p + f.towardShadowLight * f.shadowBias, 1.0);
     if (clip.w > 0.0) {
       const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
       if (std::abs(ndc.x) <= 1.0 && std::abs(ndc.y) <= 1.0) {
-        const double ref = (f.shadowNegOne ? ndc.z * 0.5 + 0.5 : ndc.z) + f.shadowBias;
+        const double ref = f.shadowNegOne ? ndc.z * 0.5 + 0.5 : ndc.z;
         rho *= in.shadow.visibility(glm::dvec2(ndc) * 0.5 + 0.5, std::clamp(ref, 0.0, 1.0),
                                     f.shadowReverseZ);
         if (!(rho > 0.0)) return glm::dvec3(0.0);

@@ -37,7 +37,7 @@ postfx::CasterMesh GlMesh::caster(const glm::dmat4& modelToWorld,
   postfx::CasterMesh m;
   m.vertexBuffer = vertexBuffer;
   m.indexBuffer = indexBuffer;
-  m.indexType = GL_UNSIGNED_INT;
+  m.indexType = postfx::IndexType::UnsignedInt;
   m.vertexCount = vertexCount;
   m.indexCount = indexCount;
   m.positionOffset = 0;
@@ -163,8 +163,8 @@ postfx::SunShadowMap ReceiverMap::desc() const {
   postfx::SunShadowMap s;
   s.depth = {depth, GL_DEPTH_COMPONENT32F};
   s.worldToLightClip = worldToLightClip;
-  s.depthConvention = 2;
-  s.bias = 0.002f;
+  s.depthConvention = postfx::DepthConvention::ForwardNegOneToOne;
+  s.bias = 0.2f;  // m along the light
   return s;
 }
 

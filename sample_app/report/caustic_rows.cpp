@@ -1,4 +1,5 @@
 #include "caustic_rows.h"
+#include <postfx/testing.h>
 
 #include <epoxy/gl.h>
 
@@ -88,13 +89,14 @@ std::vector<double> FlatSeabedComparison::binRaw(const std::vector<float>& raw) 
 bool FlatSeabedComparison::run(postfx::CreateDesc create, const postfx::CausticsSettings& caustics,
                                int timedFrames, PassRun& out, std::vector<double>& binned,
                                std::string& error) const {
-  create.features = create.features | postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
-  create.depthConvention = 0;
-  create.normalEncoding = 1;
+  create.features = create.features | postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
+  create.depthConvention = postfx::DepthConvention::ReverseZ;
+  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   postfx::FrameDesc frame = frame_;
   frame.caustics = caustics;
   frame.caustics.surfaceFadeDepth = 0.0f;  // the reference has no fade
-  if (!runPass(create, frame, "caustics", *target_, timedFrames, out, error)) return false;
+  if (!runPass(create, frame, postfx::Pass::Caustics, *target_, timedFrames, out, error))
+    return false;
   binned = binRaw(out.raw);
   return true;
 }
@@ -182,7 +184,7 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     row.floorMs = run.floorMs;
     if (v.physical) {
       // The irradiance pass is part of the method's cost: add its median from the same run.
-      const double irradianceMs = run.medianMsByPass["caustics_irradiance"];
+      const double irradianceMs = run.stats.pass(postfx::Pass::CausticsIrradiance).medianMs;
       row.medianMs += irradianceMs;
       char cost[96];
       std::snprintf(cost, sizeof(cost), "incl. irradiance pass %.2f ms; ", irradianceMs);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 #include <seabed_reference.h>
 
 #include "pass_runner.h"
@@ -43,7 +44,7 @@ class FlatSeabedComparison {
   // Traces the reference through `hostFrame`'s water texture (its sun, optics, water).
   bool prepare(const postfx::FrameDesc& hostFrame, const CausticReportSettings& settings,
                std::string& error);
-  // One caustics configuration on the seabed (Feature::RawCausticOutput is added): its run,
+  // One caustics configuration on the seabed (postfx::testing::RawCausticOutput is added): its run,
   // and its raw factor / N.L averaged over each reference bin.
   bool run(postfx::CreateDesc create, const postfx::CausticsSettings& caustics, int timedFrames,
            PassRun& out, std::vector<double>& binned, std::string& error) const;

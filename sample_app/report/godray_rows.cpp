@@ -1,4 +1,5 @@
 #include "godray_rows.h"
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <iterator>
@@ -62,16 +63,17 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
   struct Variant {
     const char* method;
     postfx::GodRayResolution resolution;
-    postfx::GodRaySampling sampling;
+    postfx::testing::GodRaySampling sampling;
   };
   using postfx::GodRayResolution;
   const Variant variants[] = {
-      {"god rays, world grid", GodRayResolution::Full, postfx::GodRaySampling::WorldGrid},
-      {"god rays, world grid, half res", GodRayResolution::Half, postfx::GodRaySampling::WorldGrid},
+      {"god rays, world grid", GodRayResolution::Full, postfx::testing::GodRaySampling::WorldGrid},
+      {"god rays, world grid, half res", GodRayResolution::Half,
+       postfx::testing::GodRaySampling::WorldGrid},
       {"god rays, world grid, quarter res", GodRayResolution::Quarter,
-       postfx::GodRaySampling::WorldGrid},
+       postfx::testing::GodRaySampling::WorldGrid},
       {"god rays, uniform along ray", GodRayResolution::Full,
-       postfx::GodRaySampling::UniformAlongRay},
+       postfx::testing::GodRaySampling::UniformAlongRay},
   };
   const int counts[] = {4, 8, 16, 32, 64};
   int done = 0;
@@ -81,9 +83,9 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
                    std::size(variants) * std::size(counts));
       frame.godRays.sampleCount = samples;
       frame.godRays.resolution = variant.resolution;
-      frame.godRays.sampling = variant.sampling;
       PassRun run;
-      if (!runPass(create, frame, "god_rays", target, settings.timedFrames, run, error))
+      if (!runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames, run, error,
+                   variant.sampling))
         return false;
       const ErrorStats stats = compareWithReference(flatten(run.image), dense);
       Row row;

@@ -106,8 +106,8 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
 
   postfx::CreateDesc create;
   create.features = postfx::Feature::ObjectCaustics;
-  create.depthConvention = 0;
-  create.normalEncoding = 1;
+  create.depthConvention = postfx::DepthConvention::ReverseZ;
+  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   postfx::FrameDesc frame;
   frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
   frame.normal = {gbuffer.normal(), GL_RGBA16F};
@@ -150,7 +150,8 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
     s.footprintScale = 3.0f;  // as the accuracy test: room for the rim rays beside the sphere
     s.splatRadius = v.splatRadius;
     PassRun run;
-    if (!runPass(create, frame, "object_caustics", target, settings.timedFrames, run, error))
+    if (!runPass(create, frame, postfx::Pass::ObjectCaustics, target, settings.timedFrames, run,
+                 error))
       return false;
     const postfx::ObjectCausticMap& placement = run.objectMapPlacement;
     if (run.objectMap.empty()) {

@@ -1,4 +1,5 @@
 #include "pass_runner.h"
+#include <postfx/testing.h>
 
 #include <object_caustics_metrics.h>
 #include <plugin_setup.h>
@@ -19,14 +20,16 @@ ReportTarget::~ReportTarget() {
   glDeleteTextures(1, &texture_);
 }
 
-bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* passName,
-             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error) {
-  create.features = create.features | postfx::Feature::BenchmarkFloor;
+bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,
+             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error,
+             postfx::testing::GodRaySampling sampling) {
+  create.features = create.features | postfx::testing::BenchmarkFloor;
   postfx::Context* context = nullptr;
   if (postfx::create(create, context) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return false;
   }
+  postfx::testing::setGodRaySampling(*context, sampling);
   frame.target = {target.texture(), GL_RGBA32F};
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   bool ok = true;
@@ -39,11 +42,9 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* pas
   }
   if (ok) {
     const postfx::FrameStats& stats = postfx::stats(*context);
-    out.medianMs = passMedianMs(stats, passName);
-    out.floorMs = passMedianMs(stats, "floor");
-    out.medianMsByPass.clear();
-    for (int i = 0; i < stats.passCount; ++i)
-      out.medianMsByPass[stats.passes[i].name] = stats.passes[i].medianMs;
+    out.medianMs = stats.pass(pass).medianMs;
+    out.floorMs = stats.pass(postfx::Pass::Floor).medianMs;
+    out.stats = stats;
     glClearTexImage(target.texture(), 0, GL_RGBA, GL_FLOAT, zero);
     ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
   }
@@ -55,7 +56,7 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* pas
     glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels * sizeof(glm::vec4)),
                       out.image.data());
     out.raw.clear();
-    if (const GLuint raw = postfx::rawCausticTexture(*context)) {
+    if (const GLuint raw = postfx::testing::rawCausticTexture(*context)) {
       out.raw.resize(pixels);
       glGetTextureImage(raw, 0, GL_RED, GL_FLOAT, GLsizei(pixels * sizeof(float)), out.raw.data());
     }

@@ -5,22 +5,22 @@
 // for the image the error is computed from.
 #include <epoxy/gl.h>
 
-#include <map>
 #include <string>
 #include <vector>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 #include <glm/glm.hpp>
 
 namespace ocean::report {
 
 struct PassRun {
-  double medianMs = 0.0, floorMs = 0.0;  // of the named pass and of the floor
-  // Every pass the run timed, by name (e.g. "caustics_irradiance" beside "caustics"): one run
-  // prices a method made of several passes.
-  std::map<std::string, double> medianMsByPass;
+  double medianMs = 0.0, floorMs = 0.0;  // of the pass asked for and of the floor
+  // Every pass the run timed (e.g. CausticsIrradiance beside Caustics): one run prices a method
+  // made of several passes.
+  postfx::FrameStats stats;
   std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order
-  std::vector<float> raw;        // raw caustic factor (with Feature::RawCausticOutput)
+  std::vector<float> raw;        // raw caustic factor (with postfx::testing::RawCausticOutput)
   // The object caustic map of the last frame (rgb, row v = 0 first) and where it lies; empty
   // and texture 0 when the object caustics did not run.
   std::vector<glm::dvec3> objectMap;
@@ -44,7 +44,9 @@ class ReportTarget {
 };
 
 // `frame`'s target is replaced by `target`; BenchmarkFloor is added to `create.features`.
-bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, const char* passName,
-             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error);
+// `sampling`: the god-ray test hook (postfx/testing.h) for the context.
+bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,
+             const ReportTarget& target, int timedFrames, PassRun& out, std::string& error,
+             postfx::testing::GodRaySampling sampling = postfx::testing::GodRaySampling::WorldGrid);
 
 }  // namespace ocean::report

@@ -1,4 +1,5 @@
 #include "slope_rows.h"
+#include <postfx/testing.h>
 
 #include <epoxy/gl.h>
 
@@ -26,13 +27,14 @@ bool runVariant(const postfx::FrameDesc& frame, postfx::Feature features, const 
                 double scale, const std::vector<double>& truth, int timedFrames, SlopeLookup& out,
                 std::string& error) {
   postfx::CreateDesc create;
-  create.features = features | postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
-  create.depthConvention = 0;
-  create.normalEncoding = 1;
+  create.features = features | postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
+  create.depthConvention = postfx::DepthConvention::ReverseZ;
+  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   const ReportTarget target(plane.desc.width, plane.desc.height);
-  if (!runPass(create, frame, "caustics", target, timedFrames, out.run, error)) return false;
+  if (!runPass(create, frame, postfx::Pass::Caustics, target, timedFrames, out.run, error))
+    return false;
   // The irradiance pass is part of the method's cost (as in the flat rows); 0 without it.
-  out.run.medianMs += out.run.medianMsByPass["caustics_irradiance"];
+  out.run.medianMs += out.run.stats.pass(postfx::Pass::CausticsIrradiance).medianMs;
   out.binned = plane.binned(out.run.raw, scale);
   out.stats = compareWithReference(out.binned, truth);
   return true;

@@ -75,10 +75,11 @@ int runBench(const Options& options) {
   std::vector<Row> rows;
   {
     const postfx::FrameStats& stats = session.plugin->stats();
-    const double floorMs = passMedianMs(stats, "floor");
-    for (int i = 0; i < stats.passCount; ++i) {
-      rows.push_back(
-          {stats.passes[i].name, stats.passes[i].medianMs, floorMs, stats.passes[i].skipped});
+    const double floorMs = stats.pass(postfx::Pass::Floor).medianMs;
+    for (int i = 0; i < postfx::kPassCount; ++i) {
+      const postfx::PassStats& pass = stats.passes[i];
+      if (pass.present)
+        rows.push_back({postfx::toString(postfx::Pass(i)), pass.medianMs, floorMs, pass.skipped});
     }
   }
   // Variants: same scene and frames, one fresh context each (a context's timers keep a median
@@ -96,9 +97,9 @@ int runBench(const Options& options) {
     if (!renderFrames(renderer, input, options.timeSeconds, variantFrames, error)) return nullptr;
     return &session.plugin->stats();
   };
-  auto addRow = [&](const std::string& name, const postfx::FrameStats& stats, const char* pass) {
-    const double ms = passMedianMs(stats, pass);
-    rows.push_back({name, ms, passMedianMs(stats, "floor"), ms == 0.0});
+  auto addRow = [&](const std::string& name, const postfx::FrameStats& stats, postfx::Pass pass) {
+    const double ms = stats.pass(pass).medianMs;
+    rows.push_back({name, ms, stats.pass(postfx::Pass::Floor).medianMs, ms == 0.0});
   };
 
   // Caustics sampling every cascade everywhere (no skipping): what the skipping saves.
@@ -109,7 +110,7 @@ int runBench(const Options& options) {
           variant.godRays().enabled = false;
         });
     if (!stats) return commandFailed(error);
-    addRow("caustics_all_cascades", *stats, "caustics");
+    addRow("caustics_all_cascades", *stats, postfx::Pass::Caustics);
   }
   // Seed 002's world-axis projections on steep surfaces: what leaving them out saves.
   if (options.caustics && wanted("caustics_triplanar_walls")) {
@@ -119,7 +120,7 @@ int runBench(const Options& options) {
         runVariant("caustics_triplanar_walls", triplanar,
                    [](PluginSetup& variant) { variant.godRays().enabled = false; });
     if (!stats) return commandFailed(error);
-    addRow("caustics_triplanar_walls", *stats, "caustics");
+    addRow("caustics_triplanar_walls", *stats, postfx::Pass::Caustics);
   }
   if (options.godRays) {
     const struct {
@@ -137,7 +138,7 @@ int runBench(const Options& options) {
           variant.godRays().resolution = resolution.resolution;
         });
         if (!stats) return commandFailed(error);
-        addRow(name, *stats, "god_rays");
+        addRow(name, *stats, postfx::Pass::GodRays);
       }
     }
   }
@@ -151,8 +152,8 @@ int runBench(const Options& options) {
       const postfx::FrameStats* stats =
           runVariant("caustics_physical_" + n, physical, [](PluginSetup&) {});
       if (!stats) return commandFailed(error);
-      addRow("caustics_irradiance_" + n, *stats, "caustics_irradiance");
-      addRow("caustics_physical_" + n, *stats, "caustics");
+      addRow("caustics_irradiance_" + n, *stats, postfx::Pass::CausticsIrradiance);
+      addRow("caustics_physical_" + n, *stats, postfx::Pass::Caustics);
       std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
                    100.0 * stats->clampedFluxFraction);
     }
@@ -172,7 +173,7 @@ int runBench(const Options& options) {
         variant.objectCaustics().iterations = v.iterations;
       });
       if (!stats) return commandFailed(error);
-      addRow(name, *stats, "object_caustics");
+      addRow(name, *stats, postfx::Pass::ObjectCaustics);
     }
   }
 

@@ -1,4 +1,5 @@
 #include "plugin_setup.h"
+#include <postfx/testing.h>
 
 #include "caster_admission.h"
 
@@ -17,28 +18,21 @@ int pluginCascades(const postfx::water::Ocean& ocean) {
 
 }  // namespace
 
-double passMedianMs(const postfx::FrameStats& stats, const std::string& name) {
-  for (int i = 0; i < stats.passCount; ++i) {
-    if (name == stats.passes[i].name) return stats.passes[i].medianMs;
-  }
-  return 0.0;
-}
-
 std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Options& options,
                                                  bool benchmarkFloor, std::string& error) {
   std::unique_ptr<PluginSetup> setup(new PluginSetup());
   postfx::CreateDesc desc;
   desc.features = postfx::Feature::Caustics | postfx::Feature::ShadowMask |
                   postfx::Feature::Dispersion | postfx::Feature::GodRays;
-  if (benchmarkFloor) desc.features = desc.features | postfx::Feature::BenchmarkFloor;
+  if (benchmarkFloor) desc.features = desc.features | postfx::testing::BenchmarkFloor;
   // The physical model's GL resources exist only when it is asked for.
   if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::PhysicalCaustics;
   if (options.objectCaustics) {
     desc.features = desc.features | postfx::Feature::ObjectCaustics;
     renderer.enableReceiverMap();
   }
-  desc.depthConvention = static_cast<int>(gbuffer::DepthConvention::ReverseZ);
-  desc.normalEncoding = static_cast<int>(gbuffer::NormalEncoding::Octahedral);
+  desc.depthConvention = postfx::DepthConvention::ReverseZ;
+  desc.normalEncoding = postfx::NormalEncoding::Octahedral;
   desc.maxWaterCascades = pluginCascades(renderer.ocean());
   if (options.triplanarWalls) desc.features = desc.features | postfx::Feature::TriplanarWalls;
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
@@ -76,7 +70,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.depth = {targets.depth(), GL_DEPTH_COMPONENT32F};
   desc.normal = {targets.normal(), GL_RG16_SNORM};
   desc.albedo = {targets.albedo(), GL_SRGB8_ALPHA8};
-  desc.target = {targets.hdr(), GL_RGBA16F};
+  desc.target = {frame.target, GL_RGBA16F};
   desc.camera.position = frame.input.camera.position;
   desc.camera.view = frame.input.camera.viewRotation();
   desc.camera.projection = glm::mat4(frame.projection);
@@ -101,7 +95,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
       glm::vec3(frame.optics.scattering.r, frame.optics.scattering.g, frame.optics.scattering.b);
   desc.shadow.depth = {frame.shadowMap, GL_DEPTH_COMPONENT32F};
   desc.shadow.worldToLightClip = frame.shadowWorldToClip;
-  desc.shadow.depthConvention = static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
+  desc.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
   desc.caustics = caustics_;
   desc.godRays = godRays_;
   // Object caustics: the host's own buffers, and the shadow map drawn without the casters as
@@ -114,7 +108,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
     postfx::CasterMesh mesh;
     mesh.vertexBuffer = c.vertices;
     mesh.indexBuffer = c.indices;
-    mesh.indexType = GL_UNSIGNED_INT;
+    mesh.indexType = postfx::IndexType::UnsignedInt;
     mesh.vertexCount = c.vertexCount;
     mesh.indexCount = c.indexCount;
     mesh.positionOffset = 0;
@@ -130,9 +124,8 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.objectCaustics.casterCount = frame.receiverMap != 0 ? int(casters_.size()) : 0;
   desc.objectCaustics.receivers.depth = {frame.receiverMap, GL_DEPTH_COMPONENT32F};
   desc.objectCaustics.receivers.worldToLightClip = frame.shadowWorldToClip;
-  desc.objectCaustics.receivers.depthConvention =
-      static_cast<int>(gbuffer::DepthConvention::ForwardZeroToOne);
-  desc.objectCaustics.receivers.bias = 0.0005f;  // 20 cm over the map's 400 m depth range
+  desc.objectCaustics.receivers.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  desc.objectCaustics.receivers.bias = 0.2f;  // m along the light (was 0.0005 of a 400 m range)
   desc.objectCaustics.settings = objectCaustics_;
   lastFrame_ = desc;
   if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
@@ -145,11 +138,12 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
 std::string PluginSetup::timingSummary() const {
   const postfx::FrameStats& frameStats = stats();
   std::string summary;
-  for (int i = 0; i < frameStats.passCount; ++i) {
+  for (int i = 0; i < postfx::kPassCount; ++i) {
     const postfx::PassStats& pass = frameStats.passes[i];
+    if (!pass.present) continue;
     char line[96];
-    std::snprintf(line, sizeof(line), "%s%s %.3f ms", summary.empty() ? "" : "  |  ", pass.name,
-                  pass.skipped ? 0.0 : pass.medianMs);
+    std::snprintf(line, sizeof(line), "%s%s %.3f ms", summary.empty() ? "" : "  |  ",
+                  postfx::toString(postfx::Pass(i)), pass.skipped ? 0.0 : pass.medianMs);
     summary += line;
   }
   return summary.empty() ? "no passes timed yet" : summary;

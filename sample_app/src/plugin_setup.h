@@ -14,9 +14,6 @@
 
 namespace ocean {
 
-// Median GPU time (ms) of the pass called `name` in `stats`; 0 when there is no such pass.
-double passMedianMs(const postfx::FrameStats& stats, const std::string& name);
-
 class PluginSetup {
  public:
   // benchmarkFloor: also run the plugin's floor pass, for ratios (ocean_sample bench).

@@ -211,8 +211,20 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   drawFullscreen(emptyVao_);
   glPopDebugGroup();
 
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.fog");
+  glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_);
+  glViewport(0, 0, width, height);
+  glUseProgram(composite_.id());
+  const GLuint fogInputs[] = {targets_.depth(), targets_.hdr()};
+  glBindTextures(0, 2, fogInputs);
+  drawFullscreen(emptyVao_);
+  glPopDebugGroup();
+
   if (plugin_) {
+    // After the fog, as the plugin's header asks (ViewExtinction::Plugin): the light it adds
+    // arrives attenuated along the view ray, and fog applied after it would do so twice.
     const HostFrame frame{targets_,
+                          fogged_,
                           input,
                           *ocean_,
                           optics_,
@@ -224,15 +236,6 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
     if (!plugin_(frame, error)) return false;
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
   }
-
-  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.fog");
-  glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_);
-  glViewport(0, 0, width, height);
-  glUseProgram(composite_.id());
-  const GLuint fogInputs[] = {targets_.depth(), targets_.hdr()};
-  glBindTextures(0, 2, fogInputs);
-  drawFullscreen(emptyVao_);
-  glPopDebugGroup();
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.water_surface");
   glEnable(GL_DEPTH_TEST);

@@ -39,6 +39,7 @@ struct FrameInput {
 // What a plugin pass sees of the host's frame (the host owns all of it).
 struct HostFrame {
   const gbuffer::Targets& targets;
+  GLuint target;  // the fogged HDR buffer (RGBA16F) the plugin adds into
   const FrameInput& input;
   const postfx::water::Ocean& ocean;
   const postfx::water::Optics& optics;
@@ -50,7 +51,8 @@ struct HostFrame {
   GLuint receiverMap;
   const std::vector<CasterInstance>& casters;
 };
-// Called between lighting and fog; returns false with a message to fail the frame.
+// Called after lighting and fog, before the water surface; returns false with a message to fail
+// the frame.
 using PluginPass = std::function<bool(const HostFrame&, std::string& error)>;
 
 class Renderer {

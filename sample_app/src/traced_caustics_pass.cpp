@@ -46,7 +46,7 @@ bool TracedCausticsPass::run(const HostFrame& frame, std::string& error) {
     result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);
 
   // Add the traced light into the host's HDR target, where the plugin would have added its own.
-  const GLuint target = frame.targets.hdr();
+  const GLuint target = frame.target;
   const size_t n = receivers_.size();
   std::vector<glm::vec4> radiance(n);
   glGetTextureImage(target, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)),
@@ -55,7 +55,8 @@ bool TracedCausticsPass::run(const HostFrame& frame, std::string& error) {
   for (size_t i = 0; i < n && !result_.irradiance.empty(); ++i) {
     if (!receivers_.valid[i] || !(result_.irradiance[i] > 0.0)) continue;
     const glm::vec3 light = reference::referenceCausticLight(
-        units, gbuffer.albedo[i], receivers_.depthBelow(i), result_.irradiance[i]);
+        units, gbuffer.albedo[i], receivers_.depthBelow(i), result_.irradiance[i],
+        glm::length(gbuffer.viewPosition[i]));
     radiance[i] += glm::vec4(light, 0.0f);
   }
   glTextureSubImage2D(target, 0, 0, 0, receivers_.width, receivers_.height, GL_RGBA, GL_FLOAT,

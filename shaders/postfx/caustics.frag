@@ -92,7 +92,7 @@ void main() {
   }
   float visibility = 1.0;
 #if POSTFX_SHADOW_MASK
-  visibility = sunVisibility(p);
+  visibility = sunVisibility(p, n);
   if (!(visibility > 0.0)) {
     emitNothing();
     return;
@@ -128,6 +128,8 @@ void main() {
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   vec3 light = albedo * u.lightScale.rgb * causticTransmittance(u.absorptionPerDepth.rgb, depthBelow);
+  // ViewExtinction::Plugin: from the receiver to the camera, once (the host's fog must not).
+  light *= exp(-u.viewExtinction.rgb * submergedViewLength(distance, depthBelow, u.depthAndWater.z));
   outLight = vec4(light * raw, 0.0);
 #if POSTFX_RAW_OUTPUT
   outRaw = (raw.r + raw.g + raw.b) * (1.0 / 3.0);

@@ -32,7 +32,7 @@ vec3 sunSource(vec3 p, float t) {
   float rho = godRayParticipation(depthBelow, g.fade.x, g.fade.y);
   if (!(rho > 0.0)) return vec3(0.0);
 #if POSTFX_SHADOW_MASK
-  rho *= sunVisibility(p);
+  rho *= sunVisibility(p, vec3(0.0));  // no surface: no normal offset
   if (!(rho > 0.0)) return vec3(0.0);
 #endif
   // The full-resolution pixel's footprint even when a reduced texel stands for k x k pixels: a

@@ -34,15 +34,25 @@ void main() {
   vec3 ndc = clip.xyz / clip.w;
   vec2 ruv = ndc.xy * 0.5 + 0.5;
   if (!(all(greaterThanEqual(ruv, vec2(0.0))) && all(lessThanEqual(ruv, vec2(1.0))))) discard;
-  float pixelDepth = u.receiver.x > 0.5 ? ndc.z * 0.5 + 0.5 : ndc.z;
+  // On the receiver: within `bias` metres of its surface along the light.
   float onReceiver = textureLod(receiverDepth, ruv, 0.0).r;
-  if (!(abs(pixelDepth - onReceiver) <= u.receiver.z)) discard;
+  float receiverNdc = u.receiver.x > 0.5 ? onReceiver * 2.0 - 1.0 : onReceiver;
+  vec4 surface = u.receiverClipInverse * vec4(ndc.xy, receiverNdc, 1.0);
+  if (!(surface.w != 0.0)) discard;
+  if (!(abs(dot(surface.xyz / surface.w - p, u.lightDir.xyz)) <= u.receiver.z)) discard;
 
   vec3 caustic = max(textureLod(causticMap, uv, 0.0).rgb, vec3(0.0));
   vec3 light = caustic * nDotL * u.lightScale.rgb;
   if (u.depthParams.z > 0.5) {  // under water: the water column between surface and receiver
     float depthBelow = max(u.cameraOffset.w - p.y, 0.0);
     light *= exp(-u.waterAbsorption.rgb * depthBelow);
+  }
+  // ViewExtinction::Plugin: from the receiver to the camera, the part of the ray under water.
+  float receiverDepth = u.cameraOffset.w - p.y;
+  if (receiverDepth > 0.0) {
+    float submerged = submergedViewLength(length(p - u.cameraOffset.xyz), receiverDepth,
+                                          u.cameraOffset.w - u.cameraOffset.y);
+    light *= exp(-u.viewExtinction.rgb * submerged);
   }
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   outLight = vec4(albedo * light, 0.0);

@@ -1,6 +1,7 @@
 #version 450 core
 // Underwater fog: extinction and in-scattering along the part of each view ray below the
-// (flat) water plane. Runs after the plugin added its light, so caustics are fogged too.
+// (flat) water plane. Runs BEFORE the plugin adds its light: the plugin attenuates what it adds
+// itself (postfx::ViewExtinction::Plugin), so fogging it again would count the extinction twice.
 #include "shared/gbuffer_codec.h"
 #include "shared/sample_frame.h"
 #include "shared/sample_optics.h"
@@ -19,12 +20,9 @@ void main() {
     // Nothing was drawn. A ray that enters the water and meets no geometry (past the seabed's
     // edge, or level under water) sees infinitely deep water: pure in-scattering. From above,
     // the surface pass then blends its reflection over it; from below it covers what it hits.
-    // Under water the lighting pass wrote 0 here, so `radiance` is what the plugin added (its
-    // god rays): keep it on top of the deep-water colour.
+    // Under water the lighting pass wrote 0 here; the plugin's god rays are added afterwards.
     bool entersWater = cameraHeight.x < 0.0 || viewDirection(uv).y < 0.0;
-    vec3 deep = deepWaterColour();
-    vec3 added = cameraHeight.x < 0.0 ? radiance : vec3(0.0);
-    outRadiance = vec4(entersWater ? deep + added : radiance, 1.0);
+    outRadiance = vec4(entersWater ? deepWaterColour() : radiance, 1.0);
     return;
   }
   vec3 relative = reconstructRelative(uv, depth);

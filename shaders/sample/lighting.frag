@@ -1,6 +1,6 @@
 #version 450 core
 // Deferred lighting: sun (refracted and attenuated under water, shadowed) and sky ambient.
-// No fog here: the plugin adds its caustics to this light before the composite pass fogs it.
+// No fog here: the composite pass fogs this light, then the plugin adds its own (attenuated).
 #include "shared/gbuffer_codec.h"
 #include "shared/sample_frame.h"
 #include "shared/sample_optics.h"

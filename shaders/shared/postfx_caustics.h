@@ -113,6 +113,15 @@ SHARED_FN vec3 causticTransmittance(vec3 absorptionPerDepth, float depthBelow) {
   return exp(-absorptionPerDepth * max(depthBelow, 0.0f));
 }
 
+// Metres of the view ray from the camera to a receiver `depthBelow` under the level that lie
+// below the level, `levelRelative` = level - camera height: all of it from a camera under water,
+// the part past the surface from one above (the ray is straight, so the fraction is the ratio
+// of the heights).
+SHARED_FN float submergedViewLength(float distance, float depthBelow, float levelRelative) {
+  if (levelRelative >= 0.0f) return distance;
+  return distance * clamp(depthBelow / max(depthBelow - levelRelative, 1e-30f), 0.0f, 1.0f);
+}
+
 // Caustics ramp in over `fadeDepth` metres below the surface (smoothstep; 0 disables).
 SHARED_FN float causticSurfaceFade(float depthBelow, float fadeDepth) {
   if (!(depthBelow > 0.0f)) return 0.0f;

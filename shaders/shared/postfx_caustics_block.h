@@ -28,6 +28,7 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
   vec4 eta;                 // 1 / IOR for R, G, B; w: tri-planar sharpness
   vec4 lightScale;          // sun irradiance * intensity (rgb); w: min cascade contrast
   vec4 absorptionPerDepth;  // absorption / cos(theta_t), per metre of depth (rgb); w: unused
+  vec4 viewExtinction;      // rgb: sigma_t along the view ray (1/m), 0 with ViewExtinction::Host
   vec4 oblique;             // refractedUp.xz / refractedUp.y (x, y); z: lod bias; w: cascades
   vec4 cascadeAxes[POSTFX_MAX_CASCADES];     // fract((camera - water origin) / tile) along x, y,
                                              // z; w: 1 / tile (1/m)
@@ -36,8 +37,12 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
   vec4 cascadeSkip[POSTFX_MAX_CASCADES];     // x: irradiance modulation per metre below the level
                                              // (< 0: unknown, always sampled); y: log2 of half the
                                              // longest wavelength (m; huge: unknown); zw: unused
-  vec4 shadowParams;         // x: signed window-depth bias, y: 1 for a [-1,1] shadow convention,
+  vec4 shadowParams;         // x: bias toward the light (m), y: 1 for a [-1,1] shadow convention,
                              // z: unused, w: floor-pass scale (always 0)
+  vec4 shadowLight;          // w 0: xyz unit vector toward the light (orthographic map); w 1:
+                             // xyz the light's camera-relative position (perspective map)
+  vec4 shadowNormalOffset;   // xy: normal offset (m) per clip w per texel-fraction of the map along
+                             // x and y (normalOffsetTexels * 2 / |matrix row|); zw: unused
   vec4 irradianceWindow;     // WavefrontAreaRatio: xy: camera-relative world xz of the window's
                              // corner (m); z: 1 / window size (1/m); w: layer count, 0 = model
                              // off (seed 002 only)
@@ -45,7 +50,7 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
 #ifdef __cplusplus
 };
 static_assert(sizeof(CausticsBlock) ==
-                  2 * 64 + 10 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 16 + 3 * 16,
+                  2 * 64 + 11 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 3 * 16,
               "CausticsBlock must match its std140 layout");
 #else
 }

@@ -30,7 +30,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
   // x: caustic-map texels per metre, y: kMaxRoughSplatSigma (rough splats); zw: unused
   vec4 splatScale;
   vec4 receiver;         // x: 1 = [-1,1] depth convention, y: window depth of "no receiver" (far),
-                         // z: receiver depth tolerance (window units),
+                         // z: receiver tolerance (m along the light),
                          // w: 1 when a caster is dispersed (one ray per channel)
   vec4 cameraOffset;     // xyz: camera - anchor (m); w: water level - anchor y (m)
   vec4 viewport;         // 1/width, 1/height, width, height
@@ -39,6 +39,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
                          // w: back-surface (exit) iterations
   vec4 lightScale;       // rgb: sun irradiance * intensity; w: unused
   vec4 waterAbsorption;  // rgb: water absorption / cos(theta_t) per metre of depth; w: unused
+  vec4 viewExtinction;   // rgb: sigma_t along the view ray (1/m), 0 with ViewExtinction::Host
   // Per caster i (POSTFX_CASTER_VEC4S vec4s from i * POSTFX_CASTER_VEC4S):
   // [0] x: 0 refractive / 1 reflective, y: IOR relative to the outer medium (green),
   //     z: dispersion half spread of that relative IOR (0: one IOR), w: transmission;
@@ -48,7 +49,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
 #ifdef __cplusplus
 };
 static_assert(sizeof(ObjectCausticsBlock) ==
-                  4 * 64 + 12 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
+                  4 * 64 + 13 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
               "ObjectCausticsBlock must match its std140 layout");
 #else
 }

@@ -1,4 +1,5 @@
 #include "extreme_runner.h"
+#include <postfx/testing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -294,7 +295,9 @@ Output Runner::run(const Knobs& k) {
   frame.godRays.sampleCount = k.sampleCount;
   frame.godRays.resolution =
       pass_ == Pass::GodRaysHalf ? postfx::GodRayResolution::Half : postfx::GodRayResolution::Full;
-  if (k.uniformSampling) frame.godRays.sampling = postfx::GodRaySampling::UniformAlongRay;
+  postfx::testing::setGodRaySampling(
+      *state_->fx, k.uniformSampling ? postfx::testing::GodRaySampling::UniformAlongRay
+                                     : postfx::testing::GodRaySampling::WorldGrid);
   glm::dmat4 light(0.0);
   light[0][0] = 1.0 / 50.0;
   light[2][1] = 1.0 / 50.0;
@@ -304,14 +307,14 @@ Output Runner::run(const Knobs& k) {
   light[3][3] = 1.0;
   frame.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
   frame.shadow.worldToLightClip = light;
-  frame.shadow.depthConvention = 1;
+  frame.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
 
   scene.clearTarget(glm::vec4(0.0f));
   const postfx::Result result = postfx::dispatch(*state_->fx, frame);
   if (result != postfx::Result::Ok) out.error = postfx::lastError(state_->fx.get());
   out.light = postfxtest::readRgba(scene.target, kWidth, kHeight);
   if (isCausticPass(pass_))
-    out.raw = postfxtest::readRed(postfx::rawCausticTexture(*state_->fx), kWidth, kHeight);
+    out.raw = postfxtest::readRed(postfx::testing::rawCausticTexture(*state_->fx), kWidth, kHeight);
 
   // The model's bounds. Caustics: albedo (sanitised to [0, 1]) * E * intensity. God rays: the
   // in-scatter of a homogeneous medium, E * intensity * sigma_s / sigma_t (0 without scattering).

@@ -6,6 +6,7 @@
 //   * Ok with every added value finite and no GL error;
 // and either way the next ordinary frame must be bit-identical to a fresh context's.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <cstring>
@@ -187,14 +188,14 @@ class PostfxFuzzTest : public testsupport::GlTest {
 TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
   const Spec specs[] = {
       {"reverse-Z, octahedral: caustics + god rays + shadow + raw + dispersion",
-       Feature::Caustics | Feature::GodRays | Feature::ShadowMask | Feature::RawCausticOutput |
-           Feature::Dispersion,
+       Feature::Caustics | Feature::GodRays | Feature::ShadowMask |
+           postfx::testing::RawCausticOutput | Feature::Dispersion,
        0, 0},
       {"forward [0,1], xyz: physical caustics + god rays + tri-planar walls",
        Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics | Feature::TriplanarWalls,
        1, 1},
       {"forward [-1,1], xyz UNORM: caustics + object caustics + floor",
-       Feature::Caustics | Feature::ObjectCaustics | Feature::BenchmarkFloor, 2, 2},
+       Feature::Caustics | Feature::ObjectCaustics | postfx::testing::BenchmarkFloor, 2, 2},
       {"reverse-Z, xyz: object caustics (dispersed glass) + god rays",
        Feature::ObjectCaustics | Feature::GodRays | Feature::Dispersion, 0, 1},
   };
@@ -227,8 +228,8 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
 
     postfx::CreateDesc desc;
     desc.features = spec.features;
-    desc.depthConvention = spec.depthConvention;
-    desc.normalEncoding = spec.normalEncoding;
+    desc.depthConvention = static_cast<postfx::DepthConvention>(spec.depthConvention);
+    desc.normalEncoding = static_cast<postfx::NormalEncoding>(spec.normalEncoding);
     desc.maxWaterCascades = 3;
     desc.memoryBudgetMiB = 16;  // big maps and grids are refused up front: the fuzz stays fast
     postfx::Context* raw = nullptr;
@@ -254,7 +255,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
     ordinary.water.level = 10.0;
     ordinary.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
     ordinary.shadow.worldToLightClip = host.receivers.worldToLightClip;
-    ordinary.shadow.depthConvention = 2;
+    ordinary.shadow.depthConvention = postfx::DepthConvention::ForwardNegOneToOne;
     ordinary.godRays.sampleCount = 8;
     ordinary.caustics.gridResolution = 64;
     if (hasFeature(spec.features, Feature::PhysicalCaustics))
@@ -266,7 +267,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
       return readRgba(host.scene.target, w, h);
     };
     auto rawOutput = [&](postfx::Context& context) {
-      const GLuint t = postfx::rawCausticTexture(context);
+      const GLuint t = postfx::testing::rawCausticTexture(context);
       return t != 0 ? readRed(t, w, h) : std::vector<float>();
     };
     Result r = Result::InvalidArgument;
@@ -277,9 +278,9 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
     for (const glm::vec4& v : reference) lit += v != kMarker ? 1 : 0;
     ASSERT_GT(lit, w * h / 4) << spec.name << ": the ordinary frame must add light";
     const postfx::FrameStats& freshStats = postfx::stats(*fresh);
-    for (int p = 0; p < freshStats.passCount; ++p) {
-      EXPECT_FALSE(freshStats.passes[p].skipped)
-          << spec.name << ": pass " << freshStats.passes[p].name << " has work";
+    for (int p = 0; p < postfx::kPassCount; ++p) {
+      EXPECT_FALSE(freshStats.passes[p].present && freshStats.passes[p].skipped)
+          << spec.name << ": pass " << postfx::toString(postfx::Pass(p)) << " has work";
     }
 
     const Pristine depthCopy(host.scene.depth, GL_TEXTURE_2D),
@@ -362,7 +363,8 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
                 break;
               case 1:
                 (rng.chance(0.5) ? f.shadow.depthConvention
-                                 : f.objectCaustics.receivers.depthConvention) = wildInt(rng, 1);
+                                 : f.objectCaustics.receivers.depthConvention) =
+                    static_cast<postfx::DepthConvention>(wildInt(rng, 1));
                 break;
               default:
                 (rng.chance(0.5) ? f.shadow.bias : f.objectCaustics.receivers.bias) =
@@ -447,7 +449,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
                 g.dither = !g.dither;
                 break;
               default:
-                g.sampling = static_cast<postfx::GodRaySampling>(wildInt(rng, 0));
+                g.intensity = wildFloat(rng, 1.5f);
             }
             break;
           }
@@ -514,7 +516,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
                 m.stride = wildInt(rng, 24);
                 break;
               case 7:
-                m.indexType = static_cast<std::uint32_t>(wildInt(rng, GL_UNSIGNED_INT));
+                m.indexType = static_cast<postfx::IndexType>(wildInt(rng, GL_UNSIGNED_INT));
                 break;
               case 8:
                 (rng.chance(0.5) ? m.vertexBuffer : m.indexBuffer) =

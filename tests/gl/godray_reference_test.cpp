@@ -65,7 +65,7 @@ SweepResult sweep(float tau, bool checkConvergence) {
   lightClip[3][3] = 1.0;
   frame.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
   frame.shadow.worldToLightClip = lightClip;
-  frame.shadow.depthConvention = 1;
+  frame.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
 
   std::vector<glm::vec4> images[2][5];
   for (int half = 0; half < 2; ++half) {

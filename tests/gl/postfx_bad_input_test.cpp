@@ -1,6 +1,7 @@
 // Bad input: each case returns its Result with a message naming the problem, leaves every GL
 // state as the host set it, and draws nothing into the host's target.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <functional>
@@ -97,7 +98,7 @@ TEST_F(PostfxBadInputTest, EachCaseFailsCleanly) {
 
   postfx::Context* fx = nullptr;
   postfx::CreateDesc desc;
-  desc.features = postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+  desc.features = postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
   ASSERT_EQ(postfx::create(desc, fx), Result::Ok) << postfx::lastError(nullptr);
   const glm::vec4 marker(0.125f, 0.25f, 0.5f, 1.0f);
   for (const BadCase& c : cases) {
@@ -158,17 +159,17 @@ TEST_F(PostfxBadInputTest, CreateRejectsUnknownAndInvalid) {
   EXPECT_EQ(fx, nullptr);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("unknown feature"), std::string::npos);
   desc.features = postfx::Feature::Caustics;
-  desc.depthConvention = 7;
+  desc.depthConvention = static_cast<postfx::DepthConvention>(7);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("depthConvention"), std::string::npos);
-  desc.depthConvention = 0;
+  desc.depthConvention = postfx::DepthConvention::ReverseZ;
   for (int slots : {0, postfx::kMaxCascades + 1}) {
     desc.maxWaterCascades = slots;
     EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
     EXPECT_NE(std::string(postfx::lastError(nullptr)).find("maxWaterCascades"), std::string::npos);
   }
   desc.maxWaterCascades = postfx::kMaxCascades;
-  desc.normalEncoding = -1;
+  desc.normalEncoding = static_cast<postfx::NormalEncoding>(-1);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_STREQ(postfx::toString(Result::SizeMismatch), "SizeMismatch");
 }

@@ -2,6 +2,7 @@
 // longestWavelength): a cascade a pixel cannot see must give exactly the image of a water
 // texture without that cascade, and one it can see must still be sampled.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +32,7 @@ std::vector<float> rawCaustics(postfx::Context& fx, const postfxtest::Scene& sce
                                const postfx::FrameDesc& frame) {
   scene.clearTarget(glm::vec4(0.0f));
   EXPECT_EQ(postfx::dispatch(fx, frame), postfx::Result::Ok) << postfx::lastError(&fx);
-  return postfxtest::readRed(postfx::rawCausticTexture(fx), scene.spec().width,
+  return postfxtest::readRed(postfx::testing::rawCausticTexture(fx), scene.spec().width,
                              scene.spec().height);
 }
 

@@ -3,6 +3,7 @@
 // caustic factor at a point does not depend on the orientation of the surface there, only N.L
 // does; Feature::TriplanarWalls brings back seed 002's world-axis projections on steep surfaces.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,10 +60,10 @@ OrientationChange orientationChange(postfx::Feature features, const postfxtest::
   frame.water.tileSize[0] = 10.0;
   const int w = scene.spec().width, h = scene.spec().height;
   EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  const auto own = postfxtest::readRed(postfx::rawCausticTexture(*fx), w, h);
+  const auto own = postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), w, h);
   frame.normal = {upNormals, GL_RGBA16F};
   EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  const auto facingUp = postfxtest::readRed(postfx::rawCausticTexture(*fx), w, h);
+  const auto facingUp = postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), w, h);
 
   const glm::dvec3 toLight =
       -postfx::detail::refractedSunDown(frame.sun.direction, frame.water.ior);

@@ -1,6 +1,7 @@
 // Physics properties of the caustics pass on CPU-ray-traced G-buffers, checked per pixel against
 // the scene's ground truth and against the shared shader math evaluated on the CPU.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +37,7 @@ TEST_F(PostfxCausticsTest, NoneAboveWaterOnSkyOrFacingAway) {
   const postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3, {}, kLevel);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const int w = scene.spec().width, h = scene.spec().height;
-  const auto raw = postfxtest::readRed(postfx::rawCausticTexture(*fx), w, h);
+  const auto raw = postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), w, h);
   const glm::dvec3 up = -postfx::detail::refractedSunDown(frame.sun.direction, frame.water.ior);
   const double levelRel = kLevel - scene.spec().camera.y;
   int sky = 0, above = 0, away = 0, lit = 0;
@@ -82,7 +83,8 @@ TEST_F(PostfxCausticsTest, FlatWaterGivesUniformFactorMatchingSharedMath) {
   auto fx = postfxtest::makeContext(kRaw);
   const postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  const auto raw = postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height);
+  const auto raw =
+      postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
 
   // Expected: the shader's formula on the CPU with the flat normal.
   const glm::dvec3 sun = frame.sun.direction;
@@ -119,6 +121,8 @@ TEST_F(PostfxCausticsTest, BeerLambertPerChannelAlongDepth) {
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 1);
   frame.sun.direction = {0.0, 1.0, 0.0};  // zenith: the path length is the depth itself
   frame.water.absorption = {0.4f, 0.07f, 0.02f};
+  // The sun path alone: the view path's factor is PostfxCompositionTest's.
+  frame.viewExtinction = postfx::ViewExtinction::Host;
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const auto hdr = postfxtest::readRgba(scene.target, spec.width, spec.height);
   const glm::vec3 sigma = frame.water.absorption;
@@ -164,12 +168,13 @@ TEST_F(PostfxCausticsTest, ShadowMapMasksCaustics) {
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
   frame.sun.direction = {0.0, 1.0, 0.0};
   frame.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
-  frame.shadow.depthConvention = 2;
+  frame.shadow.depthConvention = postfx::DepthConvention::ForwardNegOneToOne;
   frame.shadow.worldToLightClip =
       glm::ortho(-50.0, 50.0, -50.0, 50.0, 1.0, 300.0) *
       glm::lookAt(glm::dvec3(0, 100, 0), glm::dvec3(0, 0, 0), glm::dvec3(0, 0, -1));
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  const auto raw = postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height);
+  const auto raw =
+      postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
   int shadowed = 0, lit = 0;
   for (int i = 0; i < spec.width * spec.height; ++i) {
     const postfxtest::PixelTruth& t = scene.truth(i % spec.width, i / spec.width);
@@ -202,7 +207,7 @@ std::vector<float> rawFor(int convention, int encoding, GLuint water) {
   // larger tau steepens omega and magnifies the 1/255 UNORM normal quantization with it).
   frame.caustics.tau = 60.0f;
   EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  return postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height);
+  return postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
 }
 
 TEST_F(PostfxCausticsTest, OtherDepthConventionAndNormalEncodingGiveSameCaustics) {
@@ -273,7 +278,7 @@ TEST_F(PostfxCausticsTest, BenchmarkFloorAddsExactlyNothing) {
   const int w = scene.spec().width, h = scene.spec().height;
   auto plain = postfxtest::makeContext(postfx::Feature::Caustics);
   auto withFloor =
-      postfxtest::makeContext(postfx::Feature::Caustics | postfx::Feature::BenchmarkFloor);
+      postfxtest::makeContext(postfx::Feature::Caustics | postfx::testing::BenchmarkFloor);
   const postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3, {}, kLevel);
   ASSERT_EQ(postfx::dispatch(*plain, frame), postfx::Result::Ok);
   const auto a = postfxtest::readRgba(scene.target, w, h);
@@ -297,11 +302,12 @@ TEST_F(PostfxCausticsTest, SkipsWhenNothingIsUnderwaterInView) {
   for (int i = 0; i < 6; ++i) ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
   glFinish();
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
-  const postfx::PassStats& caustics = postfx::stats(*fx).passes[0];
+  const postfx::PassStats& caustics = postfx::stats(*fx).pass(postfx::Pass::Caustics);
   EXPECT_TRUE(caustics.skipped);
   EXPECT_EQ(caustics.lastMs, 0.0);
   EXPECT_EQ(caustics.medianMs, 0.0);
-  for (float v : postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height))
+  for (float v :
+       postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height))
     ASSERT_EQ(v, 0.0f);
   for (const glm::vec4& p : postfxtest::readRgba(scene.target, spec.width, spec.height))
     ASSERT_EQ(p, glm::vec4(0.5f));

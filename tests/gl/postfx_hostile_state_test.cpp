@@ -5,6 +5,7 @@
 // specification's per-fragment and rasterization state, not from the plugin's guard, so an
 // omission in the guard shows up here as a changed image or a changed state.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <cstring>
@@ -251,7 +252,7 @@ Output run(const Case& c) {
   Output out;
   const int w = c.scene->spec().width, h = c.scene->spec().height;
   out.target = readRgba(c.scene->target, w, h);
-  if (const GLuint raw = postfx::rawCausticTexture(*c.fx)) out.raw = readRed(raw, w, h);
+  if (const GLuint raw = postfx::testing::rawCausticTexture(*c.fx)) out.raw = readRed(raw, w, h);
   return out;
 }
 
@@ -270,8 +271,8 @@ TEST_F(PostfxHostileStateTest, AnyHostStateGivesTheSameImageAndIsRestored) {
   Scene seabed(SceneSpec{});
   const GLuint water = makeWaterTexture(32, 3, 0.02);
   auto full = makeContext(postfx::Feature::Caustics | postfx::Feature::GodRays |
-                          postfx::Feature::RawCausticOutput | postfx::Feature::Dispersion |
-                          postfx::Feature::BenchmarkFloor);
+                          postfx::testing::RawCausticOutput | postfx::Feature::Dispersion |
+                          postfx::testing::BenchmarkFloor);
   postfx::FrameDesc seabedFrame = makeFrame(seabed, water, 3);
   // The physical model (compute, instanced strips, points into its own framebuffer) with god
   // rays at full resolution.

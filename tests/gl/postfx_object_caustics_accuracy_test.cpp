@@ -42,8 +42,7 @@ SphereRun runSphere(const postfx::ObjectCausticsSettings& settings, int referenc
   glFinish();
   EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
   SphereRun run;
-  const int pass = objectPassIndex(postfx::stats(*fx));
-  run.ms = postfx::stats(*fx).passes[pass].medianMs;
+  run.ms = postfx::stats(*fx).pass(postfx::Pass::ObjectCaustics).medianMs;
   const postfx::ObjectCausticMap map = postfx::objectCausticMap(*fx);
   const std::vector<glm::dvec3> gpu = readObjectMap(map);
   EXPECT_TRUE(allFinite(gpu));

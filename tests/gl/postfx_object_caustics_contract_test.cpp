@@ -2,6 +2,7 @@
 // GL state untouched, extreme cases stay finite and conserve energy, the composite adds exactly
 // the map's light on receivers only, and the temporal filter leaves no trail.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <cstdint>
@@ -49,8 +50,7 @@ TEST_F(PostfxObjectCausticsContractTest, NoCasterIsSkippedAtZeroCost) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh mesh = makeSphereMesh(1.0, 32, 16);
   auto fx = makeObjectContext();
-  const int pass = objectPassIndex(postfx::stats(*fx));
-  ASSERT_GE(pass, 0);
+  ASSERT_TRUE(postfx::stats(*fx).pass(postfx::Pass::ObjectCaustics).present);
   host.scene.clearTarget(glm::vec4(0.25f));
   postfx::ObjectCausticsSettings s;
   // No casters, then a caster outside the receiver map's view, then the pass switched off.
@@ -68,7 +68,7 @@ TEST_F(PostfxObjectCausticsContractTest, NoCasterIsSkippedAtZeroCost) {
     glFinish();
     ASSERT_EQ(postfx::dispatch(*fx, make()), Result::Ok);
   }
-  const postfx::PassStats& p = postfx::stats(*fx).passes[pass];
+  const postfx::PassStats& p = postfx::stats(*fx).pass(postfx::Pass::ObjectCaustics);
   std::printf("skipped: lastMs %.6f medianMs %.6f samples %u skipped %d\n", p.lastMs, p.medianMs,
               p.samples, int(p.skipped));
   EXPECT_TRUE(p.skipped);
@@ -197,7 +197,9 @@ TEST_F(PostfxObjectCausticsContractTest, BadInputFailsCleanly) {
          m.modelToWorld[0][0] = m.modelToWorld[1][1] = m.modelToWorld[2][2] = 1e300;
        }},
       {"index type", Result::InvalidArgument, "indexType",
-       [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.indexType = GL_FLOAT; }},
+       [](postfx::CasterMesh& m, postfx::FrameDesc&) {
+         m.indexType = static_cast<postfx::IndexType>(GL_FLOAT);
+       }},
       {"stride too small", Result::InvalidArgument, "stride",
        [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.stride = 8; }},
       {"bounds inverted", Result::InvalidArgument, "bounds",
@@ -259,8 +261,10 @@ TEST_F(PostfxObjectCausticsContractTest, SettingsOverTheMemoryBudgetAreRefusedUp
   host.scene.clearTarget(marker);
   ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
   const postfx::FrameStats& stats = postfx::stats(*fx);
-  for (int p = 0; p < stats.passCount; ++p)
-    EXPECT_FALSE(stats.passes[p].skipped) << stats.passes[p].name << ": every pass ran";
+  for (int p = 0; p < postfx::kPassCount; ++p)
+    if (stats.passes[p].present)
+      EXPECT_FALSE(stats.passes[p].skipped)
+          << postfx::toString(postfx::Pass(p)) << ": every pass ran";
   int changed = 0;
   for (const glm::vec4& v : readRgba(host.scene.target, w, h)) changed += v != marker ? 1 : 0;
   EXPECT_GT(changed, 100) << "the frame within budget adds light (the test can tell)";
@@ -299,7 +303,7 @@ TEST_F(PostfxObjectCausticsContractTest, HostStateSurvivesThePass) {
   postfx::Context* raw = nullptr;
   postfx::CreateDesc desc;
   desc.features = postfx::Feature::ObjectCaustics | postfx::Feature::Caustics |
-                  postfx::Feature::GodRays | postfx::Feature::BenchmarkFloor;
+                  postfx::Feature::GodRays | postfx::testing::BenchmarkFloor;
   host_.set();
   GlSnapshot before = snapshotGlState();
   ASSERT_EQ(postfx::create(desc, raw), Result::Ok) << postfx::lastError(nullptr);

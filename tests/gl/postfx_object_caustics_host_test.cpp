@@ -2,6 +2,7 @@
 // the passes that sample it (seabed caustics, god rays) do; and the benchmark floor runs beside
 // the object caustics alone, adding exactly nothing, so that their cost has a floor ratio too.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cstdio>
 #include <string>
@@ -25,12 +26,6 @@ class PostfxObjectCausticsHostTest : public testsupport::GlTest {
   }
   HostState host_;
 };
-
-int passIndex(const postfx::FrameStats& stats, const char* name) {
-  for (int i = 0; i < stats.passCount; ++i)
-    if (std::string(stats.passes[i].name) == name) return i;
-  return -1;
-}
 
 postfx::CasterMesh glassCaster(const GlMesh& mesh) {
   postfx::CasterMaterial glass;
@@ -64,11 +59,9 @@ TEST_F(PostfxObjectCausticsHostTest, GlassWithoutWaterRunsWithItsFloor) {
   for (const glm::vec4& v : reference) lit += v.g > background.g + 1e-3f ? 1 : 0;
 
   // With it: same host state before and after every frame, the floor timed, the same image.
-  auto timed = makeObjectContext(Feature::BenchmarkFloor);
-  const int floor = passIndex(postfx::stats(*timed), "floor");
-  const int objects = objectPassIndex(postfx::stats(*timed));
-  ASSERT_GE(floor, 0);
-  ASSERT_GE(objects, 0);
+  auto timed = makeObjectContext(postfx::testing::BenchmarkFloor);
+  ASSERT_TRUE(postfx::stats(*timed).pass(postfx::Pass::Floor).present);
+  ASSERT_TRUE(postfx::stats(*timed).pass(postfx::Pass::ObjectCaustics).present);
   host_.set();
   const GlSnapshot before = snapshotGlState();
   for (int i = 0; i < 6; ++i) {
@@ -80,8 +73,8 @@ TEST_F(PostfxObjectCausticsHostTest, GlassWithoutWaterRunsWithItsFloor) {
   host.scene.clearTarget(background);
   ASSERT_EQ(postfx::dispatch(*timed, frame), Result::Ok) << postfx::lastError(timed.get());
   const std::vector<glm::vec4> withFloor = readRgba(host.scene.target, w, h);
-  const postfx::PassStats& f = postfx::stats(*timed).passes[floor];
-  const postfx::PassStats& o = postfx::stats(*timed).passes[objects];
+  const postfx::PassStats& f = postfx::stats(*timed).pass(postfx::Pass::Floor);
+  const postfx::PassStats& o = postfx::stats(*timed).pass(postfx::Pass::ObjectCaustics);
   int differing = 0;
   for (size_t i = 0; i < reference.size(); ++i) differing += withFloor[i] != reference[i] ? 1 : 0;
   std::printf(
@@ -114,8 +107,8 @@ TEST_F(PostfxObjectCausticsHostTest, WaterTextureIsRequiredOnlyWhereItIsSampled)
   const Feature all = Feature::ObjectCaustics | Feature::Caustics | Feature::GodRays;
   const Case cases[] = {
       {"objects only, no water", Feature::ObjectCaustics, true, true, 0, Result::Ok},
-      {"objects only, floor, no water", Feature::ObjectCaustics | Feature::BenchmarkFloor, true,
-       true, 0, Result::Ok},
+      {"objects only, floor, no water", Feature::ObjectCaustics | postfx::testing::BenchmarkFloor,
+       true, true, 0, Result::Ok},
       {"all, caustics and god rays off", all, false, false, 0, Result::Ok},
       {"all, caustics on, no water", all, true, false, 0, Result::MissingTexture},
       {"all, god rays on, no water", all, false, true, 0, Result::MissingTexture},

@@ -38,12 +38,6 @@ postfx::FrameDesc ObjectHost::frame(const postfx::CasterMesh* casters, int count
   return f;
 }
 
-int objectPassIndex(const postfx::FrameStats& stats) {
-  for (int i = 0; i < stats.passCount; ++i)
-    if (std::string(stats.passes[i].name) == "object_caustics") return i;
-  return -1;
-}
-
 bool allFinite(const std::vector<glm::dvec3>& values) {
   for (const glm::dvec3& v : values)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return false;

@@ -71,8 +71,6 @@ inline ContextPtr makeObjectContext(postfx::Feature extra = postfx::Feature::Non
   return makeContext(postfx::Feature::ObjectCaustics | extra);
 }
 
-int objectPassIndex(const postfx::FrameStats& stats);
-
 bool allFinite(const std::vector<glm::dvec3>& values);
 
 }  // namespace postfxtest

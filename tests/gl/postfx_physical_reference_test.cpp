@@ -3,6 +3,7 @@
 // RMSE over 0.5 m bins at a flat receiver for grid 64/128/256, and the error of the depth-layer
 // interpolation at depths between layers.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <cstdio>
@@ -60,7 +61,7 @@ TEST_F(PostfxPhysicalReferenceTest, AgainstTheSeabedReference) {
     auto fx = postfxtest::makeContext(kPhysical);
     postfxtest::usePhysical(frame, grid, 1, 4.0f);
     ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-    const postfx::CausticIrradianceInfo info = postfx::causticIrradiance(*fx);
+    const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
     ASSERT_DOUBLE_EQ(info.windowOrigin.x, 0.0);
     const std::vector<double> gpu =
         postfxtest::binAverage(info, postfxtest::readIrradiance(info), 0, desc.bins);
@@ -83,7 +84,7 @@ TEST_F(PostfxPhysicalReferenceTest, AgainstTheSeabedReference) {
   auto fx = postfxtest::makeContext(kPhysical);
   postfxtest::usePhysical(frame, 256, 3, 9.0f);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  const postfx::CausticIrradianceInfo info = postfx::causticIrradiance(*fx);
+  const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   const std::vector<float> texels = postfxtest::readIrradiance(info);
   const glm::vec4 d0(info.layerDepth[0], info.layerDepth[1], info.layerDepth[2], 0.0f);
   const glm::dvec3 up = -postfx::detail::refractedSunDown(frame.sun.direction, frame.water.ior);

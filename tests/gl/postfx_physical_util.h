@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 #include <postfx/water/ocean.h>
 
 #include "postfx_scene.h"
@@ -18,7 +19,7 @@
 namespace postfxtest {
 
 inline constexpr postfx::Feature kPhysical = postfx::Feature::Caustics |
-                                             postfx::Feature::RawCausticOutput |
+                                             postfx::testing::RawCausticOutput |
                                              postfx::Feature::PhysicalCaustics;
 
 // Camera 2 m under the level, looking down at a floor `floorDepth` m below it; camera xz at
@@ -46,7 +47,7 @@ inline void usePhysical(postfx::FrameDesc& frame, int grid, int layers, float ma
 }
 
 // All layers, texel (i, j) of layer k at (k * N + j) * N + i.
-inline std::vector<float> readIrradiance(const postfx::CausticIrradianceInfo& info) {
+inline std::vector<float> readIrradiance(const postfx::testing::CausticIrradianceInfo& info) {
   std::vector<float> texels(static_cast<size_t>(info.resolution) * info.resolution * info.layers);
   glGetTextureImage(info.texture, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(texels.size() * 4),
                     texels.data());
@@ -54,7 +55,7 @@ inline std::vector<float> readIrradiance(const postfx::CausticIrradianceInfo& in
 }
 
 // Mean of layer `layer` over each bin of `bins` (bins must cover whole texels).
-inline std::vector<double> binAverage(const postfx::CausticIrradianceInfo& info,
+inline std::vector<double> binAverage(const postfx::testing::CausticIrradianceInfo& info,
                                       const std::vector<float>& texels, int layer,
                                       const ocean::reference::BinGrid& bins) {
   const double texel = info.windowSize / info.resolution;
@@ -78,7 +79,7 @@ inline std::vector<double> binAverage(const postfx::CausticIrradianceInfo& info,
 
 // Layer `layer` sampled as the caustics pass samples it: bilinear between texel centres,
 // clamped to the edge, at world (x, z).
-inline double sampleLayer(const postfx::CausticIrradianceInfo& info,
+inline double sampleLayer(const postfx::testing::CausticIrradianceInfo& info,
                           const std::vector<float>& texels, int layer, double x, double z) {
   const int n = info.resolution;
   const double u = (x - info.windowOrigin.x) / info.windowSize * n - 0.5;

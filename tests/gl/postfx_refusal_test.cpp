@@ -3,6 +3,7 @@
 // message and the target bit-identical, or accepted with finite output; an accepted extreme
 // frame leaves no trace in the next ordinary frame.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <cstring>
@@ -51,7 +52,7 @@ class PostfxRefusalTest : public testsupport::GlTest {
 };
 
 constexpr Feature kEverySeabedPass =
-    Feature::Caustics | Feature::GodRays | Feature::Dispersion | Feature::RawCausticOutput;
+    Feature::Caustics | Feature::GodRays | Feature::Dispersion | postfx::testing::RawCausticOutput;
 
 // Far values whose double -> float conversion after a subtraction gave Inf (then NaN in 11058
 // of 16384 target values): refused, naming the field, target untouched.
@@ -128,7 +129,7 @@ TEST_F(PostfxRefusalTest, PositionsPastTheWorldExtentAreRefused) {
     EXPECT_EQ(nonFinite(after), 0);
     EXPECT_FALSE(sameBits(after, std::vector<glm::vec4>(after.size(), kMarker)))
         << "the frame at the extent drew (the test can tell)";
-    const std::vector<float> raw = postfxtest::readRed(postfx::rawCausticTexture(*fx),
+    const std::vector<float> raw = postfxtest::readRed(postfx::testing::rawCausticTexture(*fx),
                                                        scene.spec().width, scene.spec().height);
     for (float v : raw) ASSERT_TRUE(std::isfinite(v));
   }

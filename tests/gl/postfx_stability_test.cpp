@@ -2,6 +2,7 @@
 // light at most albedo * irradiance * intensity), and a scene 1e6 m from the origin renders the
 // same as at the origin.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include <cmath>
 #include <functional>
@@ -76,7 +77,8 @@ TEST_F(PostfxStabilityTest, StiffCasesStayFiniteAndBounded) {
       c.frame(frame);
       ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
       const float bound = 2.0f * frame.caustics.intensity;  // albedo 1, irradiance 2
-      for (float v : postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height))
+      for (float v :
+           postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height))
         ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << "raw " << v;
       for (const glm::vec4& p : postfxtest::readRgba(scene.target, spec.width, spec.height))
         for (int ch = 0; ch < 4; ++ch)
@@ -99,12 +101,14 @@ TEST_F(PostfxStabilityTest, MillionMetresFromOriginMatchesOrigin) {
   const glm::dvec3 offset(1e6, 1e6, -1e6);
   const postfx::FrameDesc atOrigin = postfxtest::makeFrame(scene, water, 3, {}, -0.5);
   ASSERT_EQ(postfx::dispatch(*fx, atOrigin), postfx::Result::Ok);
-  const auto a = postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height);
+  const auto a =
+      postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
   const auto hdrA = postfxtest::readRgba(scene.target, spec.width, spec.height);
   scene.clearTarget(glm::vec4(0.0f));
   postfx::FrameDesc far = postfxtest::makeFrame(scene, water, 3, offset, -0.5);
   ASSERT_EQ(postfx::dispatch(*fx, far), postfx::Result::Ok);
-  const auto b = postfxtest::readRed(postfx::rawCausticTexture(*fx), spec.width, spec.height);
+  const auto b =
+      postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
   const auto hdrB = postfxtest::readRgba(scene.target, spec.width, spec.height);
   double maxRaw = 0.0, maxHdr = 0.0;
   for (size_t i = 0; i < a.size(); ++i) {

@@ -1,6 +1,7 @@
 // The plugin drops into a host frame without disturbing it: every piece of GL state a host may
 // have set is exactly as it was after dispatch(), whether the pass ran, was skipped or failed.
 #include <gtest/gtest.h>
+#include <postfx/testing.h>
 
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
@@ -33,8 +34,8 @@ TEST_F(PostfxStateTest, EveryHostStateSurvivesDispatch) {
   const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
   postfx::Context* fx = nullptr;
   postfx::CreateDesc desc;
-  desc.features = postfx::Feature::Caustics | postfx::Feature::RawCausticOutput |
-                  postfx::Feature::BenchmarkFloor;
+  desc.features = postfx::Feature::Caustics | postfx::testing::RawCausticOutput |
+                  postfx::testing::BenchmarkFloor;
   ASSERT_EQ(postfx::create(desc, fx), postfx::Result::Ok) << postfx::lastError(nullptr);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3);
 
@@ -70,7 +71,7 @@ TEST_F(PostfxStateTest, CreateAndDestroyBindNothing) {
   postfx::Context* fx = nullptr;
   postfx::CreateDesc desc;
   desc.features = postfx::Feature::Caustics | postfx::Feature::ShadowMask |
-                  postfx::Feature::Dispersion | postfx::Feature::RawCausticOutput;
+                  postfx::Feature::Dispersion | postfx::testing::RawCausticOutput;
   ASSERT_EQ(postfx::create(desc, fx), postfx::Result::Ok) << postfx::lastError(nullptr);
   postfx::destroy(fx);
   expectSameState(before, postfxtest::snapshotGlState(), "create/destroy");

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 
 namespace postfxtest {
 
@@ -17,8 +18,8 @@ inline ContextPtr makeContext(postfx::Feature features, int depthConvention = 0,
                               int normalEncoding = 0) {
   postfx::CreateDesc desc;
   desc.features = features;
-  desc.depthConvention = depthConvention;
-  desc.normalEncoding = normalEncoding;
+  desc.depthConvention = static_cast<postfx::DepthConvention>(depthConvention);
+  desc.normalEncoding = static_cast<postfx::NormalEncoding>(normalEncoding);
   postfx::Context* fx = nullptr;
   const postfx::Result r = postfx::create(desc, fx);
   EXPECT_EQ(r, postfx::Result::Ok) << postfx::lastError(nullptr);
@@ -26,6 +27,6 @@ inline ContextPtr makeContext(postfx::Feature features, int depthConvention = 0,
 }
 
 inline constexpr postfx::Feature kRaw =
-    postfx::Feature::Caustics | postfx::Feature::RawCausticOutput;
+    postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
 
 }  // namespace postfxtest

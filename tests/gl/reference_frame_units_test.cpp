@@ -44,8 +44,8 @@ TEST_F(ReferenceUnitsTest, FlatWaterReferenceLightIsThePluginsAddedLight) {
   const auto added = postfxtest::readRgba(scene.target, spec.width, spec.height);
 
   postfx::CreateDesc create;
-  create.depthConvention = spec.depthConvention;
-  create.normalEncoding = spec.normalEncoding;
+  create.depthConvention = static_cast<postfx::DepthConvention>(spec.depthConvention);
+  create.normalEncoding = static_cast<postfx::NormalEncoding>(spec.normalEncoding);
   GBufferCopy gbuffer;
   std::string error;
   ASSERT_TRUE(readGBuffer(create, frame, gbuffer, error)) << error;
@@ -79,7 +79,8 @@ TEST_F(ReferenceUnitsTest, FlatWaterReferenceLightIsThePluginsAddedLight) {
     ASSERT_TRUE(receivers.valid[i] && traced.lit[i]) << "pixel " << i;
     const double depth = receivers.depthBelow(i);
     const glm::vec3 exact =
-        referenceCausticLight(units, gbuffer.albedo[i], depth, traced.flatIrradiance[i]);
+        referenceCausticLight(units, gbuffer.albedo[i], depth, traced.flatIrradiance[i],
+                              glm::length(gbuffer.viewPosition[i]));
     for (int ch = 0; ch < 3; ++ch) {
       const double plugin = double(added[i][ch]);
       ASSERT_GT(plugin, 0.0);

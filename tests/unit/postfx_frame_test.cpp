@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "frame_constants.h"
+#include "shadow_light.h"
 #include "validation.h"
 #include "visibility.h"
 
@@ -71,19 +72,54 @@ TEST(PostfxVisibility, SkipOnlyWhenTheFrustumStaysAboveTheWater) {
     return detail::viewToWorldRotation(glm::lookAt(glm::vec3(0), dir, glm::vec3(0, 1, 0)));
   };
   const glm::dmat3 up = rotation({0, 0.6f, -1}), down = rotation({0, -0.6f, -1});
-  EXPECT_TRUE(detail::frustumReachesBelowWater(up, proj, 2, 1e-4)) << "camera under water";
-  EXPECT_TRUE(detail::frustumReachesBelowWater(up, proj, 2, 0.0)) << "camera at the level";
-  EXPECT_FALSE(detail::frustumReachesBelowWater(up, proj, 2, -1.0)) << "looking up from above";
-  EXPECT_TRUE(detail::frustumReachesBelowWater(down, proj, 2, -10.0)) << "looking down";
-  EXPECT_FALSE(detail::frustumReachesBelowWater(down, proj, 2, -1e4)) << "far plane too short";
+  constexpr auto kNegOne = DepthConvention::ForwardNegOneToOne;
+  constexpr auto kReverse = DepthConvention::ReverseZ;
+  EXPECT_TRUE(detail::frustumReachesBelowWater(up, proj, kNegOne, 1e-4)) << "camera under water";
+  EXPECT_TRUE(detail::frustumReachesBelowWater(up, proj, kNegOne, 0.0)) << "camera at the level";
+  EXPECT_FALSE(detail::frustumReachesBelowWater(up, proj, kNegOne, -1.0))
+      << "looking up from above";
+  EXPECT_TRUE(detail::frustumReachesBelowWater(down, proj, kNegOne, -10.0)) << "looking down";
+  EXPECT_FALSE(detail::frustumReachesBelowWater(down, proj, kNegOne, -1e4))
+      << "far plane too short";
   // Infinite reverse-Z: any downward edge reaches every depth.
   glm::dmat4 infinite(0.0);
   infinite[0][0] = 1.0;
   infinite[1][1] = 1.5;
   infinite[2][3] = -1.0;
   infinite[3][2] = 0.1;
-  EXPECT_TRUE(detail::frustumReachesBelowWater(down, infinite, 0, -1e6));
-  EXPECT_FALSE(detail::frustumReachesBelowWater(rotation({0, 1, -0.2f}), infinite, 0, -1.0));
+  EXPECT_TRUE(detail::frustumReachesBelowWater(down, infinite, kReverse, -1e6));
+  EXPECT_FALSE(detail::frustumReachesBelowWater(rotation({0, 1, -0.2f}), infinite, kReverse, -1.0));
+}
+
+// The shadow bias is in metres along the light the map looks from: the direction read off the
+// matrix must point toward the light in every convention, and a perspective map gives its eye.
+TEST(PostfxShadowLight, PointsTowardTheLightTheMapLooksFrom) {
+  const glm::dvec3 toSun = glm::normalize(glm::dvec3(0.3, 1.0, -0.4));
+  const glm::dvec3 centre(1e6, -20.0, 3e5);  // far from the origin: the result must not care
+  const glm::dmat4 view = glm::lookAt(centre + 50.0 * toSun, centre, glm::dvec3(0, 0, 1));
+  struct Case {
+    glm::dmat4 projection;
+    DepthConvention convention;
+  };
+  glm::dmat4 reverse = glm::orthoRH_ZO(-10.0, 10.0, -10.0, 10.0, 0.0, 100.0);
+  reverse[2][2] = -reverse[2][2];  // z' = 1 - z: near at 1
+  reverse[3][2] = 1.0 - reverse[3][2];
+  const Case cases[] = {
+      {glm::orthoRH_ZO(-10.0, 10.0, -10.0, 10.0, 0.0, 100.0), DepthConvention::ForwardZeroToOne},
+      {glm::orthoRH_NO(-10.0, 10.0, -10.0, 10.0, 0.0, 100.0), DepthConvention::ForwardNegOneToOne},
+      {reverse, DepthConvention::ReverseZ},
+  };
+  for (const Case& c : cases) {
+    const detail::ShadowLight light = detail::shadowLight(c.projection * view, c.convention);
+    EXPECT_FALSE(light.perspective);
+    EXPECT_NEAR(glm::dot(light.vector, toSun), 1.0, 1e-9) << toString(c.convention);
+  }
+  const glm::dmat4 spot = glm::perspectiveRH_ZO(1.0, 1.0, 0.5, 100.0) * view;
+  const detail::ShadowLight light = detail::shadowLight(spot, DepthConvention::ForwardZeroToOne);
+  EXPECT_TRUE(light.perspective);
+  EXPECT_LT(glm::length(light.vector - (centre + 50.0 * toSun)), 1e-6 * 1e6);
+  // Texel size: a 20 m wide orthographic map has 2 / |row 0| = 20 m of clip x per unit.
+  EXPECT_NEAR(detail::clipUnitsToMetres(cases[0].projection * view).x, 20.0, 1e-9);
 }
 
 TEST(PostfxValidation, RejectsNaNAndOutOfRangeValues) {

@@ -136,7 +136,7 @@ TEST(FrameReference, FlatIrradianceIsExactlyThePluginsFlatWaterLight) {
   const double nDotL = glm::dot(n, up);
   const glm::vec3 albedo(0.5f, 0.4f, 0.3f);
   for (double depth : {0.3, 2.0, 9.0}) {
-    const glm::vec3 light = referenceCausticLight(units, albedo, depth, nDotL / up.y);
+    const glm::vec3 light = referenceCausticLight(units, albedo, depth, nDotL / up.y, 0.0);
     const float fade = depth >= 1.0 ? 1.0f : static_cast<float>(depth * depth * (3 - 2 * depth));
     for (int c = 0; c < 3; ++c) {
       const double expected = double(albedo[c]) * double(frame.sun.irradiance[c]) * 1.7 *

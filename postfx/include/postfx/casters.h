@@ -21,6 +21,8 @@
 
 #include <glm/glm.hpp>
 
+#include <postfx/conventions.h>
+
 namespace postfx {
 
 inline constexpr int kMaxCasters = 64;  // casters per frame
@@ -88,9 +90,9 @@ struct CasterMaterial {
 // the triangles. Indices, when given, must all be < vertexCount (not checked: reading them
 // would stall).
 struct CasterMesh {
-  std::uint32_t vertexBuffer = 0;    // GL buffer name (required)
-  std::uint32_t indexBuffer = 0;     // GL buffer name, 0 = non-indexed (vertexCount vertices)
-  std::uint32_t indexType = 0x1405;  // GL_UNSIGNED_INT, GL_UNSIGNED_SHORT or GL_UNSIGNED_BYTE
+  std::uint32_t vertexBuffer = 0;  // GL buffer name (required)
+  std::uint32_t indexBuffer = 0;   // GL buffer name, 0 = non-indexed (vertexCount vertices)
+  IndexType indexType = IndexType::UnsignedInt;  // of indexBuffer's indices
   // Counts are at most 2^31 - 1 (one GL draw). The buffers must hold every vertex (position
   // and normal of the last one included) and index from the offsets on; checked without
   // overflow for any value, else SizeMismatch.

@@ -11,14 +11,21 @@
 #include <glm/glm.hpp>
 
 #include <postfx/casters.h>
+#include <postfx/conventions.h>
+#include <postfx/range.h>
 #include <postfx/settings.h>
 
 namespace postfx {
 
-using GlName = std::uint32_t;  // a GL object name (GLuint)
-using GlEnum = std::uint32_t;  // a GL enum (GLenum)
-
 inline constexpr int kMaxCascades = 4;
+inline constexpr Range<double> kSunLengthRange{1e-6, 1e6};            // |Sun::direction|
+inline constexpr Range<float> kIrradianceRange{0.0f, 1e9f};           // Sun::irradiance
+inline constexpr Range<double> kTileSizeRange{1e-3, 1e7};             // m
+inline constexpr Range<double> kWaveStatisticRange{0.0, 1e9};         // 1/m and m
+inline constexpr Range<float> kIorRange{1.0f, 3.0f};                  // the water's
+inline constexpr Range<float> kWaterCoefficientRange{0.0f, 1e3f};     // 1/m
+inline constexpr Range<float> kShadowBiasRange{0.0f, 100.0f};         // m
+inline constexpr Range<float> kShadowNormalOffsetRange{0.0f, 16.0f};  // shadow-map texels
 
 struct TextureRef {
   GlName texture = 0;
@@ -45,11 +52,11 @@ struct Camera {
 
 struct Sun {
   // Vector TOWARD the sun, world space. Need not be unit: the plugin normalises it (in double;
-  // a scaled vector gives the same image), but its length must be in [1e-6, 1e6] (finite, its
+  // a scaled vector gives the same image), but its length must be in kSunLengthRange (finite, its
   // square too), else InvalidArgument. direction.y <= 0 (at or below the horizon) means no
   // caustics this frame: the pass is skipped.
   glm::dvec3 direction{0.0, 1.0, 0.0};
-  // Sun irradiance at the water surface in the host's HDR units, linear RGB, >= 0.
+  // Sun irradiance at the water surface in the host's HDR units, linear RGB, kIrradianceRange.
   glm::vec3 irradiance{1.0f};
 };
 
@@ -70,7 +77,7 @@ struct WaterSurface {
   // lit by the sun itself. A texture given is always validated.
   TextureRef texture;
   int cascadeCount = 1;                                    // [1, kMaxCascades], <= layer count
-  double tileSize[kMaxCascades] = {64.0, 16.0, 4.0, 1.0};  // metres per tile, > 0
+  double tileSize[kMaxCascades] = {64.0, 16.0, 4.0, 1.0};  // metres per tile, kTileSizeRange
   // Optional statistics of each cascade's waves (postfx::water::Ocean::waveStats gives them). They
   // let a pixel leave out the cascades it cannot see (CausticsSettings::minCascadeContrast):
   //  - rmsLaplacian (1/m): RMS of the Laplacian of the cascade's height. To first order its
@@ -78,20 +85,21 @@ struct WaterSurface {
   //    long, gentle waves only tilt the light at shallow depth, they cannot focus it there.
   //  - longestWavelength (m): where a pixel's (or god-ray sample's) footprint is more than half
   //    of it, every wave of the cascade is finer than the footprint and averages out.
-  // 0 = unknown: the cascade is always sampled. Finite and >= 0.
+  // 0 = unknown: the cascade is always sampled. kWaveStatisticRange.
   double rmsLaplacian[kMaxCascades] = {0.0, 0.0, 0.0, 0.0};
   double longestWavelength[kMaxCascades] = {0.0, 0.0, 0.0, 0.0};
-  // Index of refraction of the water relative to air, [1, 3].
+  // Index of refraction of the water relative to air, kIorRange.
   float ior = 1.333f;
   // Per-channel IOR (R, G, B) used instead of `ior` when the context has Feature::Dispersion.
   glm::vec3 iorRgb{1.331f, 1.333f, 1.338f};
-  // Beer-Lambert absorption coefficients per metre, linear RGB, [0, 1e3]. The caustic light is
-  // attenuated by exp(-absorption * d / cos(theta_t)) for a receiver d metres below the level,
-  // theta_t the refracted sun's angle from the vertical. Default: clear sea water.
+  // Beer-Lambert absorption coefficients per metre, linear RGB, kWaterCoefficientRange. The caustic
+  // light is attenuated by exp(-absorption * d / cos(theta_t)) for a receiver d metres below the
+  // level, theta_t the refracted sun's angle from the vertical. Default: clear sea water.
   glm::vec3 absorption{0.35f, 0.06f, 0.02f};
-  // Scattering coefficients per metre, linear RGB, [0, 1e3]: with absorption they give the
-  // extinction sigma_t = absorption + scattering that the god rays attenuate with, matching an
-  // underwater fog the host computes from the same two values. Only the god rays read it.
+  // Scattering coefficients per metre, linear RGB, kWaterCoefficientRange: with absorption they
+  // give the extinction sigma_t = absorption + scattering that the god rays attenuate with,
+  // matching an underwater fog the host computes from the same two values. Only the god rays read
+  // it.
   glm::vec3 scattering{0.02f, 0.03f, 0.04f};
 };
 
@@ -103,11 +111,17 @@ struct SunShadowMap {
   // World-space to light clip-space matrix (light projection * light view), in DOUBLE, with the
   // world translation included. The plugin rebases it onto the camera in double precision.
   glm::dmat4 worldToLightClip{1.0};
-  // Depth convention the shadow map was rendered with. 0 = reverse-Z, 1 = forward [0,1],
-  // 2 = forward [-1,1] (the values of gbuffer::DepthConvention).
-  int depthConvention = 1;
-  // Window-space depth bias pushed toward the light before the comparison, [0, 1].
-  float bias = 0.0005f;
+  DepthConvention depthConvention = DepthConvention::ForwardZeroToOne;  // it was rendered with
+  // Metres the receiver is moved toward the light before the comparison, kShadowBiasRange:
+  // one value for any depth range. For the receiver map of the object caustics, the most a
+  // pixel may lie off the receiver surface along the light to receive caustic light.
+  float bias = 0.02f;
+  // Normal offset: a surface point is moved along its G-buffer normal by this many of the map's
+  // texels (their world size at the point, from worldToLightClip and the texture's size), times
+  // the sine of its angle to the light, kShadowNormalOffsetRange. 1.5 clears the 2x2 PCF
+  // footprint (sqrt(2) texels) at any angle: no acne on walls or at grazing light. Sun shadow
+  // map only (the god rays' points in the water have no normal; the receiver map ignores it).
+  float normalOffsetTexels = 1.5f;
 };
 
 // Feature::ObjectCaustics inputs (see postfx/casters.h for what the host does around the pass).
@@ -121,6 +135,20 @@ struct ObjectCausticsFrame {
   // receiver". Required while casterCount > 0.
   SunShadowMap receivers;
   ObjectCausticsSettings settings;
+};
+
+// Who attenuates the light the plugin adds along the view ray, from the lit point (or, for god
+// rays, each in-scattering sample) to the camera, by exp(-sigma_t * submerged length),
+// sigma_t = WaterSurface::absorption + scattering: exactly one of the two, never both.
+enum class ViewExtinction : std::uint8_t {
+  // The plugin (default). Caustic light arrives attenuated and god rays carry their own
+  // per-sample extinction: apply your underwater fog to your own lit buffer BEFORE dispatch and
+  // leave what dispatch adds unfogged.
+  Plugin,
+  // Your fog, applied to the whole target AFTER dispatch: caustic light is added unattenuated.
+  // God rays are in-scattered light that no after-the-fact fog can attenuate right, so a frame
+  // with god rays to draw is refused (InvalidArgument) in this mode.
+  Host,
 };
 
 struct FrameDesc {
@@ -137,8 +165,9 @@ struct FrameDesc {
   WaterSurface water;
   SunShadowMap shadow;
   CausticsSettings caustics;
-  GodRaySettings godRays;              // read only with Feature::GodRays
-  ObjectCausticsFrame objectCaustics;  // read only with Feature::ObjectCaustics
+  GodRaySettings godRays;                                  // read only with Feature::GodRays
+  ObjectCausticsFrame objectCaustics;                      // read only with Feature::ObjectCaustics
+  ViewExtinction viewExtinction = ViewExtinction::Plugin;  // all the light dispatch() adds
 };
 
 }  // namespace postfx

@@ -4,9 +4,11 @@
 //   postfx::CreateDesc createDesc;              // features, G-buffer conventions
 //   postfx::Context* fx = nullptr;
 //   if (postfx::create(createDesc, fx) != postfx::Result::Ok) log(postfx::lastError(nullptr));
-//   ... every frame, after lighting, before tone mapping:
-//   postfx::dispatch(*fx, frameDesc);           // adds caustics into frameDesc.target
-//   ... postfx::stats(*fx).passes[i].medianMs
+//   ... every frame, after lighting and your underwater fog, before tone mapping:
+//   postfx::dispatch(*fx, frameDesc);           // adds light, view-attenuated, into .target
+//   ... postfx::stats(*fx).pass(postfx::Pass::Caustics).medianMs   (postfx/diagnostics.h)
+// What is added, in which units, and who attenuates it along the view ray:
+// FrameDesc::viewExtinction (postfx/frame_desc.h) and the README's "Composition in your frame".
 //   postfx::destroy(fx);
 //
 // Threading and GL: every call needs the host's GL 4.5 context current on the calling thread.
@@ -21,23 +23,22 @@
 // is refused (InvalidArgument). Conditional rendering cannot be queried in GL 4.5: inside it
 // the plugin's draws are subject to the host's query, so do not call dispatch() there.
 // The library never prints, aborts or throws.
+#include <postfx/diagnostics.h>
 #include <postfx/frame_desc.h>
 #include <postfx/result.h>
 #include <postfx/settings.h>
-#include <postfx/stats.h>
 
 namespace postfx {
 
 // Decided at create(): each becomes a shader #define, so a feature that is off costs nothing.
 enum class Feature : std::uint32_t {
   None = 0,
-  Caustics = 1u << 0,          // seabed caustics (seed 002, section 4)
-  GodRays = 1u << 1,           // underwater light shafts (seed 002, section 4, eq. 2)
-  ObjectCaustics = 1u << 2,    // light-map caustics of glass/metal casters (seeds 000, 003)
-  Dispersion = 1u << 3,        // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
-  ShadowMask = 1u << 4,        // mask caustics by the host's sun shadow map (FrameDesc::shadow)
-  RawCausticOutput = 1u << 5,  // also write the raw caustic factor to rawCausticTexture()
-  BenchmarkFloor = 1u << 6,    // also run and time the "floor" pass (benchmarks only: see below)
+  Caustics = 1u << 0,        // seabed caustics (seed 002, section 4)
+  GodRays = 1u << 1,         // underwater light shafts (seed 002, section 4, eq. 2)
+  ObjectCaustics = 1u << 2,  // light-map caustics of glass/metal casters (seeds 000, 003)
+  Dispersion = 1u << 3,      // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
+  ShadowMask = 1u << 4,      // mask caustics by the host's sun shadow map (FrameDesc::shadow)
+  // 1u << 5 and 1u << 6: test and benchmark hooks, postfx/testing.h.
   PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio (seed 004); its pass
                                // is timed as "caustics_irradiance"
   // Seed 002's full tri-planar lookup: steep surfaces (more than ~30 degrees from horizontal
@@ -62,11 +63,8 @@ enum class WaterTextureType {
 
 struct CreateDesc {  // fixed for the context's life
   Feature features = Feature::Caustics;
-  // Host G-buffer conventions; values of gbuffer::DepthConvention / gbuffer::NormalEncoding:
-  // depth 0 = reverse-Z [0,1] (recommended), 1 = forward [0,1], 2 = forward [-1,1] (GL default);
-  // normals 0 = octahedral RG, 1 = world xyz float/snorm, 2 = world xyz UNORM (n * 0.5 + 0.5).
-  int depthConvention = 0;
-  int normalEncoding = 0;
+  DepthConvention depthConvention = DepthConvention::ReverseZ;  // of FrameDesc::depth
+  NormalEncoding normalEncoding = NormalEncoding::Octahedral;   // of FrameDesc::normal
   WaterTextureType waterTexture = WaterTextureType::Array2D;
   // Most water cascades a frame will give (WaterSurface::cascadeCount <= this), [1,
   // kMaxCascades]; ignored with Single2D (one). Each slot is a lookup written into the shaders:
@@ -97,44 +95,13 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // caustics (postfx/casters.h; timed as "object_caustics") run last, skipped (0 ms) with no
 // caster, objectCaustics.settings.enabled off, the sun at/below the horizon, or no caster inside
 // the receiver map's view.
-// With Feature::BenchmarkFloor, a "floor" pass runs first whenever any timed pass runs (caustics,
-// god rays or object caustics): a full-screen pass that reads the G-buffer, the water cascades
-// (when a water texture is given) and the shadow map, and writes the same outputs with no math
-// (adds exactly 0), so that e.g. caustics.medianMs / floor.medianMs measures the shader's cost
-// independently of the machine.
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
 // Deletes the context's GL objects (current GL context required; without one they are leaked
 // rather than abort the process). Null is a no-op.
 void destroy(Context* context) noexcept;
 
-// The message of the last failed call on `context`, or, for null, of the last failed create()
-// on this thread. Empty after success. Valid until the next call on the same context/thread.
-const char* lastError(const Context* context) noexcept;
-
-// Per-pass GPU timings, updated by each dispatch() from queries that have completed.
-const FrameStats& stats(const Context& context) noexcept;
-
-// With Feature::RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last
-// dispatched target holding the caustic factor (mean of R,G,B) before albedo,
-// irradiance, intensity and absorption; 0 where no caustics (sky, above water, back-facing,
-// shadowed, pass skipped). The factor is in [0, 1] in the RayDeviation model and in
-// [0, maxIrradiance] in the WavefrontAreaRatio model. Returns 0 without the feature or before
-// the first dispatch.
-GlName rawCausticTexture(const Context& context) noexcept;
-
-// The WavefrontAreaRatio model's irradiance of the most recent frame that computed it.
-struct CausticIrradianceInfo {
-  // Plugin-owned GL_TEXTURE_2D_ARRAY, GL_R32F, resolution^2 texels x layers: irradiance on a
-  // horizontal receiver relative to flat water (flat water gives 1), clamped, no absorption.
-  // 0 without Feature::PhysicalCaustics or before the first frame in that model.
-  GlName texture = 0;
-  int resolution = 0, layers = 0;
-  glm::dvec2 windowOrigin{0.0};  // world xz of the corner of texel (0, 0) (m)
-  double windowSize = 0.0;       // m; texel (i, j) covers origin + [i, i+1) * size / resolution
-  float layerDepth[8] = {};      // m below the water level, per layer
-};
-CausticIrradianceInfo causticIrradiance(const Context& context) noexcept;
+// lastError() and stats(): postfx/diagnostics.h.
 
 // With Feature::ObjectCaustics: the caustic map of the last dispatch that ran the pass, for
 // hosts that composite it themselves (forward passes, water volumes) and for tests. A

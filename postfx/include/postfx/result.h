@@ -9,7 +9,6 @@ enum class Result {
   MissingTexture,       // a required texture is 0 or not a texture name
   UnsupportedFormat,    // a texture's internal format or target is not one this input accepts
   SizeMismatch,         // textures that must match in size do not
-  NotImplemented,       // a feature reserved for a later version (none at present)
   ShaderCompileFailed,  // create() could not build a program; the message has the driver log
   GlError,              // the driver refused a GL object (framebuffer incomplete, ...)
   OutOfMemory,          // the frame needs more GPU memory than CreateDesc::memoryBudgetMiB

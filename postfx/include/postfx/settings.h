@@ -1,6 +1,8 @@
 #pragma once
 // Per-frame tuning of the caustics, a plain struct with defaults. Every float must be finite
-// and inside its documented range, or dispatch() returns InvalidArgument and draws nothing.
+// and inside its range (the k...Range constants, which validation uses), or dispatch() returns
+// InvalidArgument and draws nothing.
+#include <postfx/range.h>
 
 namespace postfx {
 
@@ -18,39 +20,54 @@ enum class CausticsModel {
   // Covers a camera-centred square window (windowSize); outside it, and across the window's
   // outer eighth, it fades to RayDeviation.
   WavefrontAreaRatio,
-  Seed002 = RayDeviation,  // the former name of RayDeviation
+  Seed002 [[deprecated("named for a paper: use RayDeviation")]] = RayDeviation,
 };
+
+inline constexpr Range<float> kTauRange{0.0f, 1e6f};
+inline constexpr Range<float> kUnitRange{0.0f, 1.0f};
+inline constexpr Range<float> kIntensityRange{0.0f, 1e4f};
+inline constexpr Range<float> kFadeDepthRange{0.0f, 1e4f};  // m
+inline constexpr Range<float> kTriplanarSharpnessRange{1.0f, 32.0f};
+inline constexpr Range<float> kLodBiasRange{-4.0f, 8.0f};  // mip levels
+inline constexpr Range<int> kGridResolutionRange{64, 1024};
+inline constexpr Range<float> kWindowSizeRange{1.0f, 1e4f};  // m
+inline constexpr Range<int> kDepthLayersRange{1, 8};
+inline constexpr Range<float> kMaxReceiverDepthRange{0.01f, 1e4f};  // m
+inline constexpr Range<float> kMaxIrradianceRange{1.0f, 1e4f};
 
 struct CausticsSettings {
   // Off: the pass is skipped (0 ms) and, with RawCausticOutput, the raw texture reads 0.
   bool enabled = true;
 
-  // Tightening τ of ω = exp(-τ·a²) (seed 002, eq. 1), unitless, [0, 1e6]. Larger values give
+  // Tightening τ of ω = exp(-τ·a²) (seed 002, eq. 1), unitless, kTauRange. Larger values give
   // thinner, sharper caustic lines; 0 gives ω = 1 everywhere (uniform light).
   float tau = 800.0f;
 
-  // Blend of the reflected ray's ω into the refracted one's, [0, 1]: 0 = refraction only.
+  // Blend of the reflected ray's ω into the refracted one's, kUnitRange: 0 = refraction only.
   float reflectionWeight = 0.25f;
 
-  // Multiplier on the sun's irradiance for the added caustic light, unitless, [0, 1e4].
+  // Multiplier on the sun's irradiance for the added caustic light, kIntensityRange. The light
+  // added is a copy of the direct underwater sun without 1/pi and surface Fresnel (README,
+  // "Composition in your frame"): (1 - F) / pi replaces a Lambertian direct sun exactly.
   float intensity = 1.0f;
 
   // Depth below the water level (m) over which caustics ramp in from 0 at the surface, where the
-  // refracted rays have not focused yet, to full strength, [0, 1e4]. 0 = no fade.
+  // refracted rays have not focused yet, to full strength, kFadeDepthRange. 0 = no fade.
   float surfaceFadeDepth = 1.0f;
 
   // With Feature::TriplanarWalls: exponent sharpening the tri-planar weights |n|^k taken from
-  // the G-buffer normal, [1, 32]. High values make each surface use the single projection it
-  // faces most (fewest fetches on GPUs). Validated always, unused without the feature.
+  // the G-buffer normal, kTriplanarSharpnessRange. High values make each surface use the single
+  // projection it faces most (fewest fetches on GPUs). Validated always, unused without the
+  // feature.
   float triplanarSharpness = 8.0f;
 
   // Added to the water-texture mip level chosen from each pixel's footprint, in mip levels,
-  // [-4, 8]. Positive blurs earlier with distance, which hides tile repetition sooner.
+  // kLodBiasRange. Positive blurs earlier with distance, which hides tile repetition sooner.
   float lodBias = 0.0f;
 
   // Cascades whose first-order irradiance modulation at a receiver's depth
   // (WaterSurface::rmsLaplacian) is below this are not sampled there; the ones between it and
-  // twice it fade in. [0, 1]; 0 samples every cascade everywhere. Also applies to the god rays.
+  // twice it fade in. kUnitRange; 0 samples every cascade everywhere. Also applies to the god rays.
   // Each cascade skipped saves one filtered water fetch per pixel on a GPU, where a warp whose
   // pixels all skip it branches around it (a CPU rasteriser such as llvmpipe runs it masked and
   // saves nothing); the error it costs is in the report (ocean_sample report).
@@ -59,25 +76,25 @@ struct CausticsSettings {
   CausticsModel model = CausticsModel::RayDeviation;
 
   // --- WavefrontAreaRatio only (validated always) ---
-  // Surface grid vertices per side and irradiance texels per side, [64, 1024]. Cost grows with
-  // its square; the water texture is read at the mip level of the grid spacing, so ripples
+  // Surface grid vertices per side and irradiance texels per side, kGridResolutionRange. Cost grows
+  // with its square; the water texture is read at the mip level of the grid spacing, so ripples
   // finer than windowSize * 1.25 / gridResolution are smoothed away, not aliased. GPU memory:
   // about gridResolution^2 * (4 bytes * depthLayers + 32 bytes) (4 layers: 3 MB at 256, 50 MB at
   // 1024).
   int gridResolution = 256;
-  // Side of the square receiver window around the camera (m), [1, 1e4]. Snapped to whole
+  // Side of the square receiver window around the camera (m), kWindowSizeRange. Snapped to whole
   // texels in world space so the pattern does not swim when the camera moves.
   float windowSize = 32.0f;
-  // Receiver depths the irradiance is computed at, [1, 8]: layer k lies
+  // Receiver depths the irradiance is computed at, kDepthLayersRange: layer k lies
   // maxReceiverDepth * ((k + 1) / depthLayers)^2 below the level (denser near the surface,
   // where the pattern changes fastest with depth). A pixel interpolates linearly in depth
   // between the two layers around it (between 1 at the surface and layer 0 above it; the
   // deepest layer below it).
   int depthLayers = 4;
-  float maxReceiverDepth = 16.0f;  // m, [0.01, 1e4]
-  // Irradiance clamp relative to flat water, [1, 1e4]. Folds focus to infinite irradiance on
-  // a triangle of zero area; the clamp bounds that. The flux it removes is reported as
-  // FrameStats::clampedFluxFraction (a bias figure).
+  float maxReceiverDepth = 16.0f;  // m, kMaxReceiverDepthRange
+  // Irradiance clamp relative to flat water, kMaxIrradianceRange. Folds focus to infinite
+  // irradiance on a triangle of zero area; the clamp bounds that. The flux it removes is reported
+  // as FrameStats::clampedFluxFraction (a bias figure).
   float maxIrradiance = 32.0f;
 };
 
@@ -95,40 +112,36 @@ enum class GodRayResolution {
   Quarter = 4,  // 1/16 of the march cost; shafts visibly softer
 };
 
-// How the god-ray march places its samples along each view ray.
-enum class GodRaySampling {
-  // Seed 002 section 4: where the ray crosses the planes of a world-snapped grid. The samples
-  // stay put in the world when the camera moves, so the shafts do not crawl or flicker.
-  WorldGrid,
-  // sampleCount points evenly spread along the ray: slides with the camera (flickers). Kept for
-  // comparisons (the temporal-stability test) only.
-  UniformAlongRay,
-};
-
 // Per-frame tuning of the god rays (Feature::GodRays), a plain struct with defaults. Every float
 // must be finite and inside its documented range, or dispatch() returns InvalidArgument and
 // draws nothing. The light they add is in-scattered sunlight (see godrays.frag for the model):
 //   L = E_sun * intensity * sigma_s / sigma_t * (1 - exp(-sigma_t * D)) * gamma,
 // gamma the seed's eq. (2) average of rho_i * omega_i along the ray (weighted by each sample's
 // segment length and view-path transmittance), in [0, 1]; sigma_* from WaterSurface.
+inline constexpr Range<int> kGodRaySampleCountRange{4, 64};
+inline constexpr Range<float> kGridSpacingRange{0.01f, 1e3f};       // m
+inline constexpr Range<float> kDepthFadeDistanceRange{0.0f, 1e5f};  // m
+inline constexpr Range<float> kMaxMarchDistanceRange{0.1f, 1e5f};   // m
+
 struct GodRaySettings {
   // Off: the pass is skipped (0 ms).
   bool enabled = true;
-  // Most grid-plane hits (samples) per pixel, [4, 64]. Cost is linear in it.
+  // Most grid-plane hits (samples) per pixel, kGodRaySampleCountRange. Cost is linear in it.
   int sampleCount = 16;
-  // Distance between neighbouring planes of each family (m), [0.01, 1e3]. Smaller gives finer
+  // Distance between neighbouring planes of each family (m), kGridSpacingRange. Smaller gives finer
   // shafts near the camera but reaches less far with the same sampleCount.
   float gridSpacing = 0.75f;
-  // Multiplier on the in-scattered sun light, unitless, [0, 1e4]. Stands for the phase function
+  // Multiplier on the in-scattered sun light, kIntensityRange. Stands for the phase function
   // and artistic scale.
   float intensity = 1.5f;
   // Distance below the water level (m) over which samples fade in from 0 at the surface, which
-  // hides the grid where the refracted rays have not focused yet, [0, 1e4]. 0 = no fade.
+  // hides the grid where the refracted rays have not focused yet, kFadeDepthRange. 0 = no fade.
   float surfaceFadeDistance = 2.0f;
   // e-folding depth (m) of the extra fade with depth below the level (the seed's simple
-  // out-scattering term), [0, 1e5]. 0 = no extra fade.
+  // out-scattering term), kDepthFadeDistanceRange. 0 = no extra fade.
   float depthFadeDistance = 40.0f;
-  // Longest march along a view ray (m), used for the sky and anything farther, [0.1, 1e5].
+  // Longest march along a view ray (m), used for the sky and anything farther,
+  // kMaxMarchDistanceRange.
   float maxDistance = 60.0f;
   // Half by default: as accurate as full resolution against the dense reference at a third of
   // the cost (see the README's error-against-time table).
@@ -136,7 +149,6 @@ struct GodRaySettings {
   // Shift the grid per pixel by a 4x4 ordered-dither phase that is fixed on screen and in time:
   // breaks the banding of few samples into fine static noise, without temporal flicker.
   bool dither = false;
-  GodRaySampling sampling = GodRaySampling::WorldGrid;
 };
 
 }  // namespace postfx

@@ -15,6 +15,7 @@
 
 #include <glcontext/context.h>
 #include <postfx/postfx.h>
+#include <postfx/testing.h>
 #include <postfx/water/ocean.h>
 #include <nlohmann/json.hpp>
 
@@ -34,7 +35,7 @@ struct Config {
   postfx::Feature features;
   postfx::CausticsSettings caustics;
   postfx::GodRaySettings godRays;
-  std::vector<const char*> passes;  // the passes whose times make the configuration's cost
+  std::vector<postfx::Pass> passes;  // the passes whose times make the configuration's cost
 };
 
 struct Row {
@@ -76,11 +77,12 @@ bool parse(int argc, char** argv, Options& options, std::string& error) {
 
 std::vector<Config> configurations() {
   using postfx::Feature;
+  using postfx::Pass;
   std::vector<Config> configs;
   postfx::GodRaySettings noGodRays;
   noGodRays.enabled = false;
   const Feature caustics = Feature::Caustics | Feature::Dispersion;
-  configs.push_back({"caustics", caustics, {}, noGodRays, {"caustics"}});
+  configs.push_back({"caustics", caustics, {}, noGodRays, {Pass::Caustics}});
   for (int grid : {128, 256}) {
     postfx::CausticsSettings physical;
     physical.model = postfx::CausticsModel::WavefrontAreaRatio;
@@ -89,7 +91,7 @@ std::vector<Config> configurations() {
                        caustics | Feature::PhysicalCaustics,
                        physical,
                        noGodRays,
-                       {"caustics_irradiance", "caustics"}});
+                       {Pass::CausticsIrradiance, Pass::Caustics}});
   }
   postfx::CausticsSettings noCaustics;
   noCaustics.enabled = false;
@@ -102,26 +104,19 @@ std::vector<Config> configurations() {
                        Feature::Caustics | Feature::GodRays,
                        noCaustics,
                        godRays,
-                       {"god_rays"}});
+                       {Pass::GodRays}});
   }
   configs.push_back(
-      {"default_frame", caustics | Feature::GodRays, {}, {}, {"caustics", "god_rays"}});
+      {"default_frame", caustics | Feature::GodRays, {}, {}, {Pass::Caustics, Pass::GodRays}});
   return configs;
-}
-
-double median(const postfx::FrameStats& stats, const char* name) {
-  for (int i = 0; i < stats.passCount; ++i) {
-    if (std::string(stats.passes[i].name) == name) return stats.passes[i].medianMs;
-  }
-  return 0.0;
 }
 
 bool run(const Config& config, const Options& options, const postfx::bench::SeabedGbuffer& gbuffer,
          postfx::water::Ocean& ocean, Row& row, std::string& error) {
   postfx::CreateDesc create;
-  create.features = config.features | postfx::Feature::BenchmarkFloor;
-  create.depthConvention = 1;
-  create.normalEncoding = 1;
+  create.features = config.features | postfx::testing::BenchmarkFloor;
+  create.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   create.maxWaterCascades = ocean.cascadeCount();
   postfx::Context* fx = nullptr;
   if (postfx::create(create, fx) != postfx::Result::Ok) {
@@ -170,9 +165,9 @@ bool run(const Config& config, const Options& options, const postfx::bench::Seab
   if (ok) {
     const postfx::FrameStats& stats = postfx::stats(*fx);
     row.name = config.name;
-    row.floorMs = median(stats, "floor");
-    for (const char* pass : config.passes) {
-      row.passes.emplace_back(pass, median(stats, pass));
+    row.floorMs = stats.pass(postfx::Pass::Floor).medianMs;
+    for (const postfx::Pass pass : config.passes) {
+      row.passes.emplace_back(postfx::toString(pass), stats.pass(pass).medianMs);
       row.ms += row.passes.back().second;
     }
   }

@@ -1,0 +1,57 @@
+#pragma once
+// What the plugin reports back: per-pass GPU timings (read from timestamp queries without ever
+// waiting on the GPU: a pass's numbers describe a frame a few dispatches old, the ring is
+// kTimerRingDepth frames deep) and the message of the last failed call.
+#include <cstdint>
+
+namespace postfx {
+
+struct Context;
+
+inline constexpr int kTimerRingDepth = 4;      // frames of timestamp pairs in flight
+inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is taken over
+
+// The timed passes, in the order dispatch() runs them.
+enum class Pass : std::uint8_t {
+  CausticsIrradiance,  // CausticsModel::WavefrontAreaRatio's irradiance (Feature::PhysicalCaustics)
+  Floor,               // benchmark floor (postfx/testing.h: kBenchmarkFloor)
+  Caustics,            // seabed caustics (Feature::Caustics)
+  GodRays,             // god rays, march and upsample together (Feature::GodRays)
+  ObjectCaustics,      // caster caustics (Feature::ObjectCaustics)
+};
+inline constexpr int kPassCount = 5;
+
+// Stable snake_case name, e.g. "god_rays" (the sample's bench and report print it).
+const char* toString(Pass pass) noexcept;
+
+struct PassStats {
+  bool present = false;       // the context has this pass (its feature was given at create())
+  double lastMs = 0.0;        // GPU time of the most recent resolved frame; 0 when skipped
+  double medianMs = 0.0;      // median over the last kTimerMedianWindow resolved frames
+  bool skipped = false;       // the most recent resolved frame skipped this pass (nothing to do)
+  std::uint32_t samples = 0;  // resolved frames in the median window (skipped ones count as 0 ms)
+};
+
+struct FrameStats {
+  PassStats passes[kPassCount];  // indexed by Pass: passes[int(Pass::GodRays)], or pass() below
+  const PassStats& pass(Pass p) const noexcept { return passes[static_cast<int>(p)]; }
+  std::uint64_t framesDispatched = 0;  // successful dispatch() calls
+  std::uint64_t framesResolved = 0;    // of those, frames whose timings have been read back
+  std::uint64_t framesDropped = 0;     // frames whose queries were still pending when the ring
+                                       // wrapped (read never, rather than stall)
+  // CausticsModel::WavefrontAreaRatio: the flux CausticsSettings::maxIrradiance removed in the
+  // most recent frame whose count has been read back (a few dispatches old, never stalled
+  // for), as a fraction of the window's flat-water flux summed over the depth layers. 0 in
+  // the RayDeviation model; -1 until a first count is read.
+  double clampedFluxFraction = -1.0;
+};
+
+// Per-pass GPU timings, updated by each dispatch() from queries that have completed.
+const FrameStats& stats(const Context& context) noexcept;
+
+// The message of the last failed call on `context`, or, for null, of the last failed create()
+// on this thread: one sentence naming the field, its value and the accepted range or formats.
+// Empty after success. Valid until the next call on the same context/thread.
+const char* lastError(const Context* context) noexcept;
+
+}  // namespace postfx

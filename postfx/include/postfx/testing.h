@@ -1,0 +1,52 @@
+#pragma once
+// Hooks for tests, benchmarks and the report: not part of what a host integrates, and not
+// included by postfx/postfx.h. Nothing here changes what a frame without them looks like.
+#include <postfx/postfx.h>
+
+namespace postfx::testing {
+
+// Create-time features beside the host's (CreateDesc::features | testing::BenchmarkFloor).
+//  - RawCausticOutput: the caustics pass also writes its raw factor to rawCausticTexture().
+//  - BenchmarkFloor: a "floor" pass (Pass::Floor) runs first whenever any timed pass runs: a
+//    full-screen pass that reads the G-buffer, the water cascades (when a water texture is
+//    given) and the shadow map and writes the same outputs with no math (adds exactly 0), so
+//    that caustics.medianMs / floor.medianMs measures a shader's cost independently of the
+//    machine. The GPU is drained before each timed pass (glFinish): never in a shipping frame.
+inline constexpr Feature RawCausticOutput = static_cast<Feature>(1u << 5);
+inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
+
+// With RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last dispatched
+// target holding omega * (n.l) * shadow * fade (mean of R,G,B) — the caustic factor with N.L,
+// the shadow map and the surface fade, before albedo, irradiance, intensity and absorption
+// (flat water reads n.l, not 1); 0 where no caustics (sky, above water, back-facing, shadowed,
+// pass skipped). In [0, 1] in the RayDeviation model, [0, maxIrradiance] in WavefrontAreaRatio.
+// 0 without the feature or before the first dispatch.
+GlName rawCausticTexture(const Context& context) noexcept;
+
+// The WavefrontAreaRatio model's irradiance of the most recent frame that computed it.
+struct CausticIrradianceInfo {
+  // Plugin-owned GL_TEXTURE_2D_ARRAY, GL_R32F, resolution^2 texels x layers: irradiance on a
+  // horizontal receiver relative to flat water (flat water gives 1), clamped, no absorption.
+  // 0 without Feature::PhysicalCaustics or before the first frame in that model.
+  GlName texture = 0;
+  int resolution = 0, layers = 0;
+  glm::dvec2 windowOrigin{0.0};  // world xz of the corner of texel (0, 0) (m)
+  double windowSize = 0.0;       // m; texel (i, j) covers origin + [i, i+1) * size / resolution
+  float layerDepth[8] = {};      // m below the water level, per layer
+};
+CausticIrradianceInfo causticIrradiance(const Context& context) noexcept;
+
+// How the god-ray march places its samples along each view ray.
+enum class GodRaySampling {
+  // Seed 002 section 4 (what every context does): where the ray crosses the planes of a
+  // world-snapped grid, so the samples stay put in the world when the camera moves.
+  WorldGrid,
+  // sampleCount points evenly spread along the ray: slides with the camera (flickers). For
+  // comparisons (the temporal-stability test, the report) only.
+  UniformAlongRay,
+};
+// Sets the sampling of the context's later frames; InvalidArgument (nothing changed) for a
+// value outside the enum.
+Result setGodRaySampling(Context& context, GodRaySampling sampling) noexcept;
+
+}  // namespace postfx::testing
