@@ -95,6 +95,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
+  const bool tile = caustics && detail::tileIrradianceActive(frame);
+  int tileVariant = 0;  // the caustics program's TileIrradiance variant; 0: another model
   const bool floor = hasFeature(context.desc.features, Feature::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
   // The floor runs whenever some timed pass does, so that every pass has its ratio.
@@ -128,8 +130,18 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
                     "entries too large)");
   }
   r = detail::checkFrameMemory(context.desc, frame, width, height,
-                               {caustics, godRays, physical, objects}, error);
+                               {caustics, godRays, physical, objects, tile}, error);
   if (r != Result::Ok) return r;
+  if (tile) {  // built on first use; a failure changes nothing
+    if (!context.tileIrradianceReady) {
+      r = context.tileIrradiance.init(detail::shaderDefines(context.desc), error);
+      if (r != Result::Ok) return r;
+      context.tileIrradianceReady = true;
+    }
+    const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
+    r = context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, tileVariant, error);
+    if (r != Result::Ok) return r;
+  }
 
   detail::GlStateGuard guard;
   detail::DrawStateGuard drawState;  // inside: both save the host's values
@@ -142,6 +154,13 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   }
   if (physical) {
     r = context.irradiance.reserve(frame, error);
+    if (r != Result::Ok) {
+      context.caustics.finish();
+      return r;
+    }
+  }
+  if (tile) {
+    r = context.tileIrradiance.reserve(frame, error);
     if (r != Result::Ok) {
       context.caustics.finish();
       return r;
@@ -173,6 +192,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
         context.timers.setClampedFluxFraction(0.0);
     }
   }
+  if (!tile && context.tileIrradiancePass >= 0)
+    context.timers.markSkipped(context.tileIrradiancePass);
   if (!caustics) {
     context.timers.markSkipped(Context::kCausticsPass);
     context.caustics.clearRaw(width, height);
@@ -196,6 +217,15 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
       context.timers.end(context.irradiancePass);
       context.caustics.bindState(frame, textures, context.irradiance.texture());
     }
+    if (tile) {
+      // Before the floor and the caustics, like the window model's irradiance.
+      DebugGroup tileGroup("postfx.caustics_tile_irradiance");
+      if (floor) glFinish();
+      context.timers.begin(context.tileIrradiancePass);
+      context.tileIrradiance.draw(frame, textures);
+      context.timers.end(context.tileIrradiancePass);
+      context.caustics.bindState(frame, textures, 0, context.tileIrradiance.texture());
+    }
     // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass.
     // Tile-based and software rasterizers (llvmpipe) otherwise run both draws interleaved per
     // tile and no query pair can separate them. This is the one place the plugin waits, and
@@ -211,7 +241,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
       DebugGroup causticsGroup("postfx.caustics");
       if (floor) glFinish();
       context.timers.begin(Context::kCausticsPass);
-      context.caustics.drawCaustics();
+      context.caustics.drawCaustics(tileVariant);
       context.timers.end(Context::kCausticsPass);
     }
     if (godRays) {
@@ -275,7 +305,7 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     if (r != Result::Ok) return r;
     const bool floor = hasFeature(desc.features, Feature::BenchmarkFloor);
     int passCount = floor ? 2 : 1;
-    const char* names[kMaxPasses] = {"caustics", "floor", "", "", ""};
+    const char* names[kMaxPasses] = {"caustics", "floor", "", "", "", ""};
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
@@ -287,6 +317,10 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
       if (r != Result::Ok) return r;
       context->irradiancePass = passCount;
       names[passCount++] = "caustics_irradiance";
+    }
+    if (hasFeature(desc.features, Feature::Caustics)) {
+      context->tileIrradiancePass = passCount;
+      names[passCount++] = "caustics_tile_irradiance";
     }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
       r = context->objectCaustics.init(detail::shaderDefines(desc), createError);

@@ -311,8 +311,18 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!inRange(s.lodBias, -4.0, 8.0)) return fail("caustics.lodBias must be in [-4, 8]");
   if (!inRange(s.minCascadeContrast, 0.0, 1.0))
     return fail("caustics.minCascadeContrast must be in [0, 1]");
-  if (s.model != CausticsModel::Seed002 && s.model != CausticsModel::WavefrontAreaRatio)
+  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio &&
+      s.model != CausticsModel::TileIrradiance)
     return fail("caustics.model is not a CausticsModel");
+  const bool powerOfTwo = s.tileResolution > 0 && (s.tileResolution & (s.tileResolution - 1)) == 0;
+  if (s.tileResolution < 32 || s.tileResolution > 1024 || !powerOfTwo)
+    return fail("caustics.tileResolution must be a power of two in [32, 1024], got " +
+                std::to_string(s.tileResolution));
+  if (!inRange(s.tileMinModulation, 0.0, 1e3))
+    return fail("caustics.tileMinModulation must be in [0, 1e3]");
+  if (s.tileDepthLayers != 4 && s.tileDepthLayers != 8)
+    return fail("caustics.tileDepthLayers must be 4 or 8, got " +
+                std::to_string(s.tileDepthLayers));
   if (s.model == CausticsModel::WavefrontAreaRatio &&
       !hasFeature(create.features, Feature::PhysicalCaustics))
     return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");

@@ -223,12 +223,14 @@ bool parseOptions(int argc, const char* const* argv, Options& options, std::stri
         return false;
       }
     } else if (flag == "--caustics-model") {
-      if (value != "ray-deviation" && value != "seed002" && value != "physical") {
-        error =
-            "--caustics-model must be ray-deviation or physical, got '" + std::string(value) + "'";
+      if (value != "tile" && value != "ray-deviation" && value != "seed002" &&
+          value != "physical") {
+        error = "--caustics-model must be tile, ray-deviation or physical, got '" +
+                std::string(value) + "'";
         return false;
       }
       options.physicalCaustics = value == "physical";
+      options.rayDeviationCaustics = value == "ray-deviation" || value == "seed002";
     } else if (flag == "--caustics-grid") {
       if (!parseInt(value, options.causticsGrid) || options.causticsGrid < 64 ||
           options.causticsGrid > 1024) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace ocean {
 
@@ -58,6 +59,11 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     setup->caustics_.model = postfx::CausticsModel::WavefrontAreaRatio;
     setup->caustics_.gridResolution = options.causticsGrid;
   }
+  if (options.rayDeviationCaustics) setup->caustics_.model = postfx::CausticsModel::RayDeviation;
+  if (const char* v = std::getenv("TILE_RES")) setup->caustics_.tileResolution = std::atoi(v);
+  if (const char* v = std::getenv("TILE_LAYERS")) setup->caustics_.tileDepthLayers = std::atoi(v);
+  if (const char* v = std::getenv("TILE_DEPTH")) setup->caustics_.maxReceiverDepth = std::atof(v);
+  if (const char* v = std::getenv("TILE_CUT")) setup->caustics_.tileMinModulation = std::atof(v);
   PluginSetup* self = setup.get();
   renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
     return self->dispatch(frame, message);

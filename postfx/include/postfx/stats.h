@@ -7,12 +7,13 @@ namespace postfx {
 
 inline constexpr int kTimerRingDepth = 4;      // frames of timestamp pairs in flight
 inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is taken over
-inline constexpr int kMaxPasses = 5;
+inline constexpr int kMaxPasses = 6;
 
 struct PassStats {
   const char* name = "";      // "caustics", "floor" (BenchmarkFloor only), "god_rays",
                               // "caustics_irradiance" (PhysicalCaustics only)
-                              // "object_caustics"
+                              // "object_caustics", "caustics_tile_irradiance"
+                              // (Feature::Caustics: TileIrradiance's pre-pass)
   double lastMs = 0.0;        // GPU time of the most recent resolved frame; 0 when skipped
   double medianMs = 0.0;      // median over the last kTimerMedianWindow resolved frames
   bool skipped = false;       // the most recent resolved frame skipped this pass (nothing to do)
