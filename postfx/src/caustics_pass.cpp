@@ -2,7 +2,6 @@
 
 #include "host_target.h"
 
-#include <cstdlib>
 #include <string>
 
 #include <glkit/texture.h>
@@ -139,7 +138,6 @@ Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, int& variant
   defines += "#define POSTFX_TILE_IRRADIANCE 1\n";
   defines += "#define POSTFX_TILE_GROUPS " + std::to_string(g) + "\n";
   defines += "#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
-  if (const char* a = std::getenv("TILE_ABLATE")) defines += std::string("#define TILE_ABLATE ") + a + "\n"; else defines += "#define TILE_ABLATE 0\n";
   GLuint id = 0;
   if (!glkit::buildProgram(shaderLibrary(),
                            {{GL_VERTEX_SHADER, "postfx/fullscreen.vert"},

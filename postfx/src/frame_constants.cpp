@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include <gbuffer/codec.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -115,9 +114,7 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   if (tileIrradianceActive(frame)) {
     const TileIrradianceLayout l = tileIrradianceLayout(frame);
     b.tileIrradiance = glm::vec4(static_cast<float>(l.layers),
-                                 static_cast<float>(1.0 / l.maxDepth),
-                                 std::getenv("TILE_NODISP") ? 0.0f : 1.0f,
-                                 std::getenv("TILE_NOC0") ? 0.0f : 1.0f);
+                                 static_cast<float>(1.0 / l.maxDepth), 0.0f, 0.0f);
     for (int c = 0; c < surface.cascadeCount && c < POSTFX_MAX_CASCADES; ++c) {
       if (l.slot[c] < 0) continue;
       b.cascadeSkip[c].z = static_cast<float>(l.slot[c] * l.groups);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "block_check.h"
 #include "frame_constants.h"
@@ -42,8 +41,6 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame) {
         (1.0 - 1.0 / double(water.ior)) * water.rmsLaplacian[c] / upY * l.maxDepth;
     const double cut = s.tileMinModulation;
     const bool unknown = !(water.rmsLaplacian[c] > 0.0);
-    const char* mask = std::getenv("TILE_MASK");  // TEMPORARY experiment hook
-    if (mask != nullptr && !((std::atoi(mask) >> c) & 1)) continue;
     if (unknown || modulation >= cut) {
       l.slot[c] = l.cascadeCount++;
       l.cascadeMask |= 1 << c;

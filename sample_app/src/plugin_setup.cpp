@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 namespace ocean {
 
@@ -60,10 +59,6 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     setup->caustics_.gridResolution = options.causticsGrid;
   }
   if (options.rayDeviationCaustics) setup->caustics_.model = postfx::CausticsModel::RayDeviation;
-  if (const char* v = std::getenv("TILE_RES")) setup->caustics_.tileResolution = std::atoi(v);
-  if (const char* v = std::getenv("TILE_LAYERS")) setup->caustics_.tileDepthLayers = std::atoi(v);
-  if (const char* v = std::getenv("TILE_DEPTH")) setup->caustics_.maxReceiverDepth = std::atof(v);
-  if (const char* v = std::getenv("TILE_CUT")) setup->caustics_.tileMinModulation = std::atof(v);
   PluginSetup* self = setup.get();
   renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
     return self->dispatch(frame, message);

@@ -61,9 +61,6 @@ float tileCascadeIrradiance(int c, vec2 coord, float layerCoord, float logFootpr
     vec4 skip = u.cascadeSkip[c];
     vec3 at = vec3(u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w, skip.z);
     float lod = logFootprint + skip.w;
-#if TILE_ABLATE & 1
-    lod = 0.0;
-#endif
     e = dot(textureLod(tileIrradiance, at, lod), tileLayerWeights(layerCoord, 0)) +
         max(-layerCoord, 0.0);
 #if POSTFX_TILE_GROUPS > 1
@@ -78,11 +75,7 @@ float tileCascadeIrradiance(int c, vec2 coord, float layerCoord, float logFootpr
 // (aliased slopes would scatter the finer cascades' lookups).
 vec3 tileCascadeSurface(int c, vec2 coord, float logFootprint) {
   vec2 uv = u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w;
-#if TILE_ABLATE & 2
-  return textureLod(waterSurface, WATER_COORD(uv, c), 0.0).rgb;
-#else
   return textureLod(waterSurface, WATER_COORD(uv, c), logFootprint + u.cascadeOblique[c].z).rgb;
-#endif
 }
 
 // The product of the cascades' own irradiances, coarsest first, each looked up where the light

@@ -21,9 +21,12 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
 
   const postfx::FrameStats& s = postfx::stats(*fx);
-  ASSERT_EQ(s.passCount, 2);
+  ASSERT_EQ(s.passCount, 3);
   EXPECT_EQ(std::string(s.passes[0].name), "caustics");
   EXPECT_EQ(std::string(s.passes[1].name), "floor");
+  // The TileIrradiance pre-pass exists with Feature::Caustics; this frame's model (ray
+  // deviation) does not run it.
+  EXPECT_EQ(std::string(s.passes[2].name), "caustics_tile_irradiance");
 
   // The first dispatch cannot have read anything: its queries are read by later dispatches.
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
@@ -40,6 +43,8 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   EXPECT_GT(s.passes[1].lastMs, 0.0);
   EXPECT_GT(s.passes[0].medianMs, 0.0);
   EXPECT_FALSE(s.passes[0].skipped);
+  EXPECT_TRUE(s.passes[2].skipped);
+  EXPECT_EQ(s.passes[2].lastMs, 0.0);
 
   // Caustics disabled: both passes skipped; once those frames resolve they report 0 ms.
   frame.caustics.enabled = false;
