@@ -149,3 +149,67 @@ TEST_F(PostfxTileIrradianceTest, AgreesWithTracedLightOnAFlatSeabed) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every raw value finite and within [0, maxIrradiance] on the mixed scene.
+void expectFiniteAndBounded(postfx::Context& fx, const postfx::FrameDesc& frame, int w, int h,
+                            const char* what) {
+  ASSERT_EQ(postfx::dispatch(fx, frame), postfx::Result::Ok) << what << ": "
+                                                             << postfx::lastError(&fx);
+  const auto raw = postfxtest::readRed(postfx::rawCausticTexture(fx), w, h);
+  for (size_t i = 0; i < raw.size(); ++i)
+    ASSERT_TRUE(raw[i] >= 0.0f && raw[i] <= frame.caustics.maxIrradiance)
+        << what << ": pixel " << i << " = " << raw[i];
+}
+
+TEST_F(PostfxTileIrradianceTest, StiffCasesStayFiniteAndBounded) {
+  postfxtest::SceneSpec spec;
+  spec.lookDirection = {0.0, -0.3, -1.0};
+  postfxtest::Scene scene(spec);
+  const int w = spec.width, h = spec.height;
+  const GLuint steep = postfxtest::makeWaterTexture(32, 2, 50.0);
+  const GLuint broken = postfxtest::makeWaterTexture(32, 2, 0.0, true);
+  auto fx = postfxtest::makeContext(kRaw);
+  postfx::FrameDesc frame = tileFrame(scene, steep, 2);
+  expectFiniteAndBounded(*fx, frame, w, h, "slopes 50");
+  frame.water.texture.texture = broken;
+  expectFiniteAndBounded(*fx, frame, w, h, "NaN water");
+  frame.water.texture.texture = steep;
+  frame.sun.direction = glm::normalize(glm::dvec3(1.0, 1e-6, 0.0));
+  expectFiniteAndBounded(*fx, frame, w, h, "sun 1e-6 rad high");
+  frame.sun.direction = glm::dvec3(0.0, 1.0, 0.0);
+  frame.water.ior = 1.0f;
+  expectFiniteAndBounded(*fx, frame, w, h, "IOR 1");
+  frame.water.ior = 1.333f;
+  frame.caustics.maxReceiverDepth = 0.011f;
+  frame.caustics.tileResolution = 32;
+  expectFiniteAndBounded(*fx, frame, w, h, "1 cm of layers, 32 texels");
+  frame.caustics.maxReceiverDepth = 1e4f;
+  frame.caustics.tileResolution = 1024;
+  frame.caustics.tileDepthLayers = 8;
+  frame.caustics.maxIrradiance = 1.0f;
+  expectFiniteAndBounded(*fx, frame, w, h, "1e4 m of layers, 1024 texels, clamp 1");
+  frame.water.level = 1e6;  // every receiver ~1e6 m deep: beyond the deepest layer
+  expectFiniteAndBounded(*fx, frame, w, h, "1e6 m deep");
+
+  // Bad settings are refused and draw nothing.
+  const std::pair<const char*, void (*)(postfx::CausticsSettings&)> bad[] = {
+      {"tileResolution 100", [](postfx::CausticsSettings& s) { s.tileResolution = 100; }},
+      {"tileResolution 2048", [](postfx::CausticsSettings& s) { s.tileResolution = 2048; }},
+      {"tileDepthLayers 5", [](postfx::CausticsSettings& s) { s.tileDepthLayers = 5; }},
+      {"tileMinModulation NaN",
+       [](postfx::CausticsSettings& s) { s.tileMinModulation = std::nanf(""); }},
+  };
+  for (const auto& [what, spoil] : bad) {
+    postfx::FrameDesc refused = tileFrame(scene, steep, 2);
+    spoil(refused.caustics);
+    EXPECT_EQ(postfx::dispatch(*fx, refused), postfx::Result::InvalidArgument) << what;
+    EXPECT_NE(std::string(postfx::lastError(fx.get())).find("caustics.tile"), std::string::npos)
+        << what << ": " << postfx::lastError(fx.get());
+  }
+  glDeleteTextures(1, &steep);
+  glDeleteTextures(1, &broken);
+}
+
+}  // namespace
