@@ -29,6 +29,14 @@ postfx_add_test(postfx_streak_tests GL
   SOURCES gl/postfx_streak_test.cpp
   LIBS ocean_report water glm::glm postfx::epoxy)
 
+# The TileIrradiance model (the default): flat water, where light may land, flux, and against
+# converged light tracing on the report's flat seabed.
+postfx_add_test(postfx_tile_irradiance_tests GL
+  SOURCES gl/postfx_scene.cpp gl/postfx_tile_irradiance_test.cpp
+  LIBS ocean_report postfx gbuffer water glm::glm postfx::epoxy)
+target_include_directories(postfx_tile_irradiance_tests
+  PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
+
 # The traced frame reference (photon tracing against Embree triangles, density estimation per
 # pixel) on scenes with known answers; CPU only.
 postfx_add_test(reference_frame_tests

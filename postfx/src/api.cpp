@@ -97,6 +97,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   const bool caustics = causticsHaveWork(context, frame);
   const bool godRays = godRaysHaveWork(context, frame);
   const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
+  const bool tile = caustics && detail::tileIrradianceActive(frame);
+  int tileVariant = 0;  // the caustics program's TileIrradiance variant; 0: another model
   const bool floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
   const bool objects = objectCausticsHaveWork(context, frame);
   // The floor runs whenever some timed pass does, so that every pass has its ratio.
@@ -132,8 +134,18 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
                     "entries too large)");
   }
   r = detail::checkFrameMemory(context.desc, frame, width, height,
-                               {caustics, godRays, physical, objects}, error);
+                               {caustics, godRays, physical, objects, tile}, error);
   if (r != Result::Ok) return r;
+  if (tile) {  // built on first use; a failure changes nothing
+    if (!context.tileIrradianceReady) {
+      r = context.tileIrradiance.init(detail::shaderDefines(context.desc), error);
+      if (r != Result::Ok) return r;
+      context.tileIrradianceReady = true;
+    }
+    const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
+    r = context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, tileVariant, error);
+    if (r != Result::Ok) return r;
+  }
 
   detail::GlStateGuard guard;
   detail::DrawStateGuard drawState;  // inside: both save the host's values
@@ -146,6 +158,13 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   }
   if (physical) {
     r = context.irradiance.reserve(frame, error);
+    if (r != Result::Ok) {
+      context.caustics.finish();
+      return r;
+    }
+  }
+  if (tile) {
+    r = context.tileIrradiance.reserve(frame, error);
     if (r != Result::Ok) {
       context.caustics.finish();
       return r;
@@ -177,6 +196,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
         context.timers.setClampedFluxFraction(0.0);
     }
   }
+  if (!tile) context.timers.markSkipped(Pass::CausticsTileIrradiance);
   if (!caustics) {
     context.timers.markSkipped(Pass::Caustics);
     context.caustics.clearRaw(width, height);
@@ -199,6 +219,15 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
       context.timers.end(Pass::CausticsIrradiance);
       context.caustics.bindState(frame, textures, context.irradiance.texture());
     }
+    if (tile) {
+      // Before the floor and the caustics, like the window model's irradiance.
+      DebugGroup tileGroup("postfx.caustics_tile_irradiance");
+      if (floor) glFinish();
+      context.timers.begin(Pass::CausticsTileIrradiance);
+      context.tileIrradiance.draw(frame, textures);
+      context.timers.end(Pass::CausticsTileIrradiance);
+      context.caustics.bindState(frame, textures, 0, context.tileIrradiance.texture());
+    }
     // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass.
     // Tile-based and software rasterizers (llvmpipe) otherwise run both draws interleaved per
     // tile and no query pair can separate them. This is the one place the plugin waits, and
@@ -214,7 +243,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
       DebugGroup causticsGroup("postfx.caustics");
       if (floor) glFinish();
       context.timers.begin(Pass::Caustics);
-      context.caustics.drawCaustics();
+      context.caustics.drawCaustics(tileVariant);
       context.timers.end(Pass::Caustics);
     }
     if (godRays) {
@@ -239,6 +268,8 @@ const char* toString(Pass pass) noexcept {
   switch (pass) {
     case Pass::CausticsIrradiance:
       return "caustics_irradiance";
+    case Pass::CausticsTileIrradiance:
+      return "caustics_tile_irradiance";
     case Pass::Floor:
       return "floor";
     case Pass::Caustics:
@@ -293,6 +324,8 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     std::array<bool, kPassCount> present{};
     present[int(Pass::Caustics)] = hasFeature(desc.features, Feature::Caustics);
     present[int(Pass::Floor)] = hasFeature(desc.features, testing::BenchmarkFloor);
+    // TileIrradiance needs no feature of its own: its pre-pass exists wherever caustics do.
+    present[int(Pass::CausticsTileIrradiance)] = hasFeature(desc.features, Feature::Caustics);
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;

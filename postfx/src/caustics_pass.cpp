@@ -99,6 +99,9 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
     shadowForwardSampler_ = makeShadowSampler(GL_LEQUAL, "postfx.sampler.shadow_forward");
     shadowReverseSampler_ = makeShadowSampler(GL_GEQUAL, "postfx.sampler.shadow_reverse_z");
   }
+  // The tile repeats: filtering wraps across its edge.
+  tileSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT,
+                                      "postfx.sampler.tile_irradiance");
   if (hasFeature(desc.features, Feature::PhysicalCaustics))
     irradianceSampler_ =
         glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "postfx.sampler.irradiance");
@@ -108,6 +111,7 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
 void CausticsPass::release() {
   caustics_ = glkit::Program();
   floor_ = glkit::Program();
+  for (glkit::Program& p : tileCaustics_) p = glkit::Program();
   if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
   if (floorFramebuffer_ != 0) glDeleteFramebuffers(1, &floorFramebuffer_);
   if (vertexArray_ != 0) glDeleteVertexArrays(1, &vertexArray_);
@@ -121,6 +125,31 @@ void CausticsPass::release() {
   deleteSampler(shadowForwardSampler_);
   deleteSampler(shadowReverseSampler_);
   deleteSampler(irradianceSampler_);
+  deleteSampler(tileSampler_);
+}
+
+Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
+                                      std::string& error) {
+  const int g = groups > 1 ? 2 : 1;
+  const int mask = cascadeMask & (kTileMasks - 1);
+  const int index = kTileMasks * (g - 1) + mask;
+  variant = 1 + index;
+  glkit::Program& program = tileCaustics_[index];
+  if (program.id() != 0) return Result::Ok;
+  // The window model's lookup is compiled out: the two models never run together.
+  std::string defines = shaderDefines(desc_);
+  defines += "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n";
+  defines += "#define POSTFX_TILE_IRRADIANCE 1\n";
+  defines += "#define POSTFX_TILE_GROUPS " + std::to_string(g) + "\n";
+  defines += "#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
+  GLuint id = 0;
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_VERTEX_SHADER, "postfx/fullscreen.vert"},
+                            {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
+                           defines, "postfx.caustics_tile", id, error))
+    return Result::ShaderCompileFailed;
+  program = glkit::Program(id);
+  return Result::Ok;
 }
 
 void CausticsPass::ensureRaw(int width, int height) {
@@ -160,7 +189,7 @@ Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& te
 }
 
 void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& textures,
-                             GLuint irradiance) {
+                             GLuint irradiance, GLuint tile) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(textures.width),
                      static_cast<float>(textures.height));
@@ -203,6 +232,10 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
     glBindTextureUnit(kIrradianceUnit, irradiance);
     glBindSampler(kIrradianceUnit, irradianceSampler_);
   }
+  if (tile != 0) {  // the same unit: the two models never run together
+    glBindTextureUnit(kIrradianceUnit, tile);
+    glBindSampler(kIrradianceUnit, tileSampler_);
+  }
 }
 
 void CausticsPass::drawFloor() {
@@ -212,9 +245,9 @@ void CausticsPass::drawFloor() {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void CausticsPass::drawCaustics() {
+void CausticsPass::drawCaustics(int tileVariant) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
-  glUseProgram(caustics_.id());
+  glUseProgram(tileVariant > 0 ? tileCaustics_[tileVariant - 1].id() : caustics_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

@@ -44,11 +44,19 @@ class CausticsPass {
   // message when the framebuffer is incomplete.
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                  const shared::CausticsBlock& block, std::string& error);
+  // The TileIrradiance variant of the caustics program: `groups` RGBA fetches per cascade (1 or
+  // 2) for the cascades in `cascadeMask` (bit c: cascade c). Built the first time a frame needs
+  // it: a context that never uses the model never compiles it. Returns the variant's index for
+  // drawCaustics (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, int& variant, std::string& error);
   // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
-  // WavefrontAreaRatio model's texture (0 when not in use).
-  void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance);
+  // WavefrontAreaRatio model's texture, tile: the TileIrradiance model's (0 when not in use).
+  void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance,
+                 GLuint tile = 0);
   void drawFloor();
-  void drawCaustics();
+  // tileVariant: 0 for the RayDeviation / WavefrontAreaRatio program, else the TileIrradiance
+  // variant ensureTileProgram returned.
+  void drawCaustics(int tileVariant = 0);
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
   void finish();
   // The pass was skipped: the raw output (if any) must read 0, resized to the frame.
@@ -61,11 +69,15 @@ class CausticsPass {
 
   CreateDesc desc_{};
   glkit::Program caustics_, floor_;
+  // TileIrradiance variants: [groups - 1][cascade mask], index 1 + 16 * (groups - 1) + mask.
+  static constexpr int kTileMasks = 1 << kMaxCascades;
+  glkit::Program tileCaustics_[2 * kTileMasks];
   // The floor draws through its own framebuffer with the same attachments: the switch makes a
   // software rasterizer start a new scene, so its timer queries separate the two passes.
   GLuint framebuffer_ = 0, floorFramebuffer_ = 0, vertexArray_ = 0, uniformBuffer_ = 0;
   GLuint pointSampler_ = 0, waterMipSampler_ = 0, waterLinearSampler_ = 0;
   GLuint shadowForwardSampler_ = 0, shadowReverseSampler_ = 0, irradianceSampler_ = 0;
+  GLuint tileSampler_ = 0;
   GLuint rawTexture_ = 0;
   int rawWidth_ = 0, rawHeight_ = 0;
 };

@@ -12,6 +12,7 @@
 #include "gpu_timers.h"
 #include "irradiance_pass.h"
 #include "object_caustics_pass.h"
+#include "tile_irradiance_pass.h"
 
 namespace postfx {
 
@@ -22,6 +23,9 @@ struct Context {
   detail::GodRayGridPivot godRayPivot;
   testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
+  // Compiled the first time a frame uses the TileIrradiance model.
+  detail::TileIrradiancePass tileIrradiance;
+  bool tileIrradianceReady = false;
   detail::ObjectCausticsPass objectCaustics;
   detail::GpuTimers timers;
   std::string error;

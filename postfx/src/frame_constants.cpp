@@ -12,6 +12,7 @@
 
 #include "block_check.h"
 #include "irradiance_layout.h"
+#include "tile_irradiance_pass.h"
 
 namespace postfx::detail {
 
@@ -32,6 +33,19 @@ glm::dvec3 incidencePlaneNormal(const glm::dvec3& towardSun) {
 
 glm::dmat3 viewToWorldRotation(const glm::mat4& view) {
   return glm::transpose(glm::dmat3(glm::mat3(view)));
+}
+
+glm::dvec4 landingDriftJacobian(const glm::dvec3& towardSun, double ior) {
+  // Central differences of the exact offset per metre of depth; it is smooth in the slopes.
+  auto drift = [&](double sx, double sz) {
+    const glm::dvec3 n = glm::normalize(glm::dvec3(-sx, 1.0, -sz));
+    const glm::dvec3 t = glm::refract(-towardSun, n, 1.0 / ior);
+    return glm::dvec2(t.x, t.z) / std::max(-t.y, 1e-6);
+  };
+  const double e = 1e-4;
+  const glm::dvec2 dx = (drift(e, 0.0) - drift(-e, 0.0)) / (2.0 * e);
+  const glm::dvec2 dz = (drift(0.0, e) - drift(0.0, -e)) / (2.0 * e);
+  return glm::dvec4(dx, dz);
 }
 
 bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame) {
@@ -100,7 +114,19 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     b.cascadeSkip[c] = glm::vec4(
         laplacian > 0.0 ? static_cast<float>((1.0 - 1.0 / double(surface.ior)) * laplacian / upY)
                         : -1.0f,
-        wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, 0.0f, 0.0f);
+        wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, -1.0f, 0.0f);
+  }
+  for (int c = surface.cascadeCount; c < POSTFX_MAX_CASCADES; ++c) b.cascadeSkip[c].z = -1.0f;
+  if (tileIrradianceActive(frame)) {
+    const TileIrradianceLayout l = tileIrradianceLayout(frame);
+    b.tileIrradiance = glm::vec4(static_cast<float>(l.layers),
+                                 static_cast<float>(1.0 / l.maxDepth), 0.0f, 0.0f);
+    for (int c = 0; c < surface.cascadeCount && c < POSTFX_MAX_CASCADES; ++c) {
+      if (l.slot[c] < 0) continue;
+      b.cascadeSkip[c].z = static_cast<float>(l.slot[c] * l.groups);
+      b.cascadeSkip[c].w = static_cast<float>(std::log2(l.resolution / surface.tileSize[c]));
+    }
+    b.tileDrift = glm::vec4(landingDriftJacobian(sun, surface.ior));
   }
 
   const bool shadow = hasFeature(create.features, Feature::ShadowMask);

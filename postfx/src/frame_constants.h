@@ -17,6 +17,10 @@ struct WaterTextureInfo {
 };
 
 // The frame uses the WavefrontAreaRatio model (and the context can: Feature::PhysicalCaustics).
+// Derivative of the sun's landing offset per metre of depth with respect to the water slopes
+// (dh/dx, dh/dz) at flat water, column-major 2x2 packed as (d/dsx, d/dsz).
+glm::dvec4 landingDriftJacobian(const glm::dvec3& towardSun, double ior);
+
 bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame);
 
 shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDesc& frame,

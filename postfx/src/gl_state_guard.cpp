@@ -30,6 +30,12 @@ GlStateGuard::GlStateGuard() {
   glGetIntegerv(GL_QUERY_BUFFER_BINDING, &queryBuffer_);
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageBuffer_);
   storageIndexed_ = glkit::IndexedBufferBinding::save(GL_SHADER_STORAGE_BUFFER, 0);
+  glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &image_.texture);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 0, &image_.level);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, 0, &image_.layered);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, 0, &image_.layer);
+  glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, 0, &image_.access);
+  glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, 0, &image_.format);
 }
 
 void restoreEnabled(GLenum cap, GLboolean on) {
@@ -68,6 +74,9 @@ GlStateGuard::~GlStateGuard() {
   glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(queryBuffer_));
   storageIndexed_.restore();
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBuffer_));
+  glBindImageTexture(0, static_cast<GLuint>(image_.texture), image_.level,
+                     image_.layered ? GL_TRUE : GL_FALSE, image_.layer,
+                     static_cast<GLenum>(image_.access), static_cast<GLenum>(image_.format));
 }
 
 }  // namespace postfx::detail

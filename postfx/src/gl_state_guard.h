@@ -42,9 +42,13 @@ class GlStateGuard {
   GLint uniformBuffer_ = 0;
   std::array<glkit::IndexedBufferBinding, kUniformBindings> uniformIndexed_{};
   GLint queryBuffer_ = 0;
-  // The irradiance pass's clamp count (Feature::PhysicalCaustics): SSBO binding 0.
+  // The irradiance pass's clamp count and the tile irradiance's accumulators: SSBO binding 0.
   GLint storageBuffer_ = 0;
   glkit::IndexedBufferBinding storageIndexed_{};
+  // The tile irradiance's resolve writes through image unit 0.
+  struct ImageUnitState {
+    GLint texture = 0, level = 0, layered = 0, layer = 0, access = GL_READ_ONLY, format = GL_R8;
+  } image_{};
 };
 
 }  // namespace postfx::detail

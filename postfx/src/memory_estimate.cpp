@@ -3,6 +3,7 @@
 #include <postfx/testing.h>
 
 #include "godrays_constants.h"
+#include "tile_irradiance_pass.h"
 
 namespace postfx::detail {
 namespace {
@@ -13,7 +14,7 @@ std::uint64_t square(int side) {
 
 // Each term with the field that sets it, for the message.
 struct Terms {
-  std::uint64_t raw = 0, godRays = 0, irradiance = 0, casterMaps = 0, causticMap = 0;
+  std::uint64_t raw = 0, godRays = 0, irradiance = 0, tile = 0, casterMaps = 0, causticMap = 0;
 };
 
 Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int height,
@@ -29,6 +30,13 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
     const int resolution = frame.caustics.gridResolution;
     t.irradiance = square(resolution) * 4 * std::uint64_t(frame.caustics.depthLayers) +
                    square(resolution + 2) * 32;
+  }
+  if (passes.tile) {
+    // Per cascade with irradiance: RGBA16F texels of 4 layers with their mip chain (4/3), and a
+    // uint accumulator per texel and layer.
+    const TileIrradianceLayout l = tileIrradianceLayout(frame);
+    const std::uint64_t texels = square(l.resolution) * std::uint64_t(l.cascadeCount);
+    t.tile = texels * std::uint64_t(l.groups) * 8 * 4 / 3 + texels * std::uint64_t(l.layers) * 4;
   }
   if (passes.objects) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
@@ -49,13 +57,14 @@ std::string mib(std::uint64_t bytes) {
 std::uint64_t frameMemoryBytes(const CreateDesc& create, const FrameDesc& frame, int width,
                                int height, const FramePasses& passes) {
   const Terms t = terms(create, frame, width, height, passes);
-  return t.raw + t.godRays + t.irradiance + t.casterMaps + t.causticMap;
+  return t.raw + t.godRays + t.irradiance + t.tile + t.casterMaps + t.causticMap;
 }
 
 Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int width, int height,
                         const FramePasses& passes, std::string& error) {
   const Terms t = terms(create, frame, width, height, passes);
-  const std::uint64_t total = t.raw + t.godRays + t.irradiance + t.casterMaps + t.causticMap;
+  const std::uint64_t total =
+      t.raw + t.godRays + t.irradiance + t.tile + t.casterMaps + t.causticMap;
   const std::uint64_t budget = static_cast<std::uint64_t>(create.memoryBudgetMiB) << 20;
   if (total <= budget) return Result::Ok;
   const char* largest = "the raw caustic output (target size)";
@@ -63,6 +72,7 @@ Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int wi
   const std::pair<std::uint64_t, const char*> others[] = {
       {t.godRays, "the god-ray march texture (target size, godRays.resolution)"},
       {t.irradiance, "the irradiance layers (caustics.gridResolution, depthLayers)"},
+      {t.tile, "the tile irradiance (caustics.tileResolution, tileDepthLayers)"},
       {t.casterMaps, "the caster maps (objectCaustics.settings.gridSize)"},
       {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"}};
   for (const auto& [bytes, name] : others)

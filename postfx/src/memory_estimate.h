@@ -12,7 +12,7 @@
 namespace postfx::detail {
 
 struct FramePasses {
-  bool caustics = false, godRays = false, physical = false, objects = false;
+  bool caustics = false, godRays = false, physical = false, objects = false, tile = false;
 };
 
 std::uint64_t frameMemoryBytes(const CreateDesc& create, const FrameDesc& frame, int width,

@@ -10,4 +10,5 @@ namespace postfx {
 #include "shared/postfx_godrays.h"
 #include "shared/postfx_godrays_block.h"
 #include "shared/postfx_irradiance.h"
+#include "shared/postfx_tile_irradiance.h"
 }  // namespace postfx

@@ -310,7 +310,10 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
     return fail("water.iorRgb must be in " + rangeText(kIorRange));
   if (!within(water.absorption, kWaterCoefficientRange))
     return fail("water.absorption must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
-  if (hasFeature(create.features, Feature::GodRays) &&
+  // Scattering is read by the god rays and, with ViewExtinction::Plugin, by every pass's
+  // view-path extinction: a negative value there would amplify the light exponentially.
+  if ((hasFeature(create.features, Feature::GodRays) ||
+       frame.viewExtinction == ViewExtinction::Plugin) &&
       !within(water.scattering, kWaterCoefficientRange))
     return fail("water.scattering must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
 
@@ -348,8 +351,18 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
   if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", kLodBiasRange, "");
   if (!within(s.minCascadeContrast, kUnitRange))
     return outside("minCascadeContrast", kUnitRange, "");
-  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio)
+  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio &&
+      s.model != CausticsModel::TileIrradiance)
     return fail("caustics.model is not a CausticsModel");
+  const bool powerOfTwo = s.tileResolution > 0 && (s.tileResolution & (s.tileResolution - 1)) == 0;
+  if (!kTileResolutionRange.contains(s.tileResolution) || !powerOfTwo)
+    return fail("caustics.tileResolution must be a power of two in " +
+                rangeText(kTileResolutionRange) + ", got " + std::to_string(s.tileResolution));
+  if (!within(s.tileMinModulation, kTileMinModulationRange))
+    return outside("tileMinModulation", kTileMinModulationRange, "");
+  if (s.tileDepthLayers != 4 && s.tileDepthLayers != 8)
+    return fail("caustics.tileDepthLayers must be 4 or 8, got " +
+                std::to_string(s.tileDepthLayers));
   if (s.model == CausticsModel::WavefrontAreaRatio &&
       !hasFeature(create.features, Feature::PhysicalCaustics))
     return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");

@@ -8,14 +8,16 @@ namespace ocean {
 
 struct CausticsModelName {
   std::string_view name;
-  bool physical;  // Options::physicalCaustics
-  bool listed;    // shown in --help and in the refusal; false for a former name kept working
+  bool physical;      // Options::physicalCaustics
+  bool rayDeviation;  // Options::rayDeviationCaustics
+  bool listed;        // shown in --help and in the refusal; false for a former name kept working
 };
 
-inline constexpr std::array<CausticsModelName, 3> kCausticsModelNames{{
-    {"ray-deviation", false, true},  // exp(-tau a^2) of the refracted ray's deviation (default)
-    {"seed002", false, false},       // ray-deviation's former name
-    {"physical", true, true},        // irradiance from the wavefront area ratio
+inline constexpr std::array<CausticsModelName, 4> kCausticsModelNames{{
+    {"tile", false, false, true},           // per-cascade tile irradiance (the default)
+    {"ray-deviation", false, true, true},   // exp(-tau a^2) of the refracted ray's deviation
+    {"seed002", false, true, false},        // ray-deviation's former name
+    {"physical", true, false, true},        // irradiance window from the wavefront area ratio
 }};
 
 }  // namespace ocean

@@ -41,11 +41,14 @@ the sun), above (above the water looking down), waterline (camera 3 cm above the
 other from the preset); the look-at point is centred in the image and must not be straight
 above or below the camera. --sun-azimuth/--sun-elevation replace the preset's sun.
 
-caustics models: ray-deviation (default; exp(-tau a^2), a the refracted ray's deviation from
-flat water, one lookup per cascade and pixel; "seed002" is its former name) or physical (true
-irradiance from the wavefront area ratio; --caustics-grid 64..1024, default 256). Every
-surface looks the water up where its light entered, along the refracted sun; with
---triplanar-walls steep surfaces blend in world-axis projections instead.
+caustics models: tile (default; true caustic irradiance, computed each frame per water cascade
+over its periodic tile at a few depths, each cascade's light moved by the coarser ones'
+refraction; any distance, one small pre-pass), ray-deviation (exp(-tau a^2), a the refracted
+ray's deviation from flat water: a pattern without absolute scale; "seed002" is its former
+name) or physical (irradiance from the wavefront area ratio in a window around the camera;
+--caustics-grid 64..1024, default 256). Every surface looks the water up where its light
+entered, along the refracted sun; with --triplanar-walls steep surfaces blend in world-axis
+projections instead (ray-deviation only).
 
 --model FILE[@x,y,z][:fit=M|none]: a glTF (.glb/.gltf) added as glass or metal casters. By
 default its bounding box is scaled to 1.5 m and set on the sand in a row before the camera;

@@ -141,11 +141,12 @@ const std::array kValueOptions{
                 [](std::string_view text, Options& o, std::string& error) {
                   return doubleIn(text, 0.0, 1e6, o.tau, "--tau", "a number in [0, 1e6]", error);
                 }},
-    ValueOption{"--caustics-model", "MODEL", "ray-deviation (default) or physical", false,
+    ValueOption{"--caustics-model", "MODEL", "tile (default), ray-deviation or physical", false,
                 [](std::string_view text, Options& o, std::string& error) {
                   for (const CausticsModelName& model : kCausticsModelNames) {
                     if (model.name != text) continue;
                     o.physicalCaustics = model.physical;
+                    o.rayDeviationCaustics = model.rayDeviation;
                     return true;
                   }
                   error = "--caustics-model must be " + causticsModelList() + got(text);

@@ -28,9 +28,11 @@ struct Options {
   bool godRays = true;         // the plugin's underwater god rays
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
   double tau = -1.0;           // caustics tightening; < 0 keeps the plugin's default
-  // Caustics model: false = ray deviation (the plugin's default), true = the wavefront
-  // area-ratio irradiance (Feature::PhysicalCaustics), with this grid resolution.
+  // Caustics model: the tile irradiance (the plugin's default) unless one of these is set:
+  // the wavefront area-ratio irradiance window (seed 004, Feature::PhysicalCaustics, with this
+  // grid resolution) or the ray deviation.
   bool physicalCaustics = false;
+  bool rayDeviationCaustics = false;  // the ray-deviation model instead of the tile irradiance
   int causticsGrid = 256;
   // World-axis tri-planar lookup on steep surfaces (Feature::TriplanarWalls).
   bool triplanarWalls = false;

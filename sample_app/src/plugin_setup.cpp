@@ -52,6 +52,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     setup->caustics_.model = postfx::CausticsModel::WavefrontAreaRatio;
     setup->caustics_.gridResolution = options.causticsGrid;
   }
+  if (options.rayDeviationCaustics) setup->caustics_.model = postfx::CausticsModel::RayDeviation;
   PluginSetup* self = setup.get();
   renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
     return self->dispatch(frame, message);

@@ -2,13 +2,17 @@
 // Seabed caustics (seed 002, section 4) added into the host's HDR target. Compile-time
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
 // POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL,
-// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS.
+// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the TileIrradiance variant defines
+// POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers each).
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
 #include "postfx/water_sampling.glsl"
-#if POSTFX_PHYSICAL
+// Unconditional: the shader library expands each file once, where it is first named, even
+// inside a disabled #if (the tile irradiance header needs it too).
 #include "shared/postfx_irradiance.h"
+#include "shared/postfx_tile_irradiance.h"
+#if POSTFX_PHYSICAL
 
 layout(binding = 5) uniform sampler2DArray causticIrradiance;
 
@@ -41,6 +45,63 @@ float physicalIrradiance(vec3 p, float depthBelow, out float weight) {
   float lower = blend.x < 0.0 ? 1.0 : layerIrradiance(p, depthBelow, blend.x);
   float upper = layerIrradiance(p, depthBelow, blend.y);
   return mix(lower, upper, blend.z);
+}
+#endif
+
+#ifdef POSTFX_TILE_IRRADIANCE
+layout(binding = 5) uniform sampler2DArray tileIrradiance;
+
+// Cascade c's own irradiance where its light lands at entry coordinate `coord` (m), interpolated
+// between the depth layers around the receiver (1 above the first: flat water at the surface).
+// Which cascades have irradiance is compiled in (POSTFX_TILE_CASCADES, a bit per cascade): a
+// fetch under a run-time condition costs a CPU rasteriser as much as an unconditional one.
+float tileCascadeIrradiance(int c, vec2 coord, float layerCoord, float logFootprint) {
+  float e = 1.0;
+  if (((POSTFX_TILE_CASCADES >> c) & 1) != 0) {  // constant once the loop is unrolled
+    vec4 skip = u.cascadeSkip[c];
+    vec3 at = vec3(u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w, skip.z);
+    float lod = logFootprint + skip.w;
+    e = dot(textureLod(tileIrradiance, at, lod), tileLayerWeights(layerCoord, 0)) +
+        max(-layerCoord, 0.0);
+#if POSTFX_TILE_GROUPS > 1
+    e += dot(textureLod(tileIrradiance, at + vec3(0.0, 0.0, 1.0), lod),
+             tileLayerWeights(layerCoord, 1));
+#endif
+  }
+  return e;
+}
+
+// Cascade c's slopes and height at entry coordinate `coord` (m), at its footprint's mip level
+// (aliased slopes would scatter the finer cascades' lookups).
+vec3 tileCascadeSurface(int c, vec2 coord, float logFootprint) {
+  vec2 uv = u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w;
+  return textureLod(waterSurface, WATER_COORD(uv, c), logFootprint + u.cascadeOblique[c].z).rgb;
+}
+
+// The product of the cascades' own irradiances, coarsest first, each looked up where the light
+// it focuses came from: the coarser cascades refract that light sideways by an offset that
+// varies slowly on the finer cascade's scale, so the finer pattern arrives shifted by it (and
+// concentrated by the coarser focus, the product). Scale separation of the cascades is what
+// makes this close to tracing through their sum; the report measures how close.
+float tileIrradianceAt(vec3 p, float depthBelow, float logFootprint) {
+  float layerCoord = tileLayerCoord(depthBelow, int(u.tileIrradiance.x), u.tileIrradiance.y);
+  vec2 entry = lightEntryCoord(p);
+  vec2 flatDrift = -u.oblique.xy;
+  int cascades = int(u.oblique.w);
+  float e = tileCascadeIrradiance(0, entry, layerCoord, logFootprint);
+#if POSTFX_CASCADE_SLOTS > 1
+  vec3 coarse = vec3(0.0);
+  vec2 coord = entry;
+  for (int c = 1; c < POSTFX_CASCADE_SLOTS; ++c) {  // unrolled: constant bound
+    // Only where a finer cascade has irradiance to move (constant once unrolled).
+    if ((POSTFX_TILE_CASCADES >> c) != 0 && c < cascades) {
+      coarse += tileCascadeSurface(c - 1, coord, logFootprint);
+      coord = entry - tileLinearOffset(coarse, u.tileDrift, flatDrift, depthBelow);
+      e *= tileCascadeIrradiance(c, coord, layerCoord, logFootprint);
+    }
+  }
+#endif
+  return e;
 }
 #endif
 
@@ -103,6 +164,9 @@ void main() {
   float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
   float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
 
+#ifdef POSTFX_TILE_IRRADIANCE
+  vec3 omega = vec3(tileIrradianceAt(p, depthBelow, logFootprint));
+#else
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;
   float physicalWeight = 0.0;
@@ -125,6 +189,7 @@ void main() {
 #if POSTFX_PHYSICAL
   omega = mix(omega, physical, physicalWeight);
 #endif
+#endif  // POSTFX_TILE_IRRADIANCE
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   vec3 light = albedo * u.lightScale.rgb * causticTransmittance(u.absorptionPerDepth.rgb, depthBelow);

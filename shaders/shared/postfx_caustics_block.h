@@ -36,7 +36,8 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
                                              // z: log2(texels per metre); w: unused
   vec4 cascadeSkip[POSTFX_MAX_CASCADES];     // x: irradiance modulation per metre below the level
                                              // (< 0: unknown, always sampled); y: log2 of half the
-                                             // longest wavelength (m; huge: unknown); zw: unused
+                                             // longest wavelength (m; huge: unknown); zw: see
+                                             // tileIrradiance
   vec4 shadowParams;         // x: bias toward the light (m), y: 1 for a [-1,1] shadow convention,
                              // z: unused, w: floor-pass scale (always 0)
   vec4 shadowLight;          // w 0: xyz unit vector toward the light (orthographic map); w 1:
@@ -47,10 +48,16 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
                              // corner (m); z: 1 / window size (1/m); w: layer count, 0 = model
                              // off (seed 002 only)
   vec4 irradianceDepths[2];  // depth below the level of layers 0-3 and 4-7 (m)
+  vec4 tileIrradiance;       // TileIrradiance: x: depth layers (0 = model off), y: 1 / deepest
+                             // layer's depth (1/m); zw: unused. Per cascade, cascadeSkip z: its
+                             // first array layer (< 0: none, irradiance 1), w: log2(irradiance
+                             // texels per metre)
+  vec4 tileDrift;            // d(landing offset per metre of depth) / d(slopes) at flat water,
+                             // column-major 2x2 (tileLinearOffset)
 #ifdef __cplusplus
 };
 static_assert(sizeof(CausticsBlock) ==
-                  2 * 64 + 11 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 3 * 16,
+                  2 * 64 + 11 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 5 * 16,
               "CausticsBlock must match its std140 layout");
 #else
 }

@@ -395,6 +395,9 @@ TEST_F(PostfxPhysicalTest, RestoresStateAndTimesItsPass) {
   EXPECT_TRUE(stats.pass(postfx::Pass::CausticsIrradiance).present);
   EXPECT_FALSE(stats.pass(postfx::Pass::Floor).present);
   EXPECT_FALSE(stats.pass(postfx::Pass::ObjectCaustics).present);
+  EXPECT_TRUE(stats.pass(postfx::Pass::CausticsTileIrradiance).present);
+  EXPECT_TRUE(stats.pass(postfx::Pass::CausticsTileIrradiance).skipped)
+      << "the window model does not run the tile pre-pass";
   std::printf(
       "timings: caustics %.3f ms, god_rays %.3f ms, caustics_irradiance %.3f ms (%llu "
       "frames resolved)\n",

@@ -191,6 +191,9 @@ postfx::FrameDesc makeFrame(const Scene& scene, GLuint water, int cascades,
   f.water.cascadeCount = cascades;
   const double tiles[] = {40.0, 10.0, 2.5, 1.25};
   for (int c = 0; c < postfx::kMaxCascades; ++c) f.water.tileSize[c] = tiles[c];
+  // These scenes assert the ray-deviation model's contracts (a factor in [0, 1], no light
+  // without waves to deviate it, ...); postfx_tile_irradiance_test covers the default model.
+  f.caustics.model = postfx::CausticsModel::RayDeviation;
   return f;
 }
 

@@ -68,8 +68,8 @@ GLuint makeWaterTexture(int size, int layers, double amplitude, bool nan = false
 // to 16 texels) at every level of detail, so tests can compare pixels whose footprints differ.
 GLuint makeLevelIndependentWaterTexture(int size, double slope);
 
-// A frame for `scene` with the caustics defaults, water at `level` (world), camera at
-// scene.camera + offset (the whole scene moved by `offset`).
+// A frame for `scene` with the caustics defaults but the RayDeviation model, water at `level`
+// (world), camera at scene.camera + offset (the whole scene moved by `offset`).
 postfx::FrameDesc makeFrame(const Scene& scene, GLuint water, int cascades,
                             const glm::dvec3& offset = glm::dvec3(0.0), double level = 0.0);
 

@@ -26,6 +26,9 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   EXPECT_TRUE(s.pass(postfx::Pass::Floor).present);
   EXPECT_FALSE(s.pass(postfx::Pass::GodRays).present);
   EXPECT_STREQ(postfx::toString(postfx::Pass::Floor), "floor");
+  // The TileIrradiance pre-pass exists with Feature::Caustics; this frame's model (ray
+  // deviation) does not run it.
+  EXPECT_TRUE(s.pass(postfx::Pass::CausticsTileIrradiance).present);
 
   // The first dispatch cannot have read anything: its queries are read by later dispatches.
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
@@ -42,6 +45,8 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   EXPECT_GT(s.pass(postfx::Pass::Floor).lastMs, 0.0);
   EXPECT_GT(s.pass(postfx::Pass::Caustics).medianMs, 0.0);
   EXPECT_FALSE(s.pass(postfx::Pass::Caustics).skipped);
+  EXPECT_TRUE(s.pass(postfx::Pass::CausticsTileIrradiance).skipped);
+  EXPECT_EQ(s.pass(postfx::Pass::CausticsTileIrradiance).lastMs, 0.0);
 
   // Caustics disabled: both passes skipped; once those frames resolve they report 0 ms.
   frame.caustics.enabled = false;

@@ -14,12 +14,13 @@ inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is 
 // The timed passes, in the order dispatch() runs them.
 enum class Pass : std::uint8_t {
   CausticsIrradiance,  // CausticsModel::WavefrontAreaRatio's irradiance (Feature::PhysicalCaustics)
+  CausticsTileIrradiance,  // CausticsModel::TileIrradiance's pre-pass (Feature::Caustics)
   Floor,               // benchmark floor (postfx/testing.h: kBenchmarkFloor)
   Caustics,            // seabed caustics (Feature::Caustics)
   GodRays,             // god rays, march and upsample together (Feature::GodRays)
   ObjectCaustics,      // caster caustics (Feature::ObjectCaustics)
 };
-inline constexpr int kPassCount = 5;
+inline constexpr int kPassCount = 6;
 
 // Stable snake_case name, e.g. "god_rays" (the sample's bench and report print it).
 const char* toString(Pass pass) noexcept;

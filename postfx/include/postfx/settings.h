@@ -20,6 +20,13 @@ enum class CausticsModel {
   // Covers a camera-centred square window (windowSize); outside it, and across the window's
   // outer eighth, it fades to RayDeviation.
   WavefrontAreaRatio,
+  // True caustic irradiance everywhere, at about the cost of RayDeviation: every frame each
+  // cascade that can focus light within maxReceiverDepth refracts its own periodic tile onto
+  // tileDepthLayers depths (2 small compute dispatches, tileResolution^2 texels, independent of
+  // the screen). A pixel multiplies one filtered lookup per cascade, each moved by the coarser
+  // cascades' refraction (their light lands displaced). Any receiver shape and distance, no
+  // window, no edge; mip-filtered, so far pixels get their footprint's mean light.
+  TileIrradiance,
   Seed002 [[deprecated("named for a paper: use RayDeviation")]] = RayDeviation,
 };
 
@@ -34,6 +41,8 @@ inline constexpr Range<float> kWindowSizeRange{1.0f, 1e4f};  // m
 inline constexpr Range<int> kDepthLayersRange{1, 8};
 inline constexpr Range<float> kMaxReceiverDepthRange{0.01f, 1e4f};  // m
 inline constexpr Range<float> kMaxIrradianceRange{1.0f, 1e4f};
+inline constexpr Range<int> kTileResolutionRange{32, 1024};  // and a power of two
+inline constexpr Range<float> kTileMinModulationRange{0.0f, 1e3f};
 
 struct CausticsSettings {
   // Off: the pass is skipped (0 ms) and, with RawCausticOutput, the raw texture reads 0.
@@ -73,7 +82,22 @@ struct CausticsSettings {
   // saves nothing); the error it costs is in the report (ocean_sample report).
   float minCascadeContrast = 0.1f;
 
-  CausticsModel model = CausticsModel::RayDeviation;
+  CausticsModel model = CausticsModel::TileIrradiance;
+
+  // --- TileIrradiance only (validated always) ---
+  // Irradiance texels per side of each cascade's tile, a power of two in kTileResolutionRange. The
+  // refracted points per side are twice that (at least the water texture's size). GPU memory:
+  // tileResolution^2 * (8 bytes * 4/3 + 4 bytes) * tileDepthLayers / 4 per cascade with
+  // waves that focus (128, 4 layers: 0.44 MB per cascade).
+  int tileResolution = 128;
+  // Depth layers per cascade, 4 or 8: one or two filtered fetches per cascade and pixel.
+  int tileDepthLayers = 4;
+  // Cascades whose first-order irradiance modulation at maxReceiverDepth
+  // (WaterSurface::rmsLaplacian) is below this get no irradiance of their own,
+  // kTileMinModulationRange: their
+  // long waves barely focus there, they only move the finer cascades' light (which is kept).
+  // Each one left out saves a fetch per pixel and a third of the pre-pass.
+  float tileMinModulation = 0.25f;
 
   // --- WavefrontAreaRatio only (validated always) ---
   // Surface grid vertices per side and irradiance texels per side, kGridResolutionRange. Cost grows
@@ -91,10 +115,13 @@ struct CausticsSettings {
   // between the two layers around it (between 1 at the surface and layer 0 above it; the
   // deepest layer below it).
   int depthLayers = 4;
-  float maxReceiverDepth = 16.0f;  // m, kMaxReceiverDepthRange
-  // Irradiance clamp relative to flat water, kMaxIrradianceRange. Folds focus to infinite
-  // irradiance on a triangle of zero area; the clamp bounds that. The flux it removes is reported
-  // as FrameStats::clampedFluxFraction (a bias figure).
+  // Deepest receiver layer (m), kMaxReceiverDepthRange, also TileIrradiance's (its layers lie
+  // at maxReceiverDepth * ((k + 1) / tileDepthLayers)^1.5). Deeper receivers get its light.
+  float maxReceiverDepth = 16.0f;
+  // Irradiance clamp relative to flat water, kMaxIrradianceRange (TileIrradiance too; it stores
+  // at most 1024). Folds focus to infinite irradiance on a triangle of zero area; the clamp
+  // bounds that. The flux it removes is reported as FrameStats::clampedFluxFraction (a bias
+  // figure; WavefrontAreaRatio only).
   float maxIrradiance = 32.0f;
 };
 

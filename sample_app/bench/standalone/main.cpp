@@ -28,6 +28,7 @@ constexpr int kWarmupFrames = 8;
 struct Options {
   int width = 1920, height = 1080, frames = postfx::kTimerMedianWindow;
   std::string json;
+  std::string only;  // run only the rows whose name starts with this
 };
 
 struct Config {
@@ -48,7 +49,9 @@ bool parse(int argc, char** argv, Options& options, std::string& error) {
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--help" || flag == "-h") {
-      error = "usage: postfx_bench [--width W] [--height H] [--frames N] [--json FILE]";
+      error =
+          "usage: postfx_bench [--width W] [--height H] [--frames N] [--json FILE] [--only "
+          "PREFIX]";
       return false;
     }
     if (i + 1 >= argc) {
@@ -61,6 +64,8 @@ bool parse(int argc, char** argv, Options& options, std::string& error) {
     const bool integer = end != value.c_str() && *end == '\0';
     if (flag == "--json") {
       options.json = value;
+    } else if (flag == "--only") {
+      options.only = value;
     } else if (flag == "--width" && integer && number >= 16 && number <= 8192) {
       options.width = int(number);
     } else if (flag == "--height" && integer && number >= 16 && number <= 8192) {
@@ -82,7 +87,23 @@ std::vector<Config> configurations() {
   postfx::GodRaySettings noGodRays;
   noGodRays.enabled = false;
   const Feature caustics = Feature::Caustics | Feature::Dispersion;
-  configs.push_back({"caustics", caustics, {}, noGodRays, {Pass::Caustics}});
+  // The default model: the tile irradiance, its pre-pass counted.
+  configs.push_back(
+      {"caustics", caustics, {}, noGodRays, {Pass::CausticsTileIrradiance, Pass::Caustics}});
+  postfx::CausticsSettings rayDeviation;
+  rayDeviation.model = postfx::CausticsModel::RayDeviation;
+  configs.push_back({"caustics_ray_deviation", caustics, rayDeviation, noGodRays, {Pass::Caustics}});
+  for (auto [resolution, layers] : {std::pair{64, 4}, std::pair{256, 4}, std::pair{128, 8}}) {
+    postfx::CausticsSettings tile;
+    tile.tileResolution = resolution;
+    tile.tileDepthLayers = layers;
+    configs.push_back({"caustics_tile_" + std::to_string(resolution) + "_" +
+                           std::to_string(layers) + "layers",
+                       caustics,
+                       tile,
+                       noGodRays,
+                       {Pass::CausticsTileIrradiance, Pass::Caustics}});
+  }
   for (int grid : {128, 256}) {
     postfx::CausticsSettings physical;
     physical.model = postfx::CausticsModel::WavefrontAreaRatio;
@@ -106,8 +127,11 @@ std::vector<Config> configurations() {
                        godRays,
                        {Pass::GodRays}});
   }
-  configs.push_back(
-      {"default_frame", caustics | Feature::GodRays, {}, {}, {Pass::Caustics, Pass::GodRays}});
+  configs.push_back({"default_frame",
+                     caustics | Feature::GodRays,
+                     {},
+                     {},
+                     {Pass::CausticsTileIrradiance, Pass::Caustics, Pass::GodRays}});
   return configs;
 }
 
@@ -209,6 +233,7 @@ int main(int argc, char** argv) {
   std::printf("%-22s %10s %10s %8s  passes\n", "row", "ms", "floor ms", "ratio");
   const std::vector<Config> configs = configurations();
   for (size_t k = 0; k < configs.size(); ++k) {
+    if (configs[k].name.rfind(options.only, 0) != 0) continue;
     std::fprintf(stderr, "postfx_bench: %s (%zu/%zu)\n", configs[k].name.c_str(), k + 1,
                  configs.size());
     Row row;

@@ -1,0 +1,177 @@
+#include "tile_irradiance_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "block_check.h"
+#include "frame_constants.h"
+#include "shader_library.h"
+#include "shared_math.h"
+
+namespace postfx::detail {
+
+namespace {
+
+int mipLevels(int size) {
+  int levels = 1;
+  while ((size >> levels) > 0) ++levels;
+  return levels;
+}
+
+}  // namespace
+
+bool tileIrradianceActive(const FrameDesc& frame) {
+  return frame.caustics.model == CausticsModel::TileIrradiance &&
+         frame.water.texture.texture != 0 && frame.sun.direction.y > 0.0;
+}
+
+TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame) {
+  TileIrradianceLayout l;
+  const CausticsSettings& s = frame.caustics;
+  const WaterSurface& water = frame.water;
+  l.resolution = s.tileResolution;
+  l.layers = s.tileDepthLayers;
+  l.groups = l.layers / kTileLayersPerTexel;
+  l.maxDepth = s.maxReceiverDepth;
+  const glm::dvec3 up = -refractedSunDown(glm::normalize(frame.sun.direction), water.ior);
+  const double upY = std::max(up.y, 1e-6);
+  for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
+    // Paraxial modulation at the deepest layer, as the cascade skip of the other models.
+    const double modulation =
+        (1.0 - 1.0 / double(water.ior)) * water.rmsLaplacian[c] / upY * l.maxDepth;
+    const double cut = s.tileMinModulation;
+    const bool unknown = !(water.rmsLaplacian[c] > 0.0);
+    if (unknown || modulation >= cut) {
+      l.slot[c] = l.cascadeCount++;
+      l.cascadeMask |= 1 << c;
+    }
+  }
+  return l;
+}
+
+TileIrradiancePass::~TileIrradiancePass() {
+  release();
+}
+
+Result TileIrradiancePass::init(const std::string& defines, std::string& error) {
+  release();
+  GLuint program = 0;
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}}, defines,
+                           "postfx.caustics_tile.scatter", program, error))
+    return Result::ShaderCompileFailed;
+  scatter_ = glkit::Program(program);
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}, defines,
+                           "postfx.caustics_tile.resolve", program, error)) {
+    release();
+    return Result::ShaderCompileFailed;
+  }
+  resolve_ = glkit::Program(program);
+  return Result::Ok;
+}
+
+void TileIrradiancePass::release() {
+  scatter_ = glkit::Program();
+  resolve_ = glkit::Program();
+  if (texture_ != 0) glDeleteTextures(1, &texture_);
+  if (accumulators_ != 0) glDeleteBuffers(1, &accumulators_);
+  texture_ = accumulators_ = 0;
+  textureResolution_ = textureLayers_ = 0;
+  accumulatorBytes_ = 0;
+}
+
+Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
+  layout_ = tileIrradianceLayout(frame);
+  const TileIrradianceLayout& l = layout_;
+  const int arrayLayers = std::max(l.cascadeCount * l.groups, 1);
+  if (texture_ == 0 || textureResolution_ != l.resolution || textureLayers_ != arrayLayers) {
+    if (texture_ != 0) glDeleteTextures(1, &texture_);
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture_);
+    glTextureStorage3D(texture_, mipLevels(l.resolution), GL_RGBA16F, l.resolution,
+                       l.resolution, arrayLayers);
+    glkit::label(GL_TEXTURE, texture_, "postfx.caustics_tile.irradiance");
+    textureResolution_ = l.resolution;
+    textureLayers_ = arrayLayers;
+  }
+  const GLsizeiptr bytes = GLsizeiptr(l.resolution) * l.resolution *
+                           std::max(l.cascadeCount, 1) * l.layers * GLsizeiptr(sizeof(GLuint));
+  if (accumulators_ == 0 || accumulatorBytes_ != bytes) {
+    if (accumulators_ != 0) glDeleteBuffers(1, &accumulators_);
+    glCreateBuffers(1, &accumulators_);
+    glNamedBufferStorage(accumulators_, bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glkit::label(GL_BUFFER, accumulators_, "postfx.caustics_tile.accumulators");
+    // Zero once; the resolve leaves them zero for the next frame.
+    const GLuint zero = 0;
+    glClearNamedBufferData(accumulators_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    accumulatorBytes_ = bytes;
+  }
+  GLint width = 0;
+  glGetTextureLevelParameteriv(texture_, 0, GL_TEXTURE_WIDTH, &width);
+  GLint64 allocated = 0;
+  glGetNamedBufferParameteri64v(accumulators_, GL_BUFFER_SIZE, &allocated);
+  if (width != l.resolution || allocated != bytes) {
+    error = "caustics: the driver could not allocate the tile irradiance (tileResolution " +
+            std::to_string(l.resolution) + ")";
+    return Result::OutOfMemory;
+  }
+  return Result::Ok;
+}
+
+void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  const TileIrradianceLayout& l = layout_;
+  if (l.cascadeCount == 0) return;
+  const WaterSurface& water = frame.water;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const glm::dvec3 down = refractedSunDown(sun, water.ior);
+  const glm::dvec2 flatDrift = glm::dvec2(down.x, down.z) / std::max(-down.y, 1e-6);
+  const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
+  // At least two points per irradiance texel and side, and every water texel.
+  const int points = std::max(std::max(textures.water.width, textures.water.height),
+                              2 * l.resolution);
+  const double perPoint = double(l.resolution) * l.resolution / (double(points) * points);
+  float depths[shared::TILE_MAX_LAYERS] = {};
+  for (int k = 0; k < l.layers; ++k)
+    depths[k] = shared::tileLayerDepth(k, l.layers, static_cast<float>(l.maxDepth));
+
+  const GLuint scatter = scatter_.id();
+  glProgramUniform4f(scatter, 2, static_cast<float>(sun.x), static_cast<float>(sun.y),
+                     static_cast<float>(sun.z), water.ior);
+  glProgramUniform4f(scatter, 3, static_cast<float>(flatDrift.x),
+                     static_cast<float>(flatDrift.y),
+                     saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
+                     static_cast<float>(perPoint * double(shared::TILE_FIXED_POINT)));
+  glProgramUniform1i(scatter, 4, l.layers);
+  glProgramUniform1fv(scatter, 5, shared::TILE_MAX_LAYERS, depths);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulatorBinding, accumulators_);
+  glUseProgram(scatter);
+  const GLuint pointGroups = static_cast<GLuint>((points + 7) / 8);
+  for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
+    if (l.slot[c] < 0) continue;
+    glProgramUniform1i(scatter, 0, c);
+    glProgramUniform4f(scatter, 1, static_cast<float>(points), static_cast<float>(l.resolution),
+                       static_cast<float>(water.tileSize[c]),
+                       static_cast<float>(l.slot[c] * l.layers));
+    glDispatchCompute(pointGroups, pointGroups, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  const GLuint resolve = resolve_.id();
+  const float clamp = std::min(frame.caustics.maxIrradiance, shared::TILE_MAX_IRRADIANCE);
+  glUseProgram(resolve);
+  glBindImageTexture(kImageUnit, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  const GLuint texelGroups = static_cast<GLuint>((l.resolution + 7) / 8);
+  for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
+    if (l.slot[c] < 0) continue;
+    glProgramUniform4f(resolve, 0, static_cast<float>(l.resolution),
+                       static_cast<float>(l.slot[c] * l.layers),
+                       static_cast<float>(l.slot[c] * l.groups), clamp);
+    glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.groups));
+  }
+  // The mip chain is built from the image writes; the caustics pass then samples it.
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT);
+  glGenerateTextureMipmap(texture_);
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,75 @@
+#pragma once
+// The TileIrradiance model's per-frame pre-pass: for every cascade whose waves can focus light
+// within CausticsSettings::maxReceiverDepth, the caustic irradiance it makes alone, at
+// tileDepthLayers depths, over one period of its tile (see shared/postfx_tile_irradiance.h).
+// Two compute dispatches per cascade (scatter, resolve) into a plugin-owned RGBA16F 2D array
+// (four depth layers per texel, one array layer per group of four), then its mip chain: the
+// caustics pass filters irradiance, which is linear in the light, so a far pixel gets the mean
+// of what its footprint receives instead of a sparkle of aliased lines.
+// Its cost does not depend on the screen size: tileResolution^2 texels and (2 x
+// tileResolution)^2 (at least the water texture's size) refracted points per cascade.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <glkit/program.h>
+#include <postfx/postfx.h>
+
+#include "validation.h"
+
+namespace postfx::detail {
+
+inline constexpr int kTileLayersPerTexel = 4;
+
+struct TileIrradianceLayout {
+  int resolution = 0;  // irradiance texels per tile side
+  int layers = 0;      // depth layers per cascade (a multiple of 4)
+  int groups = 0;      // RGBA array layers per cascade: layers / 4
+  double maxDepth = 0.0;
+  int cascadeCount = 0;  // cascades with irradiance (the others read 1)
+  int cascadeMask = 0;   // bit c: cascade c has irradiance (compiled into the caustics pass)
+  // Per cascade: its index among the cascades with irradiance, -1 when it has none.
+  int slot[kMaxCascades] = {-1, -1, -1, -1};
+};
+
+// Which cascades the frame needs: those whose first-order irradiance modulation at
+// maxReceiverDepth (WaterSurface::rmsLaplacian) reaches tileMinModulation, and every cascade
+// whose statistics the host left unknown (0). Requires validated settings.
+TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame);
+
+// Whether the frame uses the TileIrradiance model (it needs a water texture and a sun above the
+// horizon; otherwise nothing is computed and the caustics add no light).
+bool tileIrradianceActive(const FrameDesc& frame);
+
+class TileIrradiancePass {
+ public:
+  static constexpr GLuint kAccumulatorBinding = 0;  // SSBO binding of both dispatches
+  static constexpr GLuint kImageUnit = 0;           // image unit of the resolve's output
+
+  TileIrradiancePass() = default;
+  TileIrradiancePass(const TileIrradiancePass&) = delete;
+  TileIrradiancePass& operator=(const TileIrradiancePass&) = delete;
+  ~TileIrradiancePass();
+
+  Result init(const std::string& defines, std::string& error);
+  void release();
+
+  // Allocates this frame's irradiance array and accumulators (before any pass adds light);
+  // OutOfMemory with a message when the driver could not.
+  Result reserve(const FrameDesc& frame, std::string& error);
+  // Records the pre-pass. Expects the water texture bound on its unit (CausticsPass::bindState);
+  // binds its programs, SSBO binding 0 and image unit 0 (the caller's state guard restores them).
+  void draw(const FrameDesc& frame, const ValidatedTextures& textures);
+
+  GLuint texture() const { return texture_; }
+  const TileIrradianceLayout& layout() const { return layout_; }
+
+ private:
+  glkit::Program scatter_, resolve_;
+  GLuint texture_ = 0, accumulators_ = 0;
+  int textureResolution_ = 0, textureLayers_ = 0;
+  GLsizeiptr accumulatorBytes_ = 0;
+  TileIrradianceLayout layout_{};
+};
+
+}  // namespace postfx::detail
