@@ -129,7 +129,7 @@ void CausticsPass::release() {
 }
 
 Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
-                                      std::string& error) {
+                                       std::string& error) {
   const int g = groups > 1 ? 2 : 1;
   const int mask = cascadeMask & (kTileMasks - 1);
   const int index = kTileMasks * (g - 1) + mask;

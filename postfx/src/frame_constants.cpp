@@ -119,8 +119,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
   for (int c = surface.cascadeCount; c < POSTFX_MAX_CASCADES; ++c) b.cascadeSkip[c].z = -1.0f;
   if (tileIrradianceActive(frame)) {
     const TileIrradianceLayout l = tileIrradianceLayout(frame);
-    b.tileIrradiance = glm::vec4(static_cast<float>(l.layers),
-                                 static_cast<float>(1.0 / l.maxDepth), 0.0f, 0.0f);
+    b.tileIrradiance =
+        glm::vec4(static_cast<float>(l.layers), static_cast<float>(1.0 / l.maxDepth), 0.0f, 0.0f);
     for (int c = 0; c < surface.cascadeCount && c < POSTFX_MAX_CASCADES; ++c) {
       if (l.slot[c] < 0) continue;
       b.cascadeSkip[c].z = static_cast<float>(l.slot[c] * l.groups);

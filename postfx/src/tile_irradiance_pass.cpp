@@ -88,14 +88,14 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   if (texture_ == 0 || textureResolution_ != l.resolution || textureLayers_ != arrayLayers) {
     if (texture_ != 0) glDeleteTextures(1, &texture_);
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture_);
-    glTextureStorage3D(texture_, mipLevels(l.resolution), GL_RGBA16F, l.resolution,
-                       l.resolution, arrayLayers);
+    glTextureStorage3D(texture_, mipLevels(l.resolution), GL_RGBA16F, l.resolution, l.resolution,
+                       arrayLayers);
     glkit::label(GL_TEXTURE, texture_, "postfx.caustics_tile.irradiance");
     textureResolution_ = l.resolution;
     textureLayers_ = arrayLayers;
   }
-  const GLsizeiptr bytes = GLsizeiptr(l.resolution) * l.resolution *
-                           std::max(l.cascadeCount, 1) * l.layers * GLsizeiptr(sizeof(GLuint));
+  const GLsizeiptr bytes = GLsizeiptr(l.resolution) * l.resolution * std::max(l.cascadeCount, 1) *
+                           l.layers * GLsizeiptr(sizeof(GLuint));
   if (accumulators_ == 0 || accumulatorBytes_ != bytes) {
     if (accumulators_ != 0) glDeleteBuffers(1, &accumulators_);
     glCreateBuffers(1, &accumulators_);
@@ -127,8 +127,8 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   const glm::dvec2 flatDrift = glm::dvec2(down.x, down.z) / std::max(-down.y, 1e-6);
   const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
   // At least two points per irradiance texel and side, and every water texel.
-  const int points = std::max(std::max(textures.water.width, textures.water.height),
-                              2 * l.resolution);
+  const int points =
+      std::max(std::max(textures.water.width, textures.water.height), 2 * l.resolution);
   const double perPoint = double(l.resolution) * l.resolution / (double(points) * points);
   float depths[shared::TILE_MAX_LAYERS] = {};
   for (int k = 0; k < l.layers; ++k)
@@ -137,8 +137,7 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   const GLuint scatter = scatter_.id();
   glProgramUniform4f(scatter, 2, static_cast<float>(sun.x), static_cast<float>(sun.y),
                      static_cast<float>(sun.z), water.ior);
-  glProgramUniform4f(scatter, 3, static_cast<float>(flatDrift.x),
-                     static_cast<float>(flatDrift.y),
+  glProgramUniform4f(scatter, 3, static_cast<float>(flatDrift.x), static_cast<float>(flatDrift.y),
                      saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
                      static_cast<float>(perPoint * double(shared::TILE_FIXED_POINT)));
   glProgramUniform1i(scatter, 4, l.layers);

@@ -14,10 +14,10 @@ struct CausticsModelName {
 };
 
 inline constexpr std::array<CausticsModelName, 4> kCausticsModelNames{{
-    {"tile", false, false, true},           // per-cascade tile irradiance (the default)
-    {"ray-deviation", false, true, true},   // exp(-tau a^2) of the refracted ray's deviation
-    {"seed002", false, true, false},        // ray-deviation's former name
-    {"physical", true, false, true},        // irradiance window from the wavefront area ratio
+    {"tile", false, false, true},          // per-cascade tile irradiance (the default)
+    {"ray-deviation", false, true, true},  // exp(-tau a^2) of the refracted ray's deviation
+    {"seed002", false, true, false},       // ray-deviation's former name
+    {"physical", true, false, true},       // irradiance window from the wavefront area ratio
 }};
 
 }  // namespace ocean

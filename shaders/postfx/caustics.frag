@@ -59,7 +59,10 @@ float tileCascadeIrradiance(int c, vec2 coord, float layerCoord, float logFootpr
   float e = 1.0;
   if (((POSTFX_TILE_CASCADES >> c) & 1) != 0) {  // constant once the loop is unrolled
     vec4 skip = u.cascadeSkip[c];
-    vec3 at = vec3(u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w, skip.z);
+    // The array layer is compile-time too (the slot among the masked cascades): a layer index
+    // that varies per pixel, even one read from the block, costs a CPU rasteriser a gather.
+    float layer = float(bitCount(POSTFX_TILE_CASCADES & ((1 << c) - 1)) * POSTFX_TILE_GROUPS);
+    vec3 at = vec3(u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w, layer);
     float lod = logFootprint + skip.w;
     e = dot(textureLod(tileIrradiance, at, lod), tileLayerWeights(layerCoord, 0)) +
         max(-layerCoord, 0.0);

@@ -42,7 +42,8 @@ TEST_F(PostfxTileIrradianceTest, FlatWaterAddsExactlyTheUnperturbedLight) {
   auto fx = postfxtest::makeContext(kRaw);
   const postfx::FrameDesc frame = tileFrame(scene, water, 2);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
-  const auto raw = postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
+  const auto raw =
+      postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height);
   const glm::vec3 up(-postfx::detail::refractedSunDown(frame.sun.direction, frame.water.ior));
   const float depth = static_cast<float>(-spec.floorY);
   // E = 1: every point carries flat water's flux to flat water's place.
@@ -76,8 +77,7 @@ TEST_F(PostfxTileIrradianceTest, NoneAboveWaterOnSkyOrFacingAwayAndBounded) {
       const postfxtest::PixelTruth& t = scene.truth(x, y);
       const float v = raw[static_cast<size_t>(y * w + x)];
       ASSERT_TRUE(v >= 0.0f && v <= frame.caustics.maxIrradiance) << x << "," << y << ": " << v;
-      if (t.hit == Hit::Sky || t.position.y > levelRel + 1e-3 ||
-          glm::dot(t.normal, up) < -1e-3) {
+      if (t.hit == Hit::Sky || t.position.y > levelRel + 1e-3 || glm::dot(t.normal, up) < -1e-3) {
         EXPECT_EQ(v, 0.0f) << x << "," << y;
       } else if (t.position.y < levelRel - 1.5 && glm::dot(t.normal, up) > 0.5) {
         ++lit;
@@ -153,8 +153,8 @@ namespace {
 // Every raw value finite and within [0, maxIrradiance] on the mixed scene.
 void expectFiniteAndBounded(postfx::Context& fx, const postfx::FrameDesc& frame, int w, int h,
                             const char* what) {
-  ASSERT_EQ(postfx::dispatch(fx, frame), postfx::Result::Ok) << what << ": "
-                                                             << postfx::lastError(&fx);
+  ASSERT_EQ(postfx::dispatch(fx, frame), postfx::Result::Ok)
+      << what << ": " << postfx::lastError(&fx);
   const auto raw = postfxtest::readRed(postfx::testing::rawCausticTexture(fx), w, h);
   for (size_t i = 0; i < raw.size(); ++i)
     ASSERT_TRUE(raw[i] >= 0.0f && raw[i] <= frame.caustics.maxIrradiance)

@@ -15,10 +15,10 @@ inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is 
 enum class Pass : std::uint8_t {
   CausticsIrradiance,  // CausticsModel::WavefrontAreaRatio's irradiance (Feature::PhysicalCaustics)
   CausticsTileIrradiance,  // CausticsModel::TileIrradiance's pre-pass (Feature::Caustics)
-  Floor,               // benchmark floor (postfx/testing.h: kBenchmarkFloor)
-  Caustics,            // seabed caustics (Feature::Caustics)
-  GodRays,             // god rays, march and upsample together (Feature::GodRays)
-  ObjectCaustics,      // caster caustics (Feature::ObjectCaustics)
+  Floor,                   // benchmark floor (postfx/testing.h: kBenchmarkFloor)
+  Caustics,                // seabed caustics (Feature::Caustics)
+  GodRays,                 // god rays, march and upsample together (Feature::GodRays)
+  ObjectCaustics,          // caster caustics (Feature::ObjectCaustics)
 };
 inline constexpr int kPassCount = 6;
 

@@ -92,17 +92,18 @@ std::vector<Config> configurations() {
       {"caustics", caustics, {}, noGodRays, {Pass::CausticsTileIrradiance, Pass::Caustics}});
   postfx::CausticsSettings rayDeviation;
   rayDeviation.model = postfx::CausticsModel::RayDeviation;
-  configs.push_back({"caustics_ray_deviation", caustics, rayDeviation, noGodRays, {Pass::Caustics}});
+  configs.push_back(
+      {"caustics_ray_deviation", caustics, rayDeviation, noGodRays, {Pass::Caustics}});
   for (auto [resolution, layers] : {std::pair{64, 4}, std::pair{256, 4}, std::pair{128, 8}}) {
     postfx::CausticsSettings tile;
     tile.tileResolution = resolution;
     tile.tileDepthLayers = layers;
-    configs.push_back({"caustics_tile_" + std::to_string(resolution) + "_" +
-                           std::to_string(layers) + "layers",
-                       caustics,
-                       tile,
-                       noGodRays,
-                       {Pass::CausticsTileIrradiance, Pass::Caustics}});
+    configs.push_back(
+        {"caustics_tile_" + std::to_string(resolution) + "_" + std::to_string(layers) + "layers",
+         caustics,
+         tile,
+         noGodRays,
+         {Pass::CausticsTileIrradiance, Pass::Caustics}});
   }
   for (int grid : {128, 256}) {
     postfx::CausticsSettings physical;
