@@ -35,9 +35,6 @@ bool finite(const glm::dmat4& m) {
 bool inRange(double value, double lo, double hi) {
   return value >= lo && value <= hi;
 }
-bool inRange(const glm::vec3& v, double lo, double hi) {
-  return inRange(v.x, lo, hi) && inRange(v.y, lo, hi) && inRange(v.z, lo, hi);
-}
 
 }  // namespace
 

@@ -42,9 +42,10 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   setup->createDesc_ = desc;
   setup->caustics_.enabled = options.caustics;
   setup->godRays_.enabled = options.godRays;
-  // The sample lights its water column with its own ambient in-scattering too; half the
-  // plugin's default keeps the shafts from washing out Snell's window.
-  setup->godRays_.intensity = 0.7f;
+  // The sample lights its water column with its own ambient in-scattering too; a fifth of the
+  // plugin's default keeps the shafts from washing out the seabed now that they are attenuated
+  // once (fog before dispatch), not twice.
+  setup->godRays_.intensity = 0.3f;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
   if (options.godRayResolution > 0)
     setup->godRays_.resolution = static_cast<postfx::GodRayResolution>(options.godRayResolution);
