@@ -1,7 +1,8 @@
 #pragma once
-// The report's caustics rows: the seed-002 coefficient at several tau, with and without the
-// reflection term, with and without cascade skipping, and the physical (wavefront area ratio)
-// model at each grid resolution, each timed and compared with converged CPU light tracing
+// The report's caustics rows: the tile irradiance (the default model) at several tile sizes and
+// layer counts, the ray-deviation coefficient at several tau, with and without the reflection
+// term, with and without cascade skipping, and the physical (wavefront area ratio) window at
+// each grid resolution, each timed and compared with converged CPU light tracing
 // (ocean::reference::traceSeabedCaustics) through the same water texture the GPU used.
 //
 // The comparison scene is a flat seabed seen straight from above, so each bin of the

@@ -49,6 +49,8 @@ bool measureSlope(const postfx::FrameDesc& hostFrame, const SlopeSettings& setti
   const double level = frame.water.level;
   frame.sun.direction = sunAlongX(hostFrame.sun.direction);
   frame.caustics = settings.caustics;
+  // The along-light and tri-planar rows are the ray-deviation model's two lookups.
+  frame.caustics.model = postfx::CausticsModel::RayDeviation;
   frame.caustics.surfaceFadeDepth = 0.0f;  // the reference has no fade
   frame.godRays.enabled = false;
   frame.objectCaustics = {};
@@ -184,8 +186,8 @@ bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame, const SlopeSettin
       const bool triplanar = lookup == &c.triplanar;
       Row row;
       row.pass = "caustics";
-      row.method = triplanar ? "seed 002 on a slope, tri-planar walls"
-                             : "seed 002 on a slope, along the light (default)";
+      row.method = triplanar ? "ray deviation on a slope, tri-planar walls"
+                             : "ray deviation on a slope, along the light";
       row.setting = setting;
       row.medianMs = lookup->run.medianMs;
       row.floorMs = lookup->run.floorMs;

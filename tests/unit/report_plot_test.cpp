@@ -36,8 +36,8 @@ std::vector<Row> reportLikeRows() {
       row("god_rays", "god rays, half res", "16 samples", 0.4, 0.15, 0.05),
       row("caustics", "ray deviation", "tau 800", 0.8, ocean::report::kNotApplicable, 0.6),
       row("caustics", "physical (wavefront area ratio)", "grid 256", 2.0, 0.9, 0.3),
-      row("caustics", "seed 002 on a slope, along the light (default)", "slope 30, facing the sun",
-          0.8, ocean::report::kNotApplicable, 0.7),
+      row("caustics", "ray deviation on a slope, along the light", "slope 30, facing the sun", 0.8,
+          ocean::report::kNotApplicable, 0.7),
       row("object_caustics", "caustic map", "512 / 256 / 1", 3.0, 0.05, 0.01),
       row("new_pass", "something new", "1", 1.0, 0.2, 0.2),
       row("god_rays", "untimed", "1", 0.0, 0.2, 0.2),  // no time: not plotted
