@@ -114,16 +114,14 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     b.cascadeSkip[c] = glm::vec4(
         laplacian > 0.0 ? static_cast<float>((1.0 - 1.0 / double(surface.ior)) * laplacian / upY)
                         : -1.0f,
-        wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, -1.0f, 0.0f);
+        wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, 0.0f, 0.0f);
   }
-  for (int c = surface.cascadeCount; c < POSTFX_MAX_CASCADES; ++c) b.cascadeSkip[c].z = -1.0f;
   if (tileIrradianceActive(frame)) {
     const TileIrradianceLayout l = tileIrradianceLayout(frame);
     b.tileIrradiance =
         glm::vec4(static_cast<float>(l.layers), static_cast<float>(1.0 / l.maxDepth), 0.0f, 0.0f);
     for (int c = 0; c < surface.cascadeCount && c < POSTFX_MAX_CASCADES; ++c) {
       if (l.slot[c] < 0) continue;
-      b.cascadeSkip[c].z = static_cast<float>(l.slot[c] * l.groups);
       b.cascadeSkip[c].w = static_cast<float>(std::log2(l.resolution / surface.tileSize[c]));
     }
     b.tileDrift = glm::vec4(landingDriftJacobian(sun, surface.ior));

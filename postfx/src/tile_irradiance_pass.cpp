@@ -3,22 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glkit/texture.h>
+
 #include "block_check.h"
 #include "frame_constants.h"
 #include "shader_library.h"
 #include "shared_math.h"
 
 namespace postfx::detail {
-
-namespace {
-
-int mipLevels(int size) {
-  int levels = 1;
-  while ((size >> levels) > 0) ++levels;
-  return levels;
-}
-
-}  // namespace
 
 bool tileIrradianceActive(const FrameDesc& frame) {
   return frame.caustics.model == CausticsModel::TileIrradiance &&
@@ -88,8 +80,8 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   if (texture_ == 0 || textureResolution_ != l.resolution || textureLayers_ != arrayLayers) {
     if (texture_ != 0) glDeleteTextures(1, &texture_);
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture_);
-    glTextureStorage3D(texture_, mipLevels(l.resolution), GL_RGBA16F, l.resolution, l.resolution,
-                       arrayLayers);
+    glTextureStorage3D(texture_, glkit::mipLevelCount(l.resolution), GL_RGBA16F, l.resolution,
+                       l.resolution, arrayLayers);
     glkit::label(GL_TEXTURE, texture_, "postfx.caustics_tile.irradiance");
     textureResolution_ = l.resolution;
     textureLayers_ = arrayLayers;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <seabed_reference.h>
 #include <water_readback.h>
@@ -126,18 +127,25 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
                 reference.converged ? "" : " (ray cap reached)", truthStreaks);
   note = text;
 
+  // A model's per-frame pass before the caustics: part of its cost. The models that have one
+  // compute irradiance, so their error has an absolute scale.
+  struct PrePass {
+    postfx::Pass pass;
+    const char* label;
+  };
   struct Variant {
     std::string method, setting;
     postfx::CausticsSettings caustics;
     bool physical;
-    bool tile = false;  // TileIrradiance: its pre-pass is part of the cost
+    std::optional<PrePass> prePass;
   };
   std::vector<Variant> variants;
   for (auto [resolution, layers] :
        {std::pair{128, 4}, std::pair{64, 4}, std::pair{256, 4}, std::pair{128, 8}}) {
     Variant v{resolution == 128 && layers == 4 ? "tile irradiance (default)" : "tile irradiance",
               "tiles " + std::to_string(resolution) + ", " + std::to_string(layers) + " layers",
-              postfx::CausticsSettings{}, false, true};
+              postfx::CausticsSettings{}, false,
+              PrePass{postfx::Pass::CausticsTileIrradiance, "tile pre-pass"}};
     v.caustics.model = postfx::CausticsModel::TileIrradiance;
     v.caustics.tileResolution = resolution;
     v.caustics.tileDepthLayers = layers;
@@ -149,7 +157,7 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     for (float tau : {100.0f, 400.0f, 800.0f, 3200.0f}) {
       Variant v{
           reflection > 0.0f ? "ray deviation, reflection 0.25" : "ray deviation, refraction only",
-          "tau " + std::to_string(int(tau)), rayDeviation, false};
+          "tau " + std::to_string(int(tau)), rayDeviation, false, std::nullopt};
       v.caustics.tau = tau;
       v.caustics.reflectionWeight = reflection;
       variants.push_back(v);
@@ -157,13 +165,15 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
   }
   for (float cut : {0.0f, 0.3f}) {
     Variant v{"ray deviation, cascade cut-off",
-              "cut " + std::to_string(cut).substr(0, 3) + " tau 800", rayDeviation, false};
+              "cut " + std::to_string(cut).substr(0, 3) + " tau 800", rayDeviation, false,
+              std::nullopt};
     v.caustics.minCascadeContrast = cut;
     variants.push_back(v);
   }
   for (int grid : settings.physicalGrids) {
     Variant v{"physical (wavefront area ratio)", "grid " + std::to_string(grid),
-              postfx::CausticsSettings{}, true};
+              postfx::CausticsSettings{}, true,
+              PrePass{postfx::Pass::CausticsIrradiance, "irradiance pass"}};
     v.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
     v.caustics.gridResolution = grid;
     variants.push_back(v);
@@ -194,19 +204,11 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     row.setting = v.setting;
     row.medianMs = run.medianMs;
     row.floorMs = run.floorMs;
-    if (v.physical) {
-      // The irradiance pass is part of the method's cost: add its median from the same run.
-      const double irradianceMs = run.stats.pass(postfx::Pass::CausticsIrradiance).medianMs;
-      row.medianMs += irradianceMs;
+    if (v.prePass) {
+      const double prePassMs = run.stats.pass(v.prePass->pass).medianMs;
+      row.medianMs += prePassMs;
       char cost[96];
-      std::snprintf(cost, sizeof(cost), "incl. irradiance pass %.2f ms; ", irradianceMs);
-      row.note = cost;
-    }
-    if (v.tile) {
-      const double tileMs = run.stats.pass(postfx::Pass::CausticsTileIrradiance).medianMs;
-      row.medianMs += tileMs;
-      char cost[96];
-      std::snprintf(cost, sizeof(cost), "incl. tile pre-pass %.2f ms; ", tileMs);
+      std::snprintf(cost, sizeof(cost), "incl. %s %.2f ms; ", v.prePass->label, prePassMs);
       row.note = cost;
     }
     char streaks[96];
@@ -215,7 +217,7 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     row.note += streaks;
     const ErrorStats stats = compareWithReference(binned, truth);
     // Ray deviation's omega has no absolute scale; the irradiance models' does.
-    if (v.physical || v.tile) row.relativeRmse = stats.relativeRmse;
+    if (v.prePass) row.relativeRmse = stats.relativeRmse;
     // Every model's pattern error too: the plot's seabed panel compares them all on it.
     row.affineRmse = stats.affineRmse;
     row.correlation = stats.correlation;

@@ -58,12 +58,11 @@ layout(binding = 5) uniform sampler2DArray tileIrradiance;
 float tileCascadeIrradiance(int c, vec2 coord, float layerCoord, float logFootprint) {
   float e = 1.0;
   if (((POSTFX_TILE_CASCADES >> c) & 1) != 0) {  // constant once the loop is unrolled
-    vec4 skip = u.cascadeSkip[c];
-    // The array layer is compile-time too: the cascade's slot among the masked ones (the same
-    // value as cascadeSkip[c].z), so every index of the fetch folds to a constant.
+    // The array layer is compile-time too: the cascade's slot among the masked ones, times the
+    // layer groups (TileIrradiancePass's layout), so every index of the fetch folds to a constant.
     float layer = float(bitCount(POSTFX_TILE_CASCADES & ((1 << c) - 1)) * POSTFX_TILE_GROUPS);
     vec3 at = vec3(u.cascadeOblique[c].xy + coord * u.cascadeAxes[c].w, layer);
-    float lod = logFootprint + skip.w;
+    float lod = logFootprint + u.cascadeSkip[c].w;
     e = dot(textureLod(tileIrradiance, at, lod), tileLayerWeights(layerCoord, 0)) +
         max(-layerCoord, 0.0);
 #if POSTFX_TILE_GROUPS > 1

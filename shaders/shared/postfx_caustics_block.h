@@ -36,8 +36,8 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
                                              // z: log2(texels per metre); w: unused
   vec4 cascadeSkip[POSTFX_MAX_CASCADES];     // x: irradiance modulation per metre below the level
                                              // (< 0: unknown, always sampled); y: log2 of half the
-                                             // longest wavelength (m; huge: unknown); zw: see
-                                             // tileIrradiance
+                                             // longest wavelength (m; huge: unknown); z: unused;
+                                             // w: see tileIrradiance
   vec4 shadowParams;         // x: bias toward the light (m), y: 1 for a [-1,1] shadow convention,
                              // z: unused, w: floor-pass scale (always 0)
   vec4 shadowLight;          // w 0: xyz unit vector toward the light (orthographic map); w 1:
@@ -49,9 +49,9 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
                              // off (seed 002 only)
   vec4 irradianceDepths[2];  // depth below the level of layers 0-3 and 4-7 (m)
   vec4 tileIrradiance;       // TileIrradiance: x: depth layers (0 = model off), y: 1 / deepest
-                             // layer's depth (1/m); zw: unused. Per cascade, cascadeSkip z: its
-                             // first array layer (< 0: none, irradiance 1), w: log2(irradiance
-                             // texels per metre)
+                             // layer's depth (1/m); zw: unused. Per cascade, cascadeSkip w:
+                             // log2(irradiance texels per metre). Which cascades have
+                             // irradiance, and their array layers, are compiled in.
   vec4 tileDrift;            // d(landing offset per metre of depth) / d(slopes) at flat water,
                              // column-major 2x2 (tileLinearOffset)
 #ifdef __cplusplus

@@ -132,4 +132,18 @@ inline void useOcean(postfx::FrameDesc& frame, const postfx::water::Ocean& ocean
   frame.water.level = 0.0;
 }
 
+// The frame both flat-seabed comparisons with traced light use (report/caustic_rows.h): the
+// ocean's water at level 0, the sun `elevationDegrees` up at 30 degrees azimuth, the camera 1 m
+// under the level above (8, 8).
+inline postfx::FrameDesc flatSeabedFrame(const postfx::water::Ocean& ocean,
+                                         double elevationDegrees) {
+  postfx::FrameDesc frame;
+  useOcean(frame, ocean);
+  const double e = glm::radians(elevationDegrees), azimuth = glm::radians(30.0);
+  frame.sun.direction = {std::cos(e) * std::cos(azimuth), std::sin(e),
+                         std::cos(e) * std::sin(azimuth)};
+  frame.camera.position = {8.0, -1.0, 8.0};
+  return frame;
+}
+
 }  // namespace postfxtest

@@ -31,12 +31,7 @@ TEST_F(PostfxStreakTest, HighSunPatternIsNoMoreStreakedThanTracedLight) {
   settings.binPixels = 4;  // 32 x 24 bins of ~0.18 m
   settings.referenceError = 0.03;
   for (double elevation : {85.0, 70.0}) {
-    postfx::FrameDesc frame;
-    postfxtest::useOcean(frame, *ocean);
-    const double e = glm::radians(elevation), azimuth = glm::radians(30.0);
-    frame.sun.direction = {std::cos(e) * std::cos(azimuth), std::sin(e),
-                           std::cos(e) * std::sin(azimuth)};
-    frame.camera.position = {8.0, -1.0, 8.0};
+    const postfx::FrameDesc frame = postfxtest::flatSeabedFrame(*ocean, elevation);
     ocean::report::FlatSeabedComparison seabed;
     std::string error;
     ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;

@@ -113,12 +113,7 @@ TEST_F(PostfxTileIrradianceTest, AgreesWithTracedLightOnAFlatSeabed) {
     settings.binPixels = 4;
     settings.referenceError = 0.05;
     settings.receiverDepth = depth;
-    postfx::FrameDesc frame;
-    postfxtest::useOcean(frame, *ocean);
-    const double e = glm::radians(60.0), azimuth = glm::radians(30.0);
-    frame.sun.direction = {std::cos(e) * std::cos(azimuth), std::sin(e),
-                           std::cos(e) * std::sin(azimuth)};
-    frame.camera.position = {8.0, -1.0, 8.0};
+    const postfx::FrameDesc frame = postfxtest::flatSeabedFrame(*ocean, 60.0);
     ocean::report::FlatSeabedComparison seabed;
     std::string error;
     ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;

@@ -1,6 +1,5 @@
 #include <postfx/water/ocean.h>
 
-#include <bit>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -8,6 +7,7 @@
 
 #include <glkit/current_context.h>
 #include <glkit/program.h>
+#include <glkit/texture.h>
 #include <postfx/water/initial_spectrum.h>
 #include <postfx/water/spectrum.h>
 
@@ -20,10 +20,6 @@ namespace {
 using namespace detail;
 
 static_assert(WATER_MAX_CASCADES == kMaxCascades, "C++ and GLSL disagree on the cascade limit");
-
-int mipLevels(int resolution) {
-  return std::bit_width(static_cast<unsigned>(resolution));
-}
 
 // Checks the GL limits the chosen resolution needs; the shaders use one workgroup of N/2
 // invocations per line with two RGBA32F lines in shared memory.
@@ -118,7 +114,7 @@ Result Ocean::initialise(std::string& error) {
                        0);
   glkit::label(GL_BUFFER, spectrumBuffer_, "water.spectrum");
 
-  const int levels = mipLevels(n);
+  const int levels = glkit::mipLevelCount(n);
   scratch_ = createArrayTexture(GL_RGBA32F, n, cascades * WATER_SCRATCH_LAYERS_PER_CASCADE, 1,
                                 "water.fft_scratch");
   slope_ = createArrayTexture(GL_RGBA16F, n, cascades, levels, "water.slope");

@@ -3,9 +3,15 @@
 // sampler objects passes read textures with.
 #include <epoxy/gl.h>
 
+#include <bit>
 #include <string_view>
 
 namespace glkit {
+
+// Levels of a full mip chain for a texture `size` texels on its longest side (1 for size 1).
+inline int mipLevelCount(int size) {
+  return std::bit_width(static_cast<unsigned>(size));
+}
 
 // One mip level, clamp-to-edge, `filter` for both min and mag (render targets are read
 // texel-exact: GL_NEAREST unless the reader interpolates on purpose), labelled for debuggers.
