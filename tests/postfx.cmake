@@ -6,7 +6,7 @@ set(_postfx_private ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
 postfx_add_test(postfx_unit_tests
   SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp unit/postfx_godrays_math_test.cpp
           unit/postfx_no_context_test.cpp unit/postfx_irradiance_layout_test.cpp
-          unit/postfx_object_caustics_frame_test.cpp
+          unit/postfx_object_caustics_frame_test.cpp unit/postfx_splat_test.cpp
   LIBS postfx gbuffer glm::glm postfx::epoxy)
 target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
 
@@ -27,7 +27,7 @@ postfx_add_test(postfx_object_caustics_tests
   SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
           gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
           gl/postfx_object_caustics_host_test.cpp gl/postfx_hostile_state_test.cpp
-          gl/postfx_object_caustics_material_test.cpp
+          gl/postfx_object_caustics_material_test.cpp gl/postfx_object_caustics_defaults_test.cpp
   LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -10,5 +10,6 @@ namespace postfx {
 #include "shared/postfx_godrays.h"
 #include "shared/postfx_godrays_block.h"
 #include "shared/postfx_irradiance.h"
+#include "shared/postfx_object_caustics.h"
 #include "shared/postfx_tile_irradiance.h"
 }  // namespace postfx

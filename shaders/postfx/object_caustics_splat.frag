@@ -6,14 +6,14 @@
 
 flat in vec2 splatCentre;
 flat in vec3 splatFlux;
-flat in float splatSigma;  // map texels: splatRadius, widened for rough casters
+flat in vec3 splatShape;  // covariance (texels^2; xx, xy, yy): see splatCovariance
 
 layout(location = 0) out vec4 outFlux;
 
 void main() {
   vec2 offset = gl_FragCoord.xy - splatCentre;
-  float sigma = splatSigma;
-  // The sprite is a texel wider than +-3 sigma: cut it there so the weights sum to 1.
-  if (any(greaterThan(abs(offset), vec2(3.0 * sigma)))) discard;
-  outFlux = vec4(splatFlux * splatWeight(offset, sigma), 0.0);
+  // The sprite is a texel wider than +-3 sigma along the wider axis: cut each axis at its own
+  // 3 sigma so that the weights sum to 1 (splatWeight).
+  if (any(greaterThan(abs(offset), 3.0 * sqrt(splatShape.xz)))) discard;
+  outFlux = vec4(splatFlux * splatWeight(offset, splatShape), 0.0);
 }

@@ -16,7 +16,7 @@ layout(binding = 4) uniform sampler2D receiverDepth;
 
 flat out vec2 splatCentre;  // map texels
 flat out vec3 splatFlux;
-flat out float splatSigma;  // map texels
+flat out vec3 splatShape;  // covariance, texels^2 (splatCovariance)
 
 const float kNoBracket = 1e30;
 
@@ -25,7 +25,7 @@ void dropRay() {
   gl_PointSize = 1.0;
   splatCentre = vec2(0.0);
   splatFlux = vec3(0.0);
-  splatSigma = 1.0;
+  splatShape = vec3(1.0, 0.0, 1.0);
 }
 
 // Light-space (u, v) of p, in [0, 1] over the grid region.
@@ -78,22 +78,33 @@ bool receiverSurface(vec3 p, out vec3 position) {
 // The image-space root search of seed 000 (eq. 1-4) along origin + d * ray against a surface
 // seen from the light (the back faces, or the receivers). g(d) = (probe - S(probe)) . L is the
 // probe's signed distance behind the surface along the light (< 0: not there yet). The seed's
-// step d <- |S(probe) - origin| is taken while it stays inside the bracket [lo, hi] that the signs
-// of g give and keeps contracting; when it leaves the bracket or stops contracting (the
-// oscillation seed 000 III.D describes), a bracketed step replaces it: false position, or
-// bisection when that degenerates.
-float nextDistance(float d, float g, float seedNext, inout vec4 bracket, inout float lastStep) {
+// step d <- |S(probe) - origin| converges only linearly for a ray far from the light's direction:
+// one step left the rim rays of a glass sphere up to half a radius short of the floor, so the
+// step is the secant through the last two probes (the origin is the first, g known), exact in
+// one step on a flat receiver, with the seed's step where the secant degenerates. It is taken
+// while it stays inside the bracket [lo, hi] that the signs of g give and keeps contracting;
+// otherwise (the oscillation seed 000 III.D describes) a bracketed step replaces it: false
+// position, or bisection when that degenerates.
+float nextDistance(float d, float g, float seedNext, bool secantStep, inout vec4 bracket,
+                   inout float lastStep, inout vec2 previous) {
   // bracket = (lo, g(lo), hi, g(hi)); hi = kNoBracket while no probe has passed the surface.
   if (g < 0.0) {
     if (d >= bracket.x) bracket.xy = vec2(d, g);
   } else if (d <= bracket.z) {
     bracket.zw = vec2(d, g);
   }
-  float step = abs(seedNext - d);
+  float slope = (g - previous.y) / (d - previous.x);
+  float secant = d - g / slope;
+  // A flat slope (probe and previous equally far from the surface) or a step backwards past the
+  // origin means the secant knows nothing here: the seed's step does.
+  bool useSecant = secantStep && abs(slope) > 1e-6 && secant > 0.0 && secant < 1e30;
+  float candidate = useSecant ? secant : seedNext;
+  previous = vec2(d, g);
+  float step = abs(candidate - d);
   // A converged estimate sits on the bracket's end: only a real step may trigger the fallback.
   float tolerance = 1e-5 * (d + 1.0);
-  bool outside = seedNext < bracket.x - tolerance || seedNext > bracket.z + tolerance;
-  float next = seedNext;
+  bool outside = candidate < bracket.x - tolerance || candidate > bracket.z + tolerance;
+  float next = candidate;
   if (bracket.z < kNoBracket && step > tolerance && (outside || step >= lastStep)) {
     float span = bracket.w - bracket.y;  // > 0: g(lo) < 0 <= g(hi)
     float falsePosition = bracket.x - bracket.y * (bracket.z - bracket.x) / max(span, 1e-30);
@@ -110,12 +121,15 @@ bool hitBack(vec3 origin, vec3 ray, int iterations, out vec3 exitPoint, out vec3
   vec3 surface, normal;
   if (!backSurface(origin, surface, normal)) return false;
   float d = length(surface - origin), lastStep = kNoBracket;
-  vec4 bracket = vec4(0.0, dot(origin - surface, u.lightDir.xyz), kNoBracket, kNoBracket);
+  float gOrigin = dot(origin - surface, u.lightDir.xyz);
+  vec4 bracket = vec4(0.0, gOrigin, kNoBracket, kNoBracket);
+  vec2 previous = vec2(0.0, gOrigin);
   for (int k = 0; k < iterations; ++k) {
     vec3 probe = origin + d * ray;
     vec3 s, n;
     if (!backSurface(probe, s, n)) break;  // left the footprint: keep the estimate
-    d = nextDistance(d, dot(probe - s, u.lightDir.xyz), length(s - origin), bracket, lastStep);
+    d = nextDistance(d, dot(probe - s, u.lightDir.xyz), length(s - origin), false, bracket,
+                     lastStep, previous);
   }
   if (backSurface(origin + d * ray, surface, normal)) {
     exitPoint = surface;
@@ -133,11 +147,12 @@ bool hitReceiver(vec3 origin, vec3 ray, int iterations, out vec3 hit) {
   float gOrigin = dot(origin - surface, u.lightDir.xyz);
   float d = length(surface - origin), lastStep = kNoBracket;
   vec4 bracket = vec4(0.0, gOrigin, kNoBracket, kNoBracket);
+  vec2 previous = vec2(0.0, gOrigin);
   for (int k = 0; k < iterations; ++k) {
     vec3 probe = origin + d * ray;
     if (!receiverSurface(probe, surface)) return false;  // left the receivers
-    d = nextDistance(d, dot(probe - surface, u.lightDir.xyz), length(surface - origin), bracket,
-                     lastStep);
+    d = nextDistance(d, dot(probe - surface, u.lightDir.xyz), length(surface - origin), true,
+                     bracket, lastStep, previous);
   }
   vec3 probe = origin + d * ray;
   if (!receiverSurface(probe, hit)) return false;
@@ -159,14 +174,19 @@ bool rayChannel(float spread, out vec3 mask, out float etaOffset) {
   return true;
 }
 
-void main() {
-  int size = int(u.grid.x);
-  ivec2 cell = ivec2(gl_VertexID % size, gl_VertexID / size);
-  vec4 front = texelFetch(frontPosition, cell, 0);
-  if (!(front.w > 0.5)) {
-    dropRay();
-    return;
+// One ray through a grid cell: where it lands (map texels), the flux it carries there and the
+// splat width its roughness asks for (map texels). False: the cell misses the casters, the ray
+// is lost (total internal reflection) or it meets no receiver.
+bool traceCell(ivec2 cell, out vec2 centre, out vec3 rayFlux, out float sigma) {
+  centre = vec2(0.0);
+  rayFlux = vec3(0.0);
+  sigma = u.grid.z;
+  // texelFetch outside the grid is undefined: a neighbour of an edge cell must not read it.
+  if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(int(u.grid.x))))) {
+    return false;
   }
+  vec4 front = texelFetch(frontPosition, cell, 0);
+  if (!(front.w > 0.5)) return false;
   int caster = clamp(int(front.w + 0.5) - 1, 0, POSTFX_MAX_CASTERS - 1);
   vec4 material = u.materials[POSTFX_CASTER_VEC4S * caster];
   vec4 optics = u.materials[POSTFX_CASTER_VEC4S * caster + 1];
@@ -176,10 +196,7 @@ void main() {
   bool reflective = material.x > 0.5;
   vec3 channelMask;
   float etaOffset;
-  if (!rayChannel(reflective ? 0.0 : material.z, channelMask, etaOffset)) {
-    dropRay();
-    return;
-  }
+  if (!rayChannel(reflective ? 0.0 : material.z, channelMask, etaOffset)) return false;
   vec3 l = u.lightDir.xyz;
   vec3 n0 = texelFetch(frontNormal, cell, 0).xyz;  // faces the light
   float cosI = clamp(-dot(l, n0), 0.0, 1.0);
@@ -210,10 +227,8 @@ void main() {
     // exitNormal faces away from the light: the outward normal on the exit side.
     float cosExit = abs(dot(inside, exitNormal));
     ray = refract(inside, -exitNormal * sign(dot(inside, exitNormal) + 1e-20), eta);
-    if (!(dot(ray, ray) > 0.5)) {  // total internal reflection: this ray's light stays inside
-      dropRay();
-      return;
-    }
+    // Total internal reflection: this ray's light stays inside.
+    if (!(dot(ray, ray) > 0.5)) return false;
     transmitted *= 1.0 - fresnelDielectric(cosExit, 1.0 / eta);
     float path = length(exitPoint - front.xyz);
     // Transmission weight and tint once per ray; Beer-Lambert along the traversed chord.
@@ -221,23 +236,58 @@ void main() {
     origin = exitPoint;
   }
   vec3 hit;
-  if (!hitReceiver(origin, ray, iterations, hit)) {
-    dropRay();
-    return;
-  }
+  if (!hitReceiver(origin, ray, iterations, hit)) return false;
   vec2 uv = vec2(dot(hit, u.lightRight.xyz), dot(hit, u.lightUp.xyz)) / (2.0 * u.lightUp.w) + 0.5;
-  splatFlux = flux * channelMask * u.grid.w;
-  splatCentre = uv * u.grid.y;
+  rayFlux = flux * channelMask * u.grid.w;
+  centre = uv * u.grid.y;
   // Roughness: the ray's light spreads over a cone of angular deviation alpha, as wide on the
   // receiver as alpha times the distance travelled (casters.h, CasterMaterial::roughness).
   float spreadTexels = alpha * length(hit - origin) * u.splatScale.x;
-  splatSigma = min(sqrt(u.grid.z * u.grid.z + spreadTexels * spreadTexels), u.splatScale.y);
-  // NaN fails every comparison, Inf fails the bound: neither reaches the map.
-  if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))) &&
-        splatSigma >= u.grid.z)) {
+  sigma = sqrt(u.grid.z * u.grid.z + spreadTexels * spreadTexels);
+  return true;
+}
+
+// The vector (map texels) from centre to where the ray of a neighbouring cell along axis lands:
+// the nearer of the cells before and after, so that a neighbour across a discontinuity (the
+// silhouette, the edge of total internal reflection) does not widen the splat; 0 when neither
+// lands. At most 2 * limit long.
+vec2 neighbourSpacing(ivec2 cell, ivec2 axis, vec2 centre) {
+  vec2 after, before;
+  vec3 unusedFlux;
+  float unusedSigma;
+  bool hasAfter = traceCell(cell + axis, after, unusedFlux, unusedSigma);
+  bool hasBefore = traceCell(cell - axis, before, unusedFlux, unusedSigma);
+  vec2 a = after - centre, b = centre - before;
+  if (hasAfter && hasBefore) return dot(a, a) < dot(b, b) ? a : b;
+  return hasAfter ? a : (hasBefore ? b : vec2(0.0));
+}
+
+void main() {
+  int size = int(u.grid.x);
+  ivec2 cell = ivec2(gl_VertexID % size, gl_VertexID / size);
+  float sigma;
+  if (!traceCell(cell, splatCentre, splatFlux, sigma)) {
     dropRay();
     return;
   }
-  gl_PointSize = splatSpriteSize(splatSigma);
+  vec2 alongX = neighbourSpacing(cell, ivec2(1, 0), splatCentre);
+  vec2 alongY = neighbourSpacing(cell, ivec2(0, 1), splatCentre);
+  // A ray whose beam spreads over several times its own cross-section lands in a dim, divergent
+  // part (a lens's outer halo) where the casters' maps, not the optics, decide its neighbours:
+  // their texels and facets bunch those rays into spokes. Round splats there (the halo is
+  // smooth in the traced reference); keep them elongated where light converges, so that a point
+  // or line caustic stays sharp.
+  float spreadArea = abs(alongX.x * alongY.y - alongX.y * alongY.x) / u.grid.w;
+  splatShape = splatCovariance(sigma, alongX, alongY, u.splatScale.y,
+                               smoothstep(1.5, 4.0, spreadArea));
+  // NaN fails every comparison, Inf fails the bound: neither reaches the map.
+  if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))) &&
+        all(greaterThanEqual(splatShape.xz, vec2(u.grid.z * u.grid.z))) &&
+        all(lessThan(splatShape, vec3(1e30))))) {
+    dropRay();
+    return;
+  }
+  gl_PointSize = splatSpriteSize(sqrt(max(splatShape.x, splatShape.z)));
+  vec2 uv = splatCentre / u.grid.y;
   gl_Position = vec4(uv * 2.0 - 1.0, 0.5, 1.0);
 }

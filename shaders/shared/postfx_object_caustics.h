@@ -24,15 +24,50 @@ SHARED_FN vec3 fresnelSchlick(float cosI, vec3 f0) {
   return f0 + (vec3(1.0f) - f0) * m5;
 }
 
-// Truncation-corrected Gaussian splat weight per texel: the discrete sum over the square point
-// sprite of half side 3 sigma is 1 (flux is conserved), see the splat pass.
-SHARED_FN float splatWeight(vec2 offsetTexels, float sigma) {
-  float s2 = sigma * sigma;
-  // 1 / (2 pi sigma^2), divided by the square's share of the Gaussian, erf(3/sqrt 2)^2.
-  return exp(-dot(offsetTexels, offsetTexels) / (2.0f * s2)) * (0.15915494f / 0.99460f) / s2;
+// Covariance (texels^2; xx, xy, yy) of one ray's Gaussian splat: an isotropic part sigma0 (the
+// splat radius and the roughness cone) plus a quarter of the outer products of the vectors to
+// where the neighbouring rays land. Where light diverges those vectors are longer than the splat
+// is wide, and a lattice of narrow Gaussians shows as rings (moire); widening each along its own
+// lattice vectors by half their length leaves a ripple of 2 exp(-pi^2 / 2) < 1.5 % of the mean.
+// Along a direction in which the rays converge (towards a caustic point or line) the vector is
+// short and the splat stays as narrow as sigma0, so the caustic keeps its sharpness.
+SHARED_FN vec3 splatCovariance(float sigma0, vec2 alongX, vec2 alongY, float maxSigma,
+                               float roundness) {
+  vec3 c = vec3(0.25f * (alongX.x * alongX.x + alongY.x * alongY.x),
+                0.25f * (alongX.x * alongX.y + alongY.x * alongY.y),
+                0.25f * (alongX.y * alongX.y + alongY.y * alongY.y));
+  // Bound the width along each principal axis separately: shortening the vectors instead would
+  // also shorten their narrow component, and a ray fanning out far along one axis would lose
+  // the width it needs across it (radial streaks in a lens's outer halo).
+  float mean = 0.5f * (c.x + c.z);
+  float spread = sqrt(0.25f * (c.x - c.z) * (c.x - c.z) + c.y * c.y);
+  float cap = maxSigma * maxSigma;
+  float hi = min(mean + spread, cap);
+  float lo = min(max(mean - spread, roundness * hi), cap);
+  vec2 axis = abs(c.y) > 1e-12f * (mean + 1e-30f)
+                  ? normalize(vec2(mean + spread - c.z, c.y))
+                  : (c.x >= c.z ? vec2(1.0f, 0.0f) : vec2(0.0f, 1.0f));
+  float s2 = min(sigma0, maxSigma);
+  s2 = s2 * s2 + lo;
+  return vec3(s2 + (hi - lo) * axis.x * axis.x, (hi - lo) * axis.x * axis.y,
+              s2 + (hi - lo) * axis.y * axis.y);
 }
 
-// Point-sprite side (texels, odd) that holds +-3 sigma around a centre anywhere in its texel.
+// Truncation-corrected Gaussian splat weight per texel for the covariance (xx, xy, yy): the sum
+// over the point sprite (a square of half side 3 sigma along each axis) is 1 within 0.3 %: the
+// square holds erf(3/sqrt 2)^2 = 0.99460 of an axis-aligned Gaussian and up to 0.9973 of a fully
+// correlated one. An isotropic covariance gives exactly the former, flux-conserving, splat.
+SHARED_FN float splatWeight(vec2 offsetTexels, vec3 covariance) {
+  float det = covariance.x * covariance.z - covariance.y * covariance.y;
+  vec2 o = offsetTexels;
+  float q =
+      (covariance.z * o.x * o.x - 2.0f * covariance.y * o.x * o.y + covariance.x * o.y * o.y) / det;
+  // 1 / (2 pi sqrt(det)), divided by the square's share of the Gaussian.
+  return exp(-0.5f * q) * (0.15915494f / 0.99460f) / sqrt(det);
+}
+
+// Point-sprite side (texels, odd) that holds +-3 sigma around a centre anywhere in its texel,
+// sigma the larger standard deviation along the map's axes.
 SHARED_FN float splatSpriteSize(float sigma) {
   return 2.0f * ceil(3.0f * sigma) + 1.0f;
 }
