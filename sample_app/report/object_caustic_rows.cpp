@@ -38,6 +38,7 @@ std::string number(float value) {
 // Every parameter, the swept one first (the plot labels a point with the setting's first number).
 std::string settingName(const ObjectCausticVariant& v) {
   using Sweep = ObjectCausticVariant::Sweep;
+  if (v.defaults) return v.underWater ? "under water" : "in air";
   const std::string map = "map=" + std::to_string(v.mapSize);
   const std::string grid = "grid=" + std::to_string(v.gridSize);
   const std::string it = "it=" + std::to_string(v.iterations);
@@ -81,6 +82,10 @@ ObjectCausticReportSettings objectCausticSweep(bool quick) {
       s.variants.push_back(
           {"object caustics, splat (map 1024)", Sweep::Splat, 1024, 512, 1, splat});
   }
+  const postfx::ObjectCausticsSettings d;
+  for (bool underWater : {false, true})
+    s.variants.push_back({"object caustics, defaults", Sweep::MapSize, d.mapSize, d.gridSize,
+                          d.iterations, d.splatRadius, true, underWater});
   s.timedFrames = quick ? 6 : 16;
   s.referenceRaysPerSide = quick ? 1500 : 3000;
   s.focusRaysPerSide = quick ? 800 : 1200;
@@ -95,8 +100,15 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
   const PlaneView topDown = topDownView(w, h, kCameraHeight - scene.planeY);
   PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
   const ref::GlMesh mesh = ref::makeSphereMesh(sphere.radius, 160, 80);
-  const ref::ReceiverMap receivers(scene.towardSun, glm::dvec3(0.0), kReceiverHalf, scene.planeY,
-                                   kReceiverMapSize);
+  // Under water the light reaching the sphere is the sun refracted by the flat surface, and the
+  // glass bends it by its IOR over the water's.
+  constexpr double kWaterIor = 1.333;
+  const glm::dvec3 travelInWater =
+      glm::refract(-scene.towardSun, glm::dvec3(0.0, 1.0, 0.0), 1.0 / kWaterIor);
+  const ref::ReceiverMap airReceivers(scene.towardSun, glm::dvec3(0.0), kReceiverHalf, scene.planeY,
+                                      kReceiverMapSize);
+  const ref::ReceiverMap waterReceivers(-travelInWater, glm::dvec3(0.0), kReceiverHalf,
+                                        scene.planeY, kReceiverMapSize);
   postfx::CasterMaterial glass;
   glass.ior = float(sphere.ior);
   glass.absorption = glm::vec3(sphere.absorption);
@@ -122,18 +134,20 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
   frame.godRays.enabled = false;
   frame.objectCaustics.casters = &caster;
   frame.objectCaustics.casterCount = 1;
-  frame.objectCaustics.receivers = receivers.desc();
 
   // One run per distinct setting, shared by the series that meet there.
-  using Key = std::tuple<int, int, int, float>;
+  using Key = std::tuple<int, int, int, float, bool, bool>;
   std::map<Key, Row> done;
-  postfx::ObjectCausticMap bins;
-  std::vector<double> truth;
-  double truthNoise = 0.0;
+  struct Truth {
+    postfx::ObjectCausticMap bins;
+    std::vector<double> irradiance;
+    double noise = 0.0;
+  };
+  Truth truths[2];  // in air, under water
   long long referenceRays = 0;
   for (size_t k = 0; k < settings.variants.size(); ++k) {
     const ObjectCausticVariant& v = settings.variants[k];
-    const Key key{v.mapSize, v.gridSize, v.iterations, v.splatRadius};
+    const Key key{v.mapSize, v.gridSize, v.iterations, v.splatRadius, v.defaults, v.underWater};
     if (auto it = done.find(key); it != done.end()) {
       Row row = it->second;
       row.method = v.method;
@@ -144,11 +158,25 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
     std::fprintf(stderr, "report: object caustics %s (%zu/%zu)\n", settingName(v).c_str(), k + 1,
                  settings.variants.size());
     postfx::ObjectCausticsSettings& s = frame.objectCaustics.settings;
+    s = postfx::ObjectCausticsSettings{};
     s.mapSize = v.mapSize;
     s.gridSize = v.gridSize;
     s.iterations = v.iterations;
-    s.footprintScale = 3.0f;  // as the accuracy test: room for the rim rays beside the sphere
     s.splatRadius = v.splatRadius;
+    // As the accuracy test: room for the rim rays beside the sphere.
+    if (!v.defaults) s.footprintScale = 3.0f;
+    ref::SphereCaster traced = sphere;
+    glm::dvec3 towardLight = scene.towardSun;
+    frame.objectCaustics.receivers = airReceivers.desc();
+    frame.water.level = -1000.0;
+    if (v.underWater) {
+      traced.ior = sphere.ior / kWaterIor;
+      towardLight = -travelInWater;
+      frame.objectCaustics.receivers = waterReceivers.desc();
+      frame.water.level = 10.0;
+      frame.water.ior = float(kWaterIor);
+    }
+    Truth& truth = truths[v.underWater ? 1 : 0];
     PassRun run;
     if (!runPass(create, frame, postfx::Pass::ObjectCaustics, target, settings.timedFrames, run,
                  error))
@@ -159,35 +187,35 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
       return false;
     }
 
-    if (truth.empty()) {
+    if (truth.irradiance.empty()) {
       // The bins take the light's axes from the first map (every map of this light has them).
-      bins = ref::binGrid(placement, sphere.centre, settings.binSide, settings.binCount);
+      truth.bins = ref::binGrid(placement, sphere.centre, settings.binSide, settings.binCount);
       const int n = settings.referenceRaysPerSide;
       const ref::CausticReference a =
-          ref::traceSphereReference(sphere, scene.towardSun, scene.planeY, bins, n, 1);
+          ref::traceSphereReference(traced, towardLight, scene.planeY, truth.bins, n, 1);
       const ref::CausticReference b =
-          ref::traceSphereReference(sphere, scene.towardSun, scene.planeY, bins, n, 2);
+          ref::traceSphereReference(traced, towardLight, scene.planeY, truth.bins, n, 2);
       std::vector<double> halfDifference(a.irradiance.size());
-      truth.resize(a.irradiance.size());
-      for (size_t i = 0; i < truth.size(); ++i) {
-        truth[i] = 0.5 * (a.irradiance[i].g + b.irradiance[i].g);
+      truth.irradiance.resize(a.irradiance.size());
+      for (size_t i = 0; i < truth.irradiance.size(); ++i) {
+        truth.irradiance[i] = 0.5 * (a.irradiance[i].g + b.irradiance[i].g);
         halfDifference[i] = 0.5 * (a.irradiance[i].g - b.irradiance[i].g);
       }
       // The mean of two independent estimates has the variance of their half difference.
-      truthNoise = std::sqrt(sumOfSquares(halfDifference) / sumOfSquares(truth));
+      truth.noise = std::sqrt(sumOfSquares(halfDifference) / sumOfSquares(truth.irradiance));
       referenceRays = 2LL * n * n;
     }
-    if (std::abs(glm::dot(glm::normalize(placement.axisU), glm::normalize(bins.axisU)) - 1.0) >
-        1e-9) {
+    if (std::abs(glm::dot(glm::normalize(placement.axisU), glm::normalize(truth.bins.axisU)) -
+                 1.0) > 1e-9) {
       error = "object caustics: the map's axes changed between settings";
       return false;
     }
-    const ErrorStats stats =
-        compareWithReference(ref::resampleToBins(run.objectMap, placement, bins), truth);
+    const ErrorStats stats = compareWithReference(
+        ref::resampleToBins(run.objectMap, placement, truth.bins), truth.irradiance);
 
     // Focus and flux as the accuracy test measures them, on this map's own texels.
     const ref::CausticReference local = ref::traceSphereReference(
-        sphere, scene.towardSun, scene.planeY, placement, settings.focusRaysPerSide);
+        traced, towardLight, scene.planeY, placement, settings.focusRaysPerSide);
     const std::vector<glm::dvec3> blurred =
         ref::gaussianBlur(local.irradiance, placement.size, s.splatRadius);
     const glm::dvec3 gpuFocus =
@@ -214,18 +242,21 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
     rows.push_back(row);
   }
 
-  char text[1024];
+  char text[1400];
   std::snprintf(
       text, sizeof(text),
       "Object caustics: glass sphere (R = 1 m, IOR 1.5, tinted) 0.4 m over a plane, sun 25 deg "
       "from the zenith, a host with no water texture; caustic map over 3x the sphere's "
-      "footprint, 5 exit iterations. Reference: exact CPU ray tracing (Fresnel at both "
-      "surfaces, Beer-Lambert inside), %.3g rays binned on %d x %d bins of %.0f mm "
-      "perpendicular to the light; its own noise (half the difference of two seeds) %.2g "
-      "relative RMSE. Relative RMSE is the green channel over those bins; focus and flux in the "
-      "note are against %d^2 rays traced into each GPU map and blurred by its splat.",
+      "footprint, 5 exit iterations (the 'defaults' rows: every setting at its default, "
+      "footprint 2x; under water: 10 m of water above, the refracted sun). Reference: exact "
+      "CPU ray tracing (Fresnel at both surfaces, Beer-Lambert inside), %.3g rays binned on %d "
+      "x %d bins of %.0f mm perpendicular to the light; its own noise (half the difference of "
+      "two seeds) %.2g relative RMSE in air, %.2g under water. Relative RMSE is the green "
+      "channel over those bins; focus and flux in the note are against %d^2 rays traced into "
+      "each GPU map and blurred by its splat.",
       double(referenceRays), settings.binCount, settings.binCount,
-      1000.0 * settings.binSide / settings.binCount, truthNoise, settings.focusRaysPerSide);
+      1000.0 * settings.binSide / settings.binCount, truths[0].noise, truths[1].noise,
+      settings.focusRaysPerSide);
   note = text;
   return true;
 }

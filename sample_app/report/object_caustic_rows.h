@@ -25,6 +25,10 @@ struct ObjectCausticVariant {
   Sweep sweep;         // what varies along it: named first in the setting (the plot's label)
   int mapSize, gridSize, iterations;
   float splatRadius;  // texels
+  // Every other setting at its default (footprint 2x, not the sweep's 3x); the sphere under
+  // 10 m of water (lit by the refracted sun, relative IOR 1.5 / 1.333) when underWater.
+  bool defaults = false;
+  bool underWater = false;
 };
 
 struct ObjectCausticReportSettings {
@@ -37,7 +41,7 @@ struct ObjectCausticReportSettings {
 };
 
 // The full sweep (map 256/512/1024; grid 64/128/256/512; iterations 1/3/5; splat 0.5/1/2 at
-// map 1024) or the quick one.
+// map 1024) or the quick one; both end with the default settings in air and under water.
 ObjectCausticReportSettings objectCausticSweep(bool quick);
 
 // `target`: the report's timing target (its size is the G-buffer's). Appends rows; `note` gets

@@ -278,8 +278,8 @@ void main() {
   // smooth in the traced reference); keep them elongated where light converges, so that a point
   // or line caustic stays sharp.
   float spreadArea = abs(alongX.x * alongY.y - alongX.y * alongY.x) / u.grid.w;
-  splatShape = splatCovariance(sigma, alongX, alongY, u.splatScale.y,
-                               smoothstep(1.5, 4.0, spreadArea));
+  splatShape =
+      splatCovariance(sigma, alongX, alongY, u.splatScale.y, smoothstep(1.5, 4.0, spreadArea));
   // NaN fails every comparison, Inf fails the bound: neither reaches the map.
   if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))) &&
         all(greaterThanEqual(splatShape.xz, vec2(u.grid.z * u.grid.z))) &&
