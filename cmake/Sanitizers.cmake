@@ -1,6 +1,6 @@
 # Development only: POSTFX_SANITIZE builds every target with these sanitizers, e.g.
 # "address,undefined" (clang: add float-cast-overflow, which -fsanitize=undefined leaves out).
-# See the README's development notes.
+# See docs/development.md (Sanitizers).
 set(POSTFX_SANITIZE "" CACHE STRING "Comma-separated -fsanitize= list for every target (empty: none)")
 if(POSTFX_SANITIZE)
   add_compile_options(-fsanitize=${POSTFX_SANITIZE} -fno-sanitize-recover=all
