@@ -40,8 +40,10 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
   }
   if (passes.objects) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
-    // Front/back positions RGBA32F, normals RGBA16F, one D32F depth.
-    t.casterMaps = square(s.gridSize) * (16 + 8 + 16 + 8 + 4);
+    // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
+    // its flux, RGBA32F, per colour channel when dispersion may split them.
+    const std::uint64_t channels = hasFeature(create.features, Feature::Dispersion) ? 3 : 1;
+    t.casterMaps = square(s.gridSize) * (16 + 8 + 16 + 8 + 4 + channels * 2 * 16);
     // Splats and the two temporal histories, RGBA32F.
     t.causticMap = square(s.mapSize) * 16 * 3;
   }

@@ -10,7 +10,7 @@
 namespace postfx::detail {
 namespace {
 
-enum Unit : GLuint { kUnit0 = 0, kUnit1, kUnit2, kUnit3, kUnit4 };
+enum Unit : GLuint { kUnit0 = 0, kUnit1, kUnit2, kUnit3, kUnit4, kUnit5 };
 // Uniform locations of object_caustics_caster.* and object_caustics_temporal.frag.
 enum CasterUniform : GLint {
   kModelToAnchor = 0,
@@ -27,6 +27,16 @@ bool build(const std::string& defines, const char* vertex, const char* fragment,
   if (!glkit::buildProgram(shaderLibrary(),
                            {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines,
                            label, program, error))
+    return false;
+  out = glkit::Program(program);
+  return true;
+}
+
+bool buildTrace(const std::string& defines, glkit::Program& out, std::string& error) {
+  GLuint program = 0;
+  if (!glkit::buildProgram(shaderLibrary(),
+                           {{GL_COMPUTE_SHADER, "postfx/object_caustics_trace.comp"}}, defines,
+                           "postfx.object_caustics.trace", program, error))
     return false;
   out = glkit::Program(program);
   return true;
@@ -66,6 +76,7 @@ Result ObjectCausticsPass::init(const std::string& defines, std::string& error) 
   release();
   if (!build(defines, "postfx/object_caustics_caster.vert", "postfx/object_caustics_caster.frag",
              "postfx.object_caustics.caster", caster_, error) ||
+      !buildTrace(defines, trace_, error) ||
       !build(defines, "postfx/object_caustics_splat.vert", "postfx/object_caustics_splat.frag",
              "postfx.object_caustics.splat", splat_, error) ||
       !build(defines, "postfx/fullscreen.vert", "postfx/object_caustics_temporal.frag",
@@ -103,6 +114,7 @@ Result ObjectCausticsPass::init(const std::string& defines, std::string& error) 
 
 void ObjectCausticsPass::release() {
   caster_ = glkit::Program();
+  trace_ = glkit::Program();
   splat_ = glkit::Program();
   temporal_ = glkit::Program();
   composite_ = glkit::Program();
@@ -113,8 +125,9 @@ void ObjectCausticsPass::release() {
   for (GLuint* fbo : {&frontFbo_, &backFbo_, &splatFbo_, &temporalFbo_, &compositeFbo_})
     deleteFramebuffer(*fbo);
   for (GLuint* t : {&frontPosition_, &frontNormal_, &backPosition_, &backNormal_, &casterDepth_,
-                    &splatMap_, &history_[0], &history_[1]})
+                    &splatMap_, &history_[0], &history_[1], &landings_})
     deleteTexture(*t);
+  landingLayers_ = 0;
   if (pointSampler_ != 0) glDeleteSamplers(1, &pointSampler_);
   if (linearSampler_ != 0) glDeleteSamplers(1, &linearSampler_);
   pointSampler_ = linearSampler_ = 0;
@@ -142,6 +155,15 @@ void ObjectCausticsPass::ensureGrid(int size) {
   gridSize_ = size;
 }
 
+void ObjectCausticsPass::ensureLandings(int size, int layers) {
+  if (landings_ != 0 && size == gridSize_ && layers == landingLayers_) return;
+  deleteTexture(landings_);
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &landings_);
+  glTextureStorage3D(landings_, 1, GL_RGBA32F, size, size, layers);
+  glkit::label(GL_TEXTURE, landings_, "postfx.object_caustics.landings");
+  landingLayers_ = layers;
+}
+
 void ObjectCausticsPass::ensureMap(int size) {
   if (size == mapSize_) return;
   for (GLuint* t : {&splatMap_, &history_[0], &history_[1]}) deleteTexture(*t);
@@ -157,6 +179,9 @@ void ObjectCausticsPass::ensureMap(int size) {
 Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFrame& light,
                                    const shared::ObjectCausticsBlock& block, std::string& error) {
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
+  dispersed_ = block.receiver.w > 0.5f;
+  // Before ensureGrid, which records the grid size these are made for.
+  ensureLandings(s.gridSize, dispersed_ ? 6 : 2);
   ensureGrid(s.gridSize);
   ensureMap(s.mapSize);
   // Storage the driver refused (GL_OUT_OF_MEMORY) leaves a map without levels and its
@@ -169,6 +194,13 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
               std::to_string(s.mapSize) + ")";
       return Result::OutOfMemory;
     }
+  }
+  GLint landingWidth = 0;
+  glGetTextureLevelParameteriv(landings_, 0, GL_TEXTURE_WIDTH, &landingWidth);
+  if (landingWidth != s.gridSize) {
+    error = "objectCaustics: the driver could not allocate the ray landings (gridSize " +
+            std::to_string(s.gridSize) + ")";
+    return Result::OutOfMemory;
   }
   for (GLuint fbo : {frontFbo_, backFbo_, splatFbo_}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
@@ -191,7 +223,6 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
     historyValid_ = false;
   placement_ = placement;
   light_ = light;
-  dispersed_ = block.receiver.w > 0.5f;
   return Result::Ok;
 }
 
@@ -255,7 +286,21 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
   glDepthMask(GL_FALSE);
 }
 
-void ObjectCausticsPass::drawSplats(const FrameDesc& frame) {
+void ObjectCausticsPass::traceRays(const FrameDesc& frame) {
+  const GLuint textures[] = {frontPosition_, frontNormal_, backPosition_, backNormal_,
+                             frame.objectCaustics.receivers.depth.texture};
+  glBindTextures(kUnit0, 5, textures);
+  const GLuint samplers[] = {pointSampler_, pointSampler_, pointSampler_, pointSampler_,
+                             linearSampler_};
+  glBindSamplers(kUnit0, 5, samplers);
+  glBindImageTexture(0, landings_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glUseProgram(trace_.id());
+  const GLuint rays = static_cast<GLuint>(gridSize_) * static_cast<GLuint>(gridSize_);
+  glDispatchCompute((rays + 63) / 64, dispersed_ ? 3 : 1, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void ObjectCausticsPass::drawSplats() {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(splatFbo_, GL_COLOR, 0, zero);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, splatFbo_);
@@ -265,12 +310,8 @@ void ObjectCausticsPass::drawSplats(const FrameDesc& frame) {
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  const GLuint textures[] = {frontPosition_, frontNormal_, backPosition_, backNormal_,
-                             frame.objectCaustics.receivers.depth.texture};
-  glBindTextures(kUnit0, 5, textures);
-  const GLuint samplers[] = {pointSampler_, pointSampler_, pointSampler_, pointSampler_,
-                             linearSampler_};
-  glBindSamplers(kUnit0, 5, samplers);
+  glBindTextureUnit(kUnit5, landings_);
+  glBindSampler(kUnit5, pointSampler_);
   glBindVertexArray(emptyVao_);
   glUseProgram(splat_.id());
   // A dispersed caster needs one ray per colour channel: three instances, the shader drops the
@@ -347,7 +388,8 @@ void ObjectCausticsPass::draw(const FrameDesc& frame, int width, int height) {
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING, uniformBuffer_);
 
   drawCasterMaps(frame);
-  drawSplats(frame);
+  traceRays(frame);
+  drawSplats();
   glBindVertexArray(emptyVao_);
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(mapSize_), static_cast<float>(mapSize_));
   filterTemporally(frame);

@@ -45,17 +45,22 @@ class ObjectCausticsPass {
  private:
   void ensureGrid(int size);
   void ensureMap(int size);
+  void ensureLandings(int size, int layers);
   void drawCasterMaps(const FrameDesc& frame);
-  void drawSplats(const FrameDesc& frame);
+  void traceRays(const FrameDesc& frame);
+  void drawSplats();
   void filterTemporally(const FrameDesc& frame);
   void composite(const FrameDesc& frame, int width, int height);
 
-  glkit::Program caster_, splat_, temporal_, composite_;
+  glkit::Program caster_, trace_, splat_, temporal_, composite_;
   GLuint meshVao_ = 0, emptyVao_ = 0, uniformBuffer_ = 0;
   GLuint frontFbo_ = 0, backFbo_ = 0, splatFbo_ = 0, temporalFbo_ = 0, compositeFbo_ = 0;
   GLuint frontPosition_ = 0, frontNormal_ = 0, backPosition_ = 0, backNormal_ = 0;
   GLuint casterDepth_ = 0;
   GLuint splatMap_ = 0, history_[2] = {0, 0};
+  // Where each ray lands and its flux (object_caustics_trace.comp): 2 layers per colour channel.
+  GLuint landings_ = 0;
+  int landingLayers_ = 0;
   GLuint pointSampler_ = 0, linearSampler_ = 0;
   int gridSize_ = 0, mapSize_ = 0;
   int historyIndex_ = 0;

@@ -281,7 +281,8 @@ TEST_F(PostfxObjectCausticsContractTest, SettingsOverTheMemoryBudgetAreRefusedUp
       ASSERT_EQ(v, marker) << "nothing added before the refusal";
   }
 
-  // The budget is the host's: the default map (12 MiB) and caster maps (3.3 MiB) do not fit 8.
+  // The budget is the host's: the default map (12 MiB) and caster maps (5.3 MiB: positions,
+  // normals, depth and where each ray lands) do not fit 8.
   postfx::CreateDesc desc;
   desc.features = postfx::Feature::ObjectCaustics;
   desc.memoryBudgetMiB = 8;
@@ -290,7 +291,7 @@ TEST_F(PostfxObjectCausticsContractTest, SettingsOverTheMemoryBudgetAreRefusedUp
   ContextPtr small(raw);
   frame = host.frame(&caster, 1, postfx::ObjectCausticsSettings{});
   EXPECT_EQ(postfx::dispatch(*small, frame), Result::OutOfMemory);
-  frame.objectCaustics.settings.mapSize = 256;  // 3 MiB + 3.3 MiB
+  frame.objectCaustics.settings.mapSize = 128;  // 0.75 MiB + 5.3 MiB
   EXPECT_EQ(postfx::dispatch(*small, frame), Result::Ok) << postfx::lastError(small.get());
   desc.memoryBudgetMiB = 0;
   EXPECT_EQ(postfx::create(desc, raw), Result::InvalidArgument);
