@@ -216,7 +216,8 @@ const std::array kValueOptions{
                   return intIn(text, 1, 100000, o.frames, "--frames", error);
                 }},
     ValueOption{
-        "--fps", "F", "frames per second of a rendered sequence, 1..1000 (default 30)", false,
+        "--fps", "F", "render/view --frames: frames per second of their time, 1..1000 (default 30)",
+        false,
         [](std::string_view text, Options& o, std::string& error) {
           return doubleIn(text, 1.0, 1000.0, o.fps, "--fps", "a number in [1, 1000]", error);
         }},
