@@ -5,22 +5,11 @@
 // the settings it accepted last.
 #include <string>
 
-#include <postfx/postfx.h>
-#include <postfx/water/optics.h>
-
-#include "camera.h"
 #include "plugin_setup.h"
 #include "renderer.h"
+#include "view_settings.h"
 
 namespace ocean {
-
-struct ViewSettings {
-  postfx::CausticsSettings caustics;
-  postfx::GodRaySettings godRays;
-  postfx::ObjectCausticsSettings objectCaustics;
-  Sun sun;
-  postfx::water::Optics optics;  // what the renderer's fog and the plugin's passes are given
-};
 
 struct LiveSettings {
   ViewSettings edited, accepted;

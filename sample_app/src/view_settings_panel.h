@@ -2,7 +2,7 @@
 // The overlay's settings panel: every live setting of the view, as ImGui widgets. It edits a
 // copy; the view hands the copy to the plugin, whose validation alone decides what is valid
 // (a value typed past a slider's end with Ctrl+click is not clamped here but sent as typed).
-#include "live_settings.h"
+#include "view_settings.h"
 
 namespace ocean {
 
