@@ -11,6 +11,18 @@ add_dependencies(sample_cli_tests ocean_sample)
 postfx_add_test(sample_model_tests
   SOURCES unit/sample_model_placement_test.cpp
   LIBS ocean_host)
+# The view in a window on its own Xvfb display against a headless render; skipped (with the
+# reason) where Xvfb is missing or cannot start.
+postfx_add_test(sample_view_window_tests
+  SOURCES unit/sample_view_window_test.cpp
+  LIBS PkgConfig::OIIO
+  LABELS window)
+target_compile_definitions(sample_view_window_tests PRIVATE
+  OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
+add_dependencies(sample_view_window_tests ocean_sample)
+postfx_add_test(sample_live_settings_tests GL
+  SOURCES gl/sample_live_settings_test.cpp
+  LIBS ocean_host)
 postfx_add_test(sample_view_flags_tests GL
   SOURCES gl/sample_view_flags_test.cpp
   LIBS ocean_host)

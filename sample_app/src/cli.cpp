@@ -92,11 +92,15 @@ const std::vector<CommandSpec>& commands() {
        Command::View,
        "the scene in a window",
        "Opens a window: WASD/QE fly, mouse drag looks, C toggles caustics, G god rays, T pauses "
-       "time, 1-4 switch presets, Esc quits.",
-       {},
+       "time, 1-4 switch presets, H hides the overlay, Esc quits. The overlay shows each pass's "
+       "GPU time as the plugin reports it and edits every feature's settings live; a value the "
+       "plugin refuses shows its message and the frame keeps the last accepted settings. With "
+       "--frames N it draws N frames on a fixed clock (--fps) and quits; --screenshot saves the "
+       "last one as shown (P saves the frame shown there too).",
+       {"--frames", "--fps", "--freeze-time", "--screenshot", "--no-overlay"},
        true,
        "",
-       60,
+       0,
        kSceneFooter},
       {"bench",
        Command::Bench,

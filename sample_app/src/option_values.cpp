@@ -209,15 +209,29 @@ const std::array kValueOptions{
                   o.out = text;  // checked by the command that writes it, before any work
                   return true;
                 }},
-    ValueOption{"--frames", "N", "bench: measured frames; render: frames of a sequence", false,
+    ValueOption{"--frames", "N",
+                "bench: measured frames; render: frames of a sequence; view: frames, then quit",
+                false,
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 1, 100000, o.frames, "--frames", error);
                 }},
     ValueOption{
-        "--fps", "F", "frames per second of a rendered sequence, 1..1000 (default 30)", false,
+        "--fps", "F", "render/view --frames: frames per second of their time, 1..1000 (default 30)",
+        false,
         [](std::string_view text, Options& o, std::string& error) {
           return doubleIn(text, 1.0, 1000.0, o.fps, "--fps", "a number in [1, 1000]", error);
         }},
+    ValueOption{"--screenshot", "PATH.png",
+                "view: the last of --frames (or, on P, the frame shown) as PNG", false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  // The window holds 8-bit pixels: an .exr would pretend to more.
+                  if (!text.ends_with(".png")) {
+                    error = "--screenshot must end in .png" + got(text);
+                    return false;
+                  }
+                  o.screenshot = text;  // its directory is checked before the window opens
+                  return true;
+                }},
     ValueOption{"--json", "FILE", "also write the rows as JSON", false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.json = text;
@@ -288,8 +302,10 @@ const std::array kFlagOptions{
                [](Options& o) { o.objectCaustics = false; }},
     FlagOption{"--triplanar-walls", "steep surfaces blend world-axis projections of the water",
                [](Options& o) { o.triplanarWalls = true; }},
-    FlagOption{"--freeze-time", "render --frames: time stays at --time, only the camera moves",
+    FlagOption{"--freeze-time", "render/view --frames: time stays at --time",
                [](Options& o) { o.freezeTime = true; }},
+    FlagOption{"--no-overlay", "view: no overlay (timings in the title bar, as before it)",
+               [](Options& o) { o.overlay = false; }},
     FlagOption{"--quick", "a smoke run in a few minutes", [](Options& o) { o.quick = true; }},
 };
 

@@ -18,10 +18,13 @@ struct Options {
   double timeSeconds = 0.0;
   std::vector<std::string> models;  // extra .glb files placed in the scene
   std::string out = "ocean.png";
-  // bench: measured frames after warm-up; render: frames of the image sequence (1: one image)
+  // bench: measured frames after warm-up; render: frames of the image sequence (1: one image);
+  // view: frames drawn before it quits (0: until the window is closed)
   int frames = 60;
-  double fps = 30.0;           // render: frames per second of the sequence's time
-  bool freezeTime = false;     // render --frames: time stays at --time (only the camera moves)
+  double fps = 30.0;           // render, view --frames: frames per second of the sequence's time
+  bool freezeTime = false;     // render/view --frames: time stays at --time
+  std::string screenshot;      // view: the window's last frame as PNG ("": none)
+  bool overlay = true;         // view: the Dear ImGui overlay (timings, live settings)
   std::string json;            // bench: JSON output path
   std::string only;            // bench: run only the variant rows whose name starts with this
   bool caustics = true;        // the plugin's seabed caustics

@@ -76,6 +76,8 @@ class Renderer {
   const RenderSettings& settings() const { return settings_; }
   const gbuffer::Targets& targets() const { return targets_; }
   const postfx::water::Optics& optics() const { return optics_; }
+  // Read at every render: the view edits it live.
+  postfx::water::Optics& optics() { return optics_; }
   postfx::water::Ocean& ocean() { return *ocean_; }
 
  private:

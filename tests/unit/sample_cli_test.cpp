@@ -481,4 +481,27 @@ TEST_F(SampleCli, ReferenceThenCompareWithItself) {
   EXPECT_TRUE(fs::exists(side));
 }
 
+// view's own flags are refused before a window would open: no display is needed for that.
+TEST_F(SampleCli, ViewScreenshotRefusedWithoutAWindow) {
+  unsetenv("DISPLAY");
+  unsetenv("WAYLAND_DISPLAY");
+  const std::string size = "view --width 64 --height 36 --water-resolution 16 ";
+  const struct {
+    std::string arguments, mentions;
+    int exitCode;
+  } cases[] = {
+      {"--frames 1 --screenshot " + (dir_ / "shot.jpg").string(), "--screenshot", 2},
+      {"--frames 1 --screenshot " + (dir_ / "missing" / "shot.png").string(), "missing", 1},
+      {"--frames 0", "--frames", 2},
+  };
+  for (const auto& c : cases) {
+    const RunResult result = runSample(size + c.arguments, dir_);
+    EXPECT_EQ(result.exitCode, c.exitCode) << c.arguments << ": " << result.stderrText;
+    EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1)
+        << result.stderrText;
+    EXPECT_NE(result.stderrText.find(c.mentions), std::string::npos) << result.stderrText;
+  }
+  EXPECT_TRUE(fs::is_empty(dir_)) << "a refused view left a file";
+}
+
 }  // namespace
