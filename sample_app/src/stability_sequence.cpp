@@ -169,9 +169,14 @@ StabilityMotion stillMotion() {
 
 std::string describeMotion(const StabilityMotion& motion) {
   char text[160];
-  std::snprintf(text, sizeof text, "camera %.2g m/s, %.2g deg/s, time %s, %g fps",
-                glm::length(motion.velocity), motion.yawRate,
-                motion.timeRuns ? "running" : "frozen", motion.fps);
+  if (glm::length(motion.velocity) == 0.0 && motion.yawRate == 0.0) {
+    std::snprintf(text, sizeof text, "camera still, time %s, %g fps",
+                  motion.timeRuns ? "running" : "frozen", motion.fps);
+  } else {
+    std::snprintf(text, sizeof text, "camera %.2g m/s and %.2g deg/s, time %s, %g fps",
+                  glm::length(motion.velocity), motion.yawRate,
+                  motion.timeRuns ? "running" : "frozen", motion.fps);
+  }
   return text;
 }
 

@@ -53,7 +53,8 @@ StabilityMotion cameraMotion(double fps = 30.0);
 StabilityMotion timeMotion(double fps = 30.0);
 // Nothing moves.
 StabilityMotion stillMotion();
-std::string describeMotion(const StabilityMotion& motion);  // "camera 0.5 m/s, 5 deg/s, ..."
+// "camera 0.5 m/s and 5 deg/s, time frozen, 30 fps", "camera still, time running, 30 fps".
+std::string describeMotion(const StabilityMotion& motion);
 
 // The sample's frame the passes are measured on. The plugin's own passes are switched off in
 // it (their light is not what is measured: each pass is dispatched again on its own).

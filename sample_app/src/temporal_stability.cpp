@@ -18,31 +18,24 @@ AddedLightChange addedLightChange(const std::vector<std::vector<glm::vec4>>& fra
   const size_t pixels = frames.front().size();
   for (const auto& frame : frames)
     if (frame.size() != pixels || pixels == 0) return out;
-  double light = 0.0;
-  size_t lightCount = 0;
-  for (const auto& frame : frames) {
-    for (const glm::vec4& c : frame) {
-      const double l = luminance(c);
-      if (!std::isfinite(l)) continue;
-      light += l;
-      ++lightCount;
-    }
-  }
-  if (lightCount == 0 || !(light > 0.0)) return out;
-  out.meanLight = light / double(lightCount);
+  out.pairs = int(frames.size() - 1);
+  // Pixels dark in both frames of a pair add nothing to either sum: leaving them out changes
+  // no ratio of sums, and keeps the percentile on the light.
   std::vector<double> changes;
   changes.reserve(pixels * (frames.size() - 1));
+  double change = 0.0, light = 0.0;
   for (size_t k = 0; k + 1 < frames.size(); ++k) {
     for (size_t i = 0; i < pixels; ++i) {
-      const double d = luminance(frames[k + 1][i]) - luminance(frames[k][i]);
-      if (std::isfinite(d)) changes.push_back(std::abs(d));
+      const double a = luminance(frames[k][i]), b = luminance(frames[k + 1][i]);
+      if (!std::isfinite(a) || !std::isfinite(b) || !(a > 0.0 || b > 0.0)) continue;
+      changes.push_back(std::abs(b - a));
+      change += std::abs(b - a);
+      light += 0.5 * (a + b);
     }
   }
-  out.pairs = int(frames.size() - 1);
-  if (changes.empty()) return out;
-  double sum = 0.0;
-  for (double d : changes) sum += d;
-  out.mean = sum / double(changes.size()) / out.meanLight;
+  if (changes.empty() || !(light > 0.0)) return out;
+  out.meanLight = light / double(changes.size());
+  out.mean = change / light;
   const size_t k = (changes.size() - 1) * 99 / 100;
   std::nth_element(changes.begin(), changes.begin() + long(k), changes.end());
   out.p99 = changes[k] / out.meanLight;

@@ -10,19 +10,22 @@
 
 namespace ocean {
 
+// Over the pixels a pass lights in either frame of a pair of consecutive frames (dark in both:
+// nothing to measure), and over every pair. L: Rec. 709 luminance of the added light.
 struct AddedLightChange {
-  // Over every pixel and every pair of consecutive frames, of |L(k+1) - L(k)| (Rec. 709
-  // luminance of the added light), divided by the mean added luminance over the pixels and
-  // frames: 0 when nothing changes, 0.01 for a 1 % change everywhere.
+  // Mean of |L(k+1) - L(k)| over the mean of (L(k) + L(k+1)) / 2: 0 when nothing changes,
+  // 0.01 for a 1 % change everywhere, 2 when the light jumps to where there was none.
   double mean = 0.0;
-  double p99 = 0.0;        // the 99th percentile instead of the mean (where the change is)
-  double meanLight = 0.0;  // the divisor: mean added luminance (the frame's own units)
+  // The 99th percentile of |L(k+1) - L(k)| over the same mean light: where the change is
+  // largest (the mean hides a few pixels that pop).
+  double p99 = 0.0;
+  double meanLight = 0.0;  // the divisor, in the frame's own units
   int pairs = 0;           // consecutive frame pairs measured
 };
 
 // `frames`: the light a pass added to each frame of a sequence, RGBA (alpha ignored), all the
-// same size, in order. Non-finite pixels are left out of both numbers. Fewer than two frames,
-// or frames that add no light, give all zeros.
+// same size, in order. Non-finite pixels are left out. Fewer than two frames, or frames that
+// add no light, give all zeros.
 AddedLightChange addedLightChange(const std::vector<std::vector<glm::vec4>>& frames);
 
 }  // namespace ocean

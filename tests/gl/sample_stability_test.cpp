@@ -36,6 +36,25 @@ const ocean_scene::Model& scene() {
   return model;
 }
 
+// The measure itself, on images with known answers.
+TEST(AddedLightChange, KnownAnswers) {
+  const std::vector<glm::vec4> dark(4, glm::vec4(0.0f)), grey(4, glm::vec4(1.0f));
+  const std::vector<glm::vec4> brighter(4, glm::vec4(1.02f));
+  std::vector<glm::vec4> half = dark;
+  half[0] = half[1] = glm::vec4(2.0f);
+  EXPECT_EQ(ocean::addedLightChange({grey, grey, grey}).mean, 0.0);
+  // 2 % brighter: |1.02 - 1| over the pair's mean 1.01.
+  EXPECT_NEAR(ocean::addedLightChange({grey, brighter}).mean, 0.02 / 1.01, 1e-6);
+  // Light that moves to where there was none: all of it changes, twice its mean.
+  std::vector<glm::vec4> moved = dark;
+  moved[2] = moved[3] = glm::vec4(2.0f);
+  EXPECT_NEAR(ocean::addedLightChange({half, moved}).mean, 2.0, 1e-9);
+  // Pixels dark in both frames do not dilute the measure.
+  EXPECT_NEAR(ocean::addedLightChange({half, half}).meanLight, 2.0, 1e-6);
+  EXPECT_EQ(ocean::addedLightChange({dark, dark}).mean, 0.0);
+  EXPECT_EQ(ocean::addedLightChange({grey}).pairs, 0);
+}
+
 // The seabed preset (sand, rock, the glass sphere and bottle in view) at a test's size.
 class StabilityFixture : public testsupport::GlTest {
  protected:
