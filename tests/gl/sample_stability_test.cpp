@@ -221,10 +221,12 @@ TEST_F(ReferenceStability, GodRaysChangeLikeTheirDenseMarch) {
     std::printf("god rays, %s: plugin %.5f, dense march %.5f\n",
                 camera ? "camera moving" : "time running", plugin.mean, truth.mean);
     EXPECT_GT(truth.mean, 0.0);
-    // Measured 2.3 (camera) and 1.8 (time) times the march's change: 16 samples on a world
-    // grid cross planes that enter and leave a pixel's ray as it turns, a step the integral
-    // does not have. 3 keeps that margin; a march whose samples slid with the camera would
-    // change several times more (PostfxGodRaysTest.WorldSnappedSamplingFlickersLessThanUniform).
+    // Measured 2.3 (camera) and 1.8 (time) times the march's change here, 3.1 and 3.3 at the
+    // report's 160x90: 16 samples per ray each see the caustic pattern in the water at one
+    // point, where the integral averages many filaments, so they change more as the pattern
+    // moves; that excess is what docs/temporal_stability.md reports. 3 keeps it from growing
+    // unnoticed at this size; samples that slid with the camera would change several times
+    // more (PostfxGodRaysTest.WorldSnappedSamplingFlickersLessThanUniform).
     EXPECT_LT(plugin.mean, 3.0 * truth.mean);
   }
 }
