@@ -39,8 +39,9 @@ bool isObjectCaustics(StabilityPass pass) {
 // lookup on walls), and the pass's own features only: nothing else runs.
 postfx::CreateDesc passCreateDesc(const postfx::CreateDesc& host, StabilityPass pass) {
   postfx::CreateDesc create = host;
-  postfx::Feature features = postfx::Feature::ShadowMask;
-  for (postfx::Feature kept : {postfx::Feature::Dispersion, postfx::Feature::TriplanarWalls})
+  postfx::Feature features = static_cast<postfx::Feature>(0);
+  for (postfx::Feature kept :
+       {postfx::Feature::ShadowMask, postfx::Feature::Dispersion, postfx::Feature::TriplanarWalls})
     if (postfx::hasFeature(host.features, kept)) features = features | kept;
   if (isCaustics(pass)) features = features | postfx::Feature::Caustics;
   if (pass == StabilityPass::PhysicalCaustics)
