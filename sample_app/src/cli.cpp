@@ -120,8 +120,10 @@ const std::vector<CommandSpec>& commands() {
        "Error against run time of every method and quality setting: each pass timed (median, "
        "with its floor) and compared with a CPU reference of the same frame. Writes "
        "DIR/error_vs_time.csv, .md and .png (default DIR: report). The size is the report's "
-       "own (320x180, --quick 160x90).",
-       {"--out", "--quick"},
+       "own (320x180, --quick 160x90). Also the temporal stability of every pass against its "
+       "reference's (DIR/temporal_stability.csv and .md, 160x90; --quick leaves the "
+       "references out); --only stability writes that table alone.",
+       {"--out", "--quick", "--only"},
        true,
        "report",
        60,

@@ -22,6 +22,10 @@ std::unique_ptr<TracedCausticsPass> TracedCausticsPass::create(
 }
 
 bool TracedCausticsPass::run(const HostFrame& frame, std::string& error) {
+  return addTo(frame.target, error);
+}
+
+bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   const postfx::FrameDesc& desc = plugin_->lastFrame();
   const postfx::CreateDesc& create = plugin_->createDesc();
   if (desc.camera.position != sceneOrigin_) {
@@ -46,7 +50,6 @@ bool TracedCausticsPass::run(const HostFrame& frame, std::string& error) {
     result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);
 
   // Add the traced light into the host's HDR target, where the plugin would have added its own.
-  const GLuint target = frame.target;
   const size_t n = receivers_.size();
   std::vector<glm::vec4> radiance(n);
   glGetTextureImage(target, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)),

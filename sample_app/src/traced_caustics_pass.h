@@ -30,6 +30,10 @@ class TracedCausticsPass {
 
   // Call right after the plugin's own pass, inside the frame.
   bool run(const HostFrame& frame, std::string& error);
+  // The same into `target` (RGBA, float-readable), after the frame: the plugin's last frame
+  // (its G-buffer and water texture) must still be the one rendered. The temporal-stability
+  // measurement isolates the traced light this way, in a cleared target of its own.
+  bool addTo(GLuint target, std::string& error);
 
   // After run(): the trace and the receivers it was gathered on.
   const reference::FrameTraceResult& result() const { return result_; }

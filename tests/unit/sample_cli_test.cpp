@@ -396,6 +396,18 @@ TEST_F(SampleCli, FramesWithTimeFrozenChangeOnlyWithTheCamera) {
   expectChangeFollowsTheStep("--freeze-time --camera-velocity 0.2,0,-0.1");
 }
 
+// report --only names a section (issue 19 item 3: 'stability', the temporal-stability table);
+// another name fails before any work, with one line and no report directory.
+TEST_F(SampleCli, ReportOnlyUnknownSection) {
+  const fs::path out = dir_ / "report_dir";
+  const RunResult result = runSample("report --only timing --out " + out.string(), dir_);
+  EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+  EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1)
+      << result.stderrText;
+  EXPECT_NE(result.stderrText.find("stability"), std::string::npos) << result.stderrText;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(SampleCli, RenderWritesAReadablePng) {
   const fs::path out = dir_ / "ok.png";
   const RunResult result =
