@@ -186,21 +186,22 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
   ensureMap(s.mapSize);
   // Storage the driver refused (GL_OUT_OF_MEMORY) leaves a map without levels and its
   // framebuffer incomplete: found here, before any pass adds light.
-  for (GLuint history : history_) {
+  const struct {
+    GLuint texture;
+    int size;
+    const char* what;
+    const char* setting;
+  } made[] = {{history_[0], s.mapSize, "the caustic map", "mapSize"},
+              {history_[1], s.mapSize, "the caustic map", "mapSize"},
+              {landings_, s.gridSize, "the ray landings", "gridSize"}};
+  for (const auto& m : made) {
     GLint width = 0;
-    glGetTextureLevelParameteriv(history, 0, GL_TEXTURE_WIDTH, &width);
-    if (width != s.mapSize) {
-      error = "objectCaustics: the driver could not allocate the caustic map (mapSize " +
-              std::to_string(s.mapSize) + ")";
+    glGetTextureLevelParameteriv(m.texture, 0, GL_TEXTURE_WIDTH, &width);
+    if (width != m.size) {
+      error = std::string("objectCaustics: the driver could not allocate ") + m.what + " (" +
+              m.setting + " " + std::to_string(m.size) + ")";
       return Result::OutOfMemory;
     }
-  }
-  GLint landingWidth = 0;
-  glGetTextureLevelParameteriv(landings_, 0, GL_TEXTURE_WIDTH, &landingWidth);
-  if (landingWidth != s.gridSize) {
-    error = "objectCaustics: the driver could not allocate the ray landings (gridSize " +
-            std::to_string(s.gridSize) + ")";
-    return Result::OutOfMemory;
   }
   for (GLuint fbo : {frontFbo_, backFbo_, splatFbo_}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {

@@ -1,14 +1,14 @@
 #include "stability_rows.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
-#include <atomic_file.h>
 #include <plugin_setup.h>
 #include <renderer.h>
 #include <scene_setup.h>
 #include <view_flags.h>
+
+#include "table_text.h"
 
 namespace ocean::report {
 namespace {
@@ -17,26 +17,6 @@ std::string number(double value, int digits) {
   char text[48];
   std::snprintf(text, sizeof text, "%.*g", digits, value);
   return text;
-}
-
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
-bool writeText(const std::string& path, const std::string& text, std::string& error) {
-  return writeThroughTemporary(
-      path,
-      [&](const std::string& temporary, std::string& why) {
-        std::ofstream file(temporary, std::ios::binary);
-        file << text;
-        file.close();
-        if (!file) why = "cannot write '" + path + "'";
-        return bool(file);
-      },
-      error);
 }
 
 constexpr StabilityPass kPasses[] = {

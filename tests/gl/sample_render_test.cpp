@@ -13,22 +13,13 @@
 #include "options.h"
 #include "plugin_setup.h"
 #include "renderer.h"
+#include "sample_default_scene.h"
 #include "scene_setup.h"
 
 namespace {
 
 class SampleRender : public testsupport::GlTest, public ::testing::WithParamInterface<const char*> {
  protected:
-  static const ocean_scene::Model& scene() {
-    static const ocean_scene::Model model = [] {
-      ocean_scene::Model built;
-      std::string error;
-      EXPECT_TRUE(ocean::buildScene({}, built, error)) << error;
-      return built;
-    }();
-    return model;
-  }
-
   struct Frame {
     std::vector<uint8_t> color;
     std::vector<float> radiance;
@@ -43,7 +34,7 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     settings.height = 144;
     settings.waterResolution = 64;
     settings.shadowMapSize = 512;
-    auto renderer = ocean::Renderer::create(settings, scene(), error);
+    auto renderer = ocean::Renderer::create(settings, sampletest::defaultScene(), error);
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
     ocean::Options options;

@@ -18,6 +18,7 @@
 #include "options.h"
 #include "plugin_setup.h"
 #include "renderer.h"
+#include "sample_default_scene.h"
 #include "scene_setup.h"
 #include "stability_sequence.h"
 #include "temporal_stability.h"
@@ -25,16 +26,6 @@
 namespace {
 
 using ocean::StabilityPass;
-
-const ocean_scene::Model& scene() {
-  static const ocean_scene::Model model = [] {
-    ocean_scene::Model built;
-    std::string error;
-    EXPECT_TRUE(ocean::buildScene({}, built, error)) << error;
-    return built;
-  }();
-  return model;
-}
 
 // The measure itself, on images with known answers.
 TEST(AddedLightChange, KnownAnswers) {
@@ -67,12 +58,12 @@ class StabilityFixture : public testsupport::GlTest {
     settings.height = height;
     settings.waterResolution = 64;
     settings.shadowMapSize = 512;
-    renderer_ = ocean::Renderer::create(settings, scene(), error);
+    renderer_ = ocean::Renderer::create(settings, sampletest::defaultScene(), error);
     ASSERT_TRUE(renderer_) << error;
     plugin_ = ocean::PluginSetup::create(*renderer_, ocean::Options{}, false, error);
     ASSERT_TRUE(plugin_) << error;
-    host_ = std::make_unique<ocean::StabilityHost>(
-        ocean::StabilityHost{*renderer_, *plugin_, scene(), {preset.camera, preset.sun, 12.5}});
+    host_ = std::make_unique<ocean::StabilityHost>(ocean::StabilityHost{
+        *renderer_, *plugin_, sampletest::defaultScene(), {preset.camera, preset.sun, 12.5}});
   }
 
   ocean::AddedLightChange passChange(StabilityPass pass, const ocean::StabilityMotion& motion,
