@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
@@ -19,14 +20,8 @@ class GodRaysPass {
  public:
   static constexpr GLuint kReducedUnit = 5;
 
-  GodRaysPass() = default;
-  GodRaysPass(const GodRaysPass&) = delete;
-  GodRaysPass& operator=(const GodRaysPass&) = delete;
-  ~GodRaysPass();
-
   // Builds the programs (with the caustics pass's #defines) and GL objects (DSA: binds nothing).
   Result init(const std::string& defines, std::string& error);
-  void release();
 
   // Attaches the host target, sizes the reduced-resolution texture when used, uploads the block.
   Result prepare(const FrameDesc& frame, int width, int height, const shared::GodRaysBlock& block,
@@ -38,8 +33,10 @@ class GodRaysPass {
   void ensureReduced(int width, int height);
 
   glkit::Program full_, reduced_, upsample_;
-  GLuint framebuffer_ = 0, reducedFramebuffer_ = 0, uniformBuffer_ = 0;
-  GLuint reducedTexture_ = 0, reducedSampler_ = 0;
+  glkit::Framebuffer framebuffer_, reducedFramebuffer_;
+  glkit::Buffer uniformBuffer_;
+  glkit::Texture reducedTexture_;
+  glkit::Sampler reducedSampler_;
   int reducedWidth_ = 0, reducedHeight_ = 0;
 };
 
