@@ -10,6 +10,11 @@
 
 #include "shader_library.h"
 
+// bindState binds the G-buffer's three samplers in one call.
+static_assert(POSTFX_UNIT_NORMAL == POSTFX_UNIT_DEPTH + 1 &&
+                  POSTFX_UNIT_ALBEDO == POSTFX_UNIT_DEPTH + 2,
+              "the G-buffer units are consecutive");
+
 namespace postfx::detail {
 
 std::string shaderDefines(const CreateDesc& desc) {
@@ -172,32 +177,32 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   glBindVertexArray(vertexArray_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id());
 
-  glBindTextureUnit(kDepthUnit, frame.depth.texture);
-  glBindTextureUnit(kNormalUnit, frame.normal.texture);
-  glBindTextureUnit(kAlbedoUnit, frame.albedo.texture);
+  glBindTextureUnit(POSTFX_UNIT_DEPTH, frame.depth.texture);
+  glBindTextureUnit(POSTFX_UNIT_NORMAL, frame.normal.texture);
+  glBindTextureUnit(POSTFX_UNIT_ALBEDO, frame.albedo.texture);
   const GLuint point = pointSampler_.id();
   const GLuint pointSamplers[] = {point, point, point};
-  glBindSamplers(kDepthUnit, 3, pointSamplers);
+  glBindSamplers(POSTFX_UNIT_DEPTH, 3, pointSamplers);
   // Without water (object caustics only) nothing samples the unit; binding 0 there would unbind
   // every target of the unit, which the state guard does not restore.
   if (frame.water.texture.texture != 0) {
-    glBindTextureUnit(kWaterUnit, frame.water.texture.texture);
-    glBindSampler(kWaterUnit,
+    glBindTextureUnit(POSTFX_UNIT_WATER, frame.water.texture.texture);
+    glBindSampler(POSTFX_UNIT_WATER,
                   textures.waterMipmapped ? waterMipSampler_.id() : waterLinearSampler_.id());
   }
   if (hasFeature(desc_.features, Feature::ShadowMask)) {
-    glBindTextureUnit(kShadowUnit, frame.shadow.depth.texture);
-    glBindSampler(kShadowUnit, frame.shadow.depthConvention == DepthConvention::ReverseZ
-                                   ? shadowReverseSampler_.id()
-                                   : shadowForwardSampler_.id());
+    glBindTextureUnit(POSTFX_UNIT_SHADOW, frame.shadow.depth.texture);
+    glBindSampler(POSTFX_UNIT_SHADOW, frame.shadow.depthConvention == DepthConvention::ReverseZ
+                                          ? shadowReverseSampler_.id()
+                                          : shadowForwardSampler_.id());
   }
   if (irradiance != 0) {
-    glBindTextureUnit(kIrradianceUnit, irradiance);
-    glBindSampler(kIrradianceUnit, irradianceSampler_.id());
+    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, irradiance);
+    glBindSampler(POSTFX_UNIT_IRRADIANCE, irradianceSampler_.id());
   }
   if (tile != 0) {  // the same unit: the two models never run together
-    glBindTextureUnit(kIrradianceUnit, tile);
-    glBindSampler(kIrradianceUnit, tileSampler_.id());
+    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, tile);
+    glBindSampler(POSTFX_UNIT_IRRADIANCE, tileSampler_.id());
   }
 }
 

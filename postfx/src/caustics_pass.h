@@ -23,15 +23,6 @@ std::string shaderDefines(const CreateDesc& desc);
 
 class CausticsPass {
  public:
-  enum Unit : GLuint {
-    kDepthUnit = 0,
-    kNormalUnit,
-    kAlbedoUnit,
-    kWaterUnit,
-    kShadowUnit,
-    kIrradianceUnit
-  };
-
   // Builds the programs for the context's features and the GL objects (DSA: binds nothing).
   Result init(const CreateDesc& desc, std::string& error);
 

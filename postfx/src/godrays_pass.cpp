@@ -83,8 +83,8 @@ void GodRaysPass::draw(const FrameDesc& frame, int width, int height) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
   glEnablei(GL_BLEND, 0);
-  glBindTextureUnit(kReducedUnit, reducedTexture_.id());
-  glBindSampler(kReducedUnit, reducedSampler_.id());
+  glBindTextureUnit(POSTFX_UNIT_GODRAYS_REDUCED, reducedTexture_.id());
+  glBindSampler(POSTFX_UNIT_GODRAYS_REDUCED, reducedSampler_.id());
   glUseProgram(upsample_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -3,7 +3,7 @@
 // at half or quarter resolution into a plugin-owned RGBA16F texture (alpha = pixel distance)
 // followed by a depth-aware upsample that adds into the target. Runs under the state
 // CausticsPass::bindState set (units, samplers, caustics block, blend); adds its own block,
-// framebuffers and unit 5.
+// framebuffers and the reduced march's unit (POSTFX_UNIT_GODRAYS_REDUCED).
 #include <epoxy/gl.h>
 
 #include <string>
@@ -18,8 +18,6 @@ namespace postfx::detail {
 
 class GodRaysPass {
  public:
-  static constexpr GLuint kReducedUnit = 5;
-
   // Builds the programs (with the caustics pass's #defines) and GL objects (DSA: binds nothing).
   Result init(const std::string& defines, std::string& error);
 

@@ -135,7 +135,7 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
                      static_cast<float>(l.resolution));
   glBindVertexArray(vertexArray_.id());
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindTextureUnit(kGridPointUnit, gridPointView_.id());
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPointView_.id());
   const int texelsPerSide = std::max(textures.water.width, textures.water.height);
   const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
   for (int k = 0; k < l.layers; ++k) {
@@ -154,11 +154,11 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
     glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
                        static_cast<float>(l.cell), static_cast<float>(l.depth[k]));
     glUseProgram(compute);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStorageBinding, gridPoints_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.id());
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStorageBinding, slot.buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, slot.buffer.id());
     glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
     glUseProgram(triangles_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);

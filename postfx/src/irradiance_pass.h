@@ -28,10 +28,6 @@ namespace postfx::detail {
 
 class IrradiancePass {
  public:
-  // SSBO binding of the grid points (compute step), then of the clamp count (draws).
-  static constexpr GLuint kStorageBinding = 0;
-  static constexpr GLuint kGridPointUnit = 6;  // texture unit of the grid points' buffer view
-
   Result init(const std::string& defines, std::string& error);
   bool ready() const { return triangles_.id() != 0; }
 
@@ -44,7 +40,7 @@ class IrradiancePass {
   // Records the pass: clears and fills every layer. Expects the caustics pass's fixed-function
   // state (blend ONE, ONE on draw buffer 0, no cull/scissor) and the water texture bound on
   // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO binding 0,
-  // texture unit kGridPointUnit, and enables GL_PROGRAM_POINT_SIZE.
+  // texture unit POSTFX_UNIT_GRID_POINTS, and enables GL_PROGRAM_POINT_SIZE.
   void draw(const FrameDesc& frame, const ValidatedTextures& textures);
 
   GLuint texture() const { return texture_.id(); }

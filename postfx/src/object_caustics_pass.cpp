@@ -6,11 +6,24 @@
 #include "host_target.h"
 #include "object_caustics_state.h"
 #include "shader_library.h"
+#include "shared_math.h"
 
 namespace postfx::detail {
 namespace {
 
-enum Unit : GLuint { kUnit0 = 0, kUnit1, kUnit2, kUnit3, kUnit4 };
+// Each step binds its textures and samplers in one call from its first unit.
+static_assert(POSTFX_OBJECT_UNIT_FRONT_NORMAL == POSTFX_OBJECT_UNIT_FRONT_POSITION + 1 &&
+                  POSTFX_OBJECT_UNIT_BACK_POSITION == POSTFX_OBJECT_UNIT_FRONT_POSITION + 2 &&
+                  POSTFX_OBJECT_UNIT_BACK_NORMAL == POSTFX_OBJECT_UNIT_FRONT_POSITION + 3 &&
+                  POSTFX_OBJECT_UNIT_SPLAT_RECEIVER_DEPTH == POSTFX_OBJECT_UNIT_FRONT_POSITION + 4,
+              "the splat's units are consecutive");
+static_assert(POSTFX_OBJECT_UNIT_HISTORY_MAP == POSTFX_OBJECT_UNIT_CURRENT_MAP + 1,
+              "the temporal filter's units are consecutive");
+static_assert(POSTFX_UNIT_NORMAL == POSTFX_UNIT_DEPTH + 1 &&
+                  POSTFX_UNIT_ALBEDO == POSTFX_UNIT_DEPTH + 2 &&
+                  POSTFX_OBJECT_UNIT_CAUSTIC_MAP == POSTFX_UNIT_DEPTH + 3 &&
+                  POSTFX_OBJECT_UNIT_RECEIVER_DEPTH == POSTFX_UNIT_DEPTH + 4,
+              "the composite's units are consecutive");
 // Uniform locations of object_caustics_caster.* and object_caustics_temporal.frag.
 enum CasterUniform : GLint {
   kModelToAnchor = 0,
@@ -216,10 +229,10 @@ void ObjectCausticsPass::drawSplats(const FrameDesc& frame) {
   glEnable(GL_PROGRAM_POINT_SIZE);
   const GLuint textures[] = {frontPosition_.id(), frontNormal_.id(), backPosition_.id(),
                              backNormal_.id(), frame.objectCaustics.receivers.depth.texture};
-  glBindTextures(kUnit0, 5, textures);
+  glBindTextures(POSTFX_OBJECT_UNIT_FRONT_POSITION, 5, textures);
   const GLuint point = pointSampler_.id(), linear = linearSampler_.id();
   const GLuint samplers[] = {point, point, point, point, linear};
-  glBindSamplers(kUnit0, 5, samplers);
+  glBindSamplers(POSTFX_OBJECT_UNIT_FRONT_POSITION, 5, samplers);
   glBindVertexArray(emptyVao_.id());
   glUseProgram(splat_.id());
   // A dispersed caster needs one ray per colour channel: three instances, the shader drops the
@@ -241,9 +254,9 @@ void ObjectCausticsPass::filterTemporally(const FrameDesc& frame) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, temporalFbo_.id());
   glDisablei(GL_BLEND, 0);
   const GLuint textures[] = {splatMap_.id(), history_[historyIndex_].id()};
-  glBindTextures(kUnit0, 2, textures);
+  glBindTextures(POSTFX_OBJECT_UNIT_CURRENT_MAP, 2, textures);
   const GLuint samplers[] = {pointSampler_.id(), pointSampler_.id()};
-  glBindSamplers(kUnit0, 2, samplers);
+  glBindSamplers(POSTFX_OBJECT_UNIT_CURRENT_MAP, 2, samplers);
   glProgramUniform1f(temporal_.id(), kHistoryWeight, historyValid_ ? s.temporalWeight : 0.0f);
   glUseProgram(temporal_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -261,10 +274,10 @@ void ObjectCausticsPass::composite(const FrameDesc& frame, int width, int height
   glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
   const GLuint textures[] = {frame.depth.texture, frame.normal.texture, frame.albedo.texture,
                              map_.texture, frame.objectCaustics.receivers.depth.texture};
-  glBindTextures(kUnit0, 5, textures);
+  glBindTextures(POSTFX_UNIT_DEPTH, 5, textures);
   const GLuint point = pointSampler_.id(), linear = linearSampler_.id();
   const GLuint samplers[] = {point, point, point, linear, point};
-  glBindSamplers(kUnit0, 5, samplers);
+  glBindSamplers(POSTFX_UNIT_DEPTH, 5, samplers);
   glUseProgram(composite_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);

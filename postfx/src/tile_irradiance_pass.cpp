@@ -111,7 +111,7 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
                      static_cast<float>(perPoint * double(shared::TILE_FIXED_POINT)));
   glProgramUniform1i(scatter, 4, l.layers);
   glProgramUniform1fv(scatter, 5, shared::TILE_MAX_LAYERS, depths);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulatorBinding, accumulators_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_ACCUMULATORS, accumulators_.id());
   glUseProgram(scatter);
   const GLuint pointGroups = static_cast<GLuint>((points + 7) / 8);
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
@@ -127,7 +127,8 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   const GLuint resolve = resolve_.id();
   const float clamp = std::min(frame.caustics.maxIrradiance, shared::TILE_MAX_IRRADIANCE);
   glUseProgram(resolve);
-  glBindImageTexture(kImageUnit, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                     GL_RGBA16F);
   const GLuint texelGroups = static_cast<GLuint>((l.resolution + 7) / 8);
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
     if (l.slot[c] < 0) continue;
