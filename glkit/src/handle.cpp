@@ -3,26 +3,8 @@
 
 namespace glkit {
 
-void deleteTexture(GLuint name) {
-  glDeleteTextures(1, &name);
-}
-void deleteFramebuffer(GLuint name) {
-  glDeleteFramebuffers(1, &name);
-}
-void deleteBuffer(GLuint name) {
-  glDeleteBuffers(1, &name);
-}
-void deleteSampler(GLuint name) {
-  glDeleteSamplers(1, &name);
-}
 void deleteProgram(GLuint name) {
   glDeleteProgram(name);
-}
-void deleteQuery(GLuint name) {
-  glDeleteQueries(1, &name);
-}
-void deleteVertexArray(GLuint name) {
-  glDeleteVertexArrays(1, &name);
 }
 void deleteSync(GLsync sync) {
   glDeleteSync(sync);

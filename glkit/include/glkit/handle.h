@@ -10,13 +10,12 @@
 
 namespace glkit {
 
-void deleteTexture(GLuint name);
-void deleteFramebuffer(GLuint name);
-void deleteBuffer(GLuint name);
-void deleteSampler(GLuint name);
+// glDelete* of arrays (glDeleteTextures, ...) applied to one name.
+template <auto& glDeleteNames>
+void deleteName(GLuint name) {
+  glDeleteNames(1, &name);
+}
 void deleteProgram(GLuint name);
-void deleteQuery(GLuint name);
-void deleteVertexArray(GLuint name);
 void deleteSync(GLsync sync);
 
 // One owned name; Name{} (0, or a null sync) owns nothing.
@@ -52,12 +51,12 @@ class Handle {
   Name name_{};
 };
 
-using Texture = Handle<GLuint, deleteTexture>;
-using Framebuffer = Handle<GLuint, deleteFramebuffer>;
-using Buffer = Handle<GLuint, deleteBuffer>;
-using Sampler = Handle<GLuint, deleteSampler>;
-using Query = Handle<GLuint, deleteQuery>;
-using VertexArray = Handle<GLuint, deleteVertexArray>;
+using Texture = Handle<GLuint, deleteName<glDeleteTextures>>;
+using Framebuffer = Handle<GLuint, deleteName<glDeleteFramebuffers>>;
+using Buffer = Handle<GLuint, deleteName<glDeleteBuffers>>;
+using Sampler = Handle<GLuint, deleteName<glDeleteSamplers>>;
+using Query = Handle<GLuint, deleteName<glDeleteQueries>>;
+using VertexArray = Handle<GLuint, deleteName<glDeleteVertexArrays>>;
 using Fence = Handle<GLsync, deleteSync>;
 
 // DSA creation (binds nothing), each labelled for debuggers (an empty label: none).
