@@ -24,10 +24,8 @@ std::string infoLog(GLuint object, bool isProgram) {
 
 }  // namespace
 
-bool buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStage> stages,
-                  std::string_view defines, std::string_view label, GLuint& program,
-                  std::string& error) {
-  program = 0;
+Program buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStage> stages,
+                     std::string_view defines, std::string_view label, std::string& error) {
   std::vector<GLuint> shaders;
   auto cleanup = [&shaders] {
     for (GLuint shader : shaders) glDeleteShader(shader);
@@ -36,7 +34,7 @@ bool buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStag
     std::string source;
     if (!library.preprocess(stage.path, defines, source, error)) {
       cleanup();
-      return false;
+      return Program();
     }
     const GLuint shader = glCreateShader(stage.type);
     shaders.push_back(shader);
@@ -48,7 +46,7 @@ bool buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStag
     if (ok != GL_TRUE) {
       error = std::string(stage.path) + ": " + infoLog(shader, false);
       cleanup();
-      return false;
+      return Program();
     }
   }
   const GLuint linked = glCreateProgram();
@@ -61,24 +59,10 @@ bool buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStag
   if (ok != GL_TRUE) {
     error = std::string(label) + ": link failed: " + infoLog(linked, true);
     glDeleteProgram(linked);
-    return false;
+    return Program();
   }
   glkit::label(GL_PROGRAM, linked, label);
-  program = linked;
-  return true;
-}
-
-Program& Program::operator=(Program&& other) noexcept {
-  if (this != &other) {
-    if (id_ != 0) glDeleteProgram(id_);
-    id_ = other.id_;
-    other.id_ = 0;
-  }
-  return *this;
-}
-
-Program::~Program() {
-  if (id_ != 0) glDeleteProgram(id_);
+  return Program(linked);
 }
 
 void label(GLenum identifier, GLuint name, std::string_view text) {

@@ -3,7 +3,8 @@
 
 namespace glkit {
 
-GLuint createTexture2D(GLenum format, int width, int height, GLenum filter, std::string_view name) {
+Texture createTexture2D(GLenum format, int width, int height, GLenum filter,
+                        std::string_view name) {
   GLuint texture = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &texture);
   glTextureStorage2D(texture, 1, format, width, height);
@@ -12,10 +13,10 @@ GLuint createTexture2D(GLenum format, int width, int height, GLenum filter, std:
   glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   label(GL_TEXTURE, texture, name);
-  return texture;
+  return Texture(texture);
 }
 
-GLuint createSampler(GLenum minFilter, GLenum magFilter, GLenum wrap, std::string_view name) {
+Sampler createSampler(GLenum minFilter, GLenum magFilter, GLenum wrap, std::string_view name) {
   GLuint sampler = 0;
   glCreateSamplers(1, &sampler);
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GLint(minFilter));
@@ -24,7 +25,7 @@ GLuint createSampler(GLenum minFilter, GLenum magFilter, GLenum wrap, std::strin
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GLint(wrap));
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
   label(GL_SAMPLER, sampler, name);
-  return sampler;
+  return Sampler(sampler);
 }
 
 }  // namespace glkit

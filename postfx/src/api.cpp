@@ -13,13 +13,13 @@
 #include "context.h"
 #include "draw_state_guard.h"
 #include "frame_constants.h"
+#include "frame_plan.h"
 #include "gl_state_guard.h"
 #include "godrays_constants.h"
 #include "memory_estimate.h"
 #include "object_caustics_frame.h"
 #include "object_caustics_validation.h"
 #include "validation.h"
-#include "visibility.h"
 
 namespace postfx {
 namespace {
@@ -37,228 +37,229 @@ class DebugGroup {
   DebugGroup& operator=(const DebugGroup&) = delete;
 };
 
-// Sun above the horizon and some of the view frustum under the water: the common condition of
-// both lighting passes.
-bool underwaterLit(const Context& context, const FrameDesc& frame) {
-  if (!(frame.sun.direction.y > 0.0)) return false;  // at or below the horizon
-  return detail::frustumReachesBelowWater(detail::viewToWorldRotation(frame.camera.view),
-                                          frame.camera.projection, context.desc.depthConvention,
-                                          frame.water.level - frame.camera.position.y);
-}
-
-bool causticsHaveWork(const Context& context, const FrameDesc& frame) {
-  return hasFeature(context.desc.features, Feature::Caustics) && frame.caustics.enabled &&
-         underwaterLit(context, frame);
-}
-
-bool godRaysHaveWork(const Context& context, const FrameDesc& frame) {
-  return hasFeature(context.desc.features, Feature::GodRays) && frame.godRays.enabled &&
-         frame.godRays.intensity > 0.0f && underwaterLit(context, frame);
-}
-
-// Casters given, sun above the horizon and some caster inside the receiver map's view: else
-// nothing can land anywhere.
-bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
-  const ObjectCausticsFrame& o = frame.objectCaustics;
-  return hasFeature(context.desc.features, Feature::ObjectCaustics) && o.settings.enabled &&
-         o.casterCount > 0 && o.settings.intensity > 0.0f && frame.sun.direction.y > 0.0 &&
-         detail::castersInReceiverView(o);
-}
-
-// The object caustics, timed as their own pass, after the seabed caustics and god rays.
-void drawObjectCaustics(Context& context, const FrameDesc& frame, int width, int height) {
-  DebugGroup group("postfx.object_caustics");
-  if (hasFeature(context.desc.features, testing::BenchmarkFloor)) glFinish();
-  context.timers.begin(Pass::ObjectCaustics);
-  context.objectCaustics.draw(frame, width, height);
-  context.timers.end(Pass::ObjectCaustics);
-}
-
 Result refuse(std::string& error, const char* message) {
   error = message;
   return Result::InvalidArgument;
 }
 
-Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
-  std::string& error = context.error;
+// Everything dispatch accepts before it looks at the frame's work: values, textures, casters
+// and the host's draw state.
+Result validateFrame(const Context& context, const FrameDesc& frame,
+                     detail::ValidatedTextures& textures, std::string& error) {
   Result r = detail::validateFrameValues(context.desc, frame, error);
   if (r != Result::Ok) return r;
-  detail::ValidatedTextures textures;
   r = detail::validateFrameTextures(context.desc, frame, textures, error);
   if (r != Result::Ok) return r;
   if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
     r = detail::validateObjectCaustics(frame, error);
     if (r != Result::Ok) return r;
   }
-  r = detail::checkHostDrawState(error);
-  if (r != Result::Ok) return r;
+  return detail::checkHostDrawState(error);
+}
 
+// Every constant the GPU will see this frame.
+struct FrameBlocks {
+  shared::CausticsBlock caustics{};
+  shared::GodRaysBlock godRays{};
+  // The one piece of per-frame state that shapes the image: a copy moves with this frame and is
+  // kept only once the frame has been drawn, so a refused frame leaves no trace.
+  detail::GodRayGridPivot pivot;
+  detail::ObjectLightFrame light;
+  shared::ObjectCausticsBlock objects{};
+};
+
+// Builds and checks the blocks before any GL work.
+Result buildBlocks(const Context& context, const FrameDesc& frame, const detail::FramePlan& plan,
+                   const detail::ValidatedTextures& textures, FrameBlocks& blocks,
+                   std::string& error) {
   const int width = textures.width, height = textures.height;
-  const bool caustics = causticsHaveWork(context, frame);
-  const bool godRays = godRaysHaveWork(context, frame);
-  const bool physical = caustics && detail::physicalCausticsActive(context.desc, frame);
-  const bool tile = caustics && detail::tileIrradianceActive(frame);
-  int tileVariant = 0;  // the caustics program's TileIrradiance variant; 0: another model
-  const bool floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
-  const bool objects = objectCausticsHaveWork(context, frame);
-  // The floor runs whenever some timed pass does, so that every pass has its ratio.
-  const bool fullScreen = caustics || godRays || (objects && floor);
-
-  // Every constant the GPU will see is built and checked before any GL work. The god-ray pivot
-  // is the one piece of per-frame state that shapes the image: a copy moves with this frame and
-  // is kept only once the frame has been drawn, so a refused frame leaves no trace.
-  const shared::CausticsBlock block =
-      detail::buildCausticsBlock(context.desc, frame, width, height, textures.water);
-  if (fullScreen && !detail::allFinite(block))
+  blocks.caustics = detail::buildCausticsBlock(context.desc, frame, width, height, textures.water);
+  if (plan.fullScreen && !detail::allFinite(blocks.caustics))
     return refuse(error,
                   "frame: a caustics constant overflows the GPU's float (camera.projection, or "
                   "shadow.worldToLightClip about camera.position, has entries too large)");
-  detail::GodRayGridPivot pivot = context.godRayPivot;
-  shared::GodRaysBlock godBlock{};
-  if (godRays) {
-    godBlock = detail::buildGodRaysBlock(
-        frame, width, height, pivot,
+  blocks.pivot = context.godRayPivot;
+  if (plan.godRays) {
+    blocks.godRays = detail::buildGodRaysBlock(
+        frame, width, height, blocks.pivot,
         context.godRaySampling == testing::GodRaySampling::UniformAlongRay);
-    if (!detail::allFinite(godBlock))
+    if (!detail::allFinite(blocks.godRays))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
-  detail::ObjectLightFrame light;
-  shared::ObjectCausticsBlock objectBlock{};
-  if (objects) {
-    light = detail::fitObjectLightFrame(frame);
-    objectBlock = detail::buildObjectCausticsBlock(context.desc, frame, light, width, height);
-    if (!detail::allFinite(objectBlock) || !detail::casterMatricesFinite(frame, light))
+  if (plan.objects) {
+    blocks.light = detail::fitObjectLightFrame(frame);
+    blocks.objects =
+        detail::buildObjectCausticsBlock(context.desc, frame, blocks.light, width, height);
+    if (!detail::allFinite(blocks.objects) || !detail::casterMatricesFinite(frame, blocks.light))
       return refuse(error,
                     "frame: an object-caustics constant overflows the GPU's float "
                     "(objectCaustics.receivers.worldToLightClip or a caster's modelToWorld has "
                     "entries too large)");
   }
-  r = detail::checkFrameMemory(context.desc, frame, width, height,
-                               {caustics, godRays, physical, objects, tile}, error);
-  if (r != Result::Ok) return r;
-  if (tile) {  // built on first use; a failure changes nothing
-    if (!context.tileIrradianceReady) {
-      r = context.tileIrradiance.init(detail::shaderDefines(context.desc), error);
-      if (r != Result::Ok) return r;
-      context.tileIrradianceReady = true;
+  return Result::Ok;
+}
+
+// The TileIrradiance pre-pass, built on first use, and the caustics program's variant for this
+// frame's cascades (`variant`). A failure changes nothing.
+Result ensureTileIrradiance(Context& context, const FrameDesc& frame, int& variant,
+                            std::string& error) {
+  if (!context.tileIrradianceReady) {
+    const Result r = context.tileIrradiance.init(detail::shaderDefines(context.desc), error);
+    if (r != Result::Ok) return r;
+    context.tileIrradianceReady = true;
+  }
+  const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
+  return context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, variant, error);
+}
+
+// Our framebuffers hold the host's target only within the frame: every pass prepared lets go of
+// it on whatever way the frame ends (release() once drawn, else the destructor when a later
+// pass could not be prepared).
+class HeldTargets {
+ public:
+  explicit HeldTargets(Context& context) : context_(context) {}
+  ~HeldTargets() { release(); }
+  HeldTargets(const HeldTargets&) = delete;
+  HeldTargets& operator=(const HeldTargets&) = delete;
+
+  bool caustics = false, godRays = false;
+  void release() {
+    if (godRays) context_.godRays.finish();
+    if (caustics) context_.caustics.finish();
+    caustics = godRays = false;
+  }
+
+ private:
+  Context& context_;
+};
+
+// Allocates every resource the frame needs, and checks every framebuffer, before the first
+// pass adds light: a failure here leaves the target as it was.
+Result reserve(Context& context, const FrameDesc& frame, const detail::FramePlan& plan,
+               const detail::ValidatedTextures& textures, const FrameBlocks& blocks,
+               HeldTargets& held, std::string& error) {
+  Result r = Result::Ok;
+  if (plan.fullScreen) {
+    r = context.caustics.prepare(frame, textures, blocks.caustics, error);
+    if (r != Result::Ok) return r;
+    held.caustics = true;
+  }
+  if (plan.physical) {
+    r = context.irradiance.reserve(frame, error);
+    if (r != Result::Ok) return r;
+  }
+  if (plan.tile) {
+    r = context.tileIrradiance.reserve(frame, error);
+    if (r != Result::Ok) return r;
+  }
+  if (plan.godRays) {
+    r = context.godRays.prepare(frame, textures.width, textures.height, blocks.godRays, error);
+    if (r != Result::Ok) return r;
+    held.godRays = true;
+  }
+  if (plan.objects) r = context.objectCaustics.prepare(frame, blocks.light, blocks.objects, error);
+  return r;
+}
+
+// The frame's slot in the timers, closed on every way out of recording.
+class TimedFrame {
+ public:
+  explicit TimedFrame(detail::GpuTimers& timers) : timers_(timers) { timers_.beginFrame(); }
+  ~TimedFrame() { timers_.endFrame(); }
+  TimedFrame(const TimedFrame&) = delete;
+  TimedFrame& operator=(const TimedFrame&) = delete;
+
+ private:
+  detail::GpuTimers& timers_;
+};
+
+// One timed pass: its debug group, its timer queries around `work`.
+// Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass. Tile-based
+// and software rasterizers (llvmpipe) otherwise run consecutive draws interleaved per tile and
+// no query pair can separate them. This is the one place the plugin waits, and normal frames
+// never get here.
+template <typename Work>
+void timedPass(Context& context, const detail::FramePlan& plan, Pass pass, const char* group,
+               Work&& work) {
+  DebugGroup debugGroup(group);
+  if (plan.floor) glFinish();
+  context.timers.begin(pass);
+  work();
+  context.timers.end(pass);
+}
+
+// Records the planned passes into the host's target.
+void record(Context& context, const FrameDesc& frame, const detail::FramePlan& plan,
+            const detail::ValidatedTextures& textures, const FrameBlocks& blocks, int tileVariant,
+            HeldTargets& held) {
+  TimedFrame timedFrame(context.timers);
+  if (hasFeature(context.desc.features, Feature::PhysicalCaustics)) {
+    const double clamped = context.irradiance.pollClampCounts();
+    if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
+    if (!plan.physical && frame.caustics.model == CausticsModel::RayDeviation)
+      context.timers.setClampedFluxFraction(0.0);
+  }
+  for (int p = 0; p < kPassCount; ++p)
+    if (!plan.runs(Pass(p))) context.timers.markSkipped(Pass(p));
+  if (!plan.caustics) context.caustics.clearRaw(textures.width, textures.height);
+
+  if (plan.fullScreen) {
+    // The god rays draw under the caustics pass's state (its units, samplers and block); each
+    // pre-pass draws into its own framebuffer, then that state is set again with its result.
+    // Both pre-passes run before the floor and the caustics: both sample their result.
+    context.caustics.bindState(frame, textures, plan.physical ? context.irradiance.texture() : 0);
+    if (plan.physical) {
+      timedPass(context, plan, Pass::CausticsIrradiance, "postfx.caustics_irradiance",
+                [&] { context.irradiance.draw(frame, textures); });
+      context.caustics.bindState(frame, textures, context.irradiance.texture());
     }
-    const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
-    r = context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, tileVariant, error);
+    if (plan.tile) {
+      timedPass(context, plan, Pass::CausticsTileIrradiance, "postfx.caustics_tile_irradiance",
+                [&] { context.tileIrradiance.draw(frame, textures); });
+      context.caustics.bindState(frame, textures, 0, context.tileIrradiance.texture());
+    }
+    if (plan.floor)
+      timedPass(context, plan, Pass::Floor, "postfx.floor", [&] { context.caustics.drawFloor(); });
+    if (plan.caustics)
+      timedPass(context, plan, Pass::Caustics, "postfx.caustics",
+                [&] { context.caustics.drawCaustics(tileVariant); });
+    if (plan.godRays) {
+      timedPass(context, plan, Pass::GodRays, "postfx.god_rays",
+                [&] { context.godRays.draw(frame, textures.width, textures.height); });
+      context.godRayPivot = blocks.pivot;
+    }
+    held.release();
+  }
+  // Timed as their own pass, after the seabed caustics and god rays.
+  if (plan.objects)
+    timedPass(context, plan, Pass::ObjectCaustics, "postfx.object_caustics",
+              [&] { context.objectCaustics.draw(frame, textures.width, textures.height); });
+}
+
+Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
+  std::string& error = context.error;
+  detail::ValidatedTextures textures;
+  Result r = validateFrame(context, frame, textures, error);
+  if (r != Result::Ok) return r;
+  const detail::FramePlan plan = detail::planFrame(context, frame);
+  FrameBlocks blocks;
+  r = buildBlocks(context, frame, plan, textures, blocks, error);
+  if (r != Result::Ok) return r;
+  r = detail::checkFrameMemory(context.desc, frame, textures.width, textures.height, plan, error);
+  if (r != Result::Ok) return r;
+  int tileVariant = 0;  // the caustics program's TileIrradiance variant; 0: another model
+  if (plan.tile) {
+    r = ensureTileIrradiance(context, frame, tileVariant, error);
     if (r != Result::Ok) return r;
   }
 
   detail::GlStateGuard guard;
   detail::DrawStateGuard drawState;  // inside: both save the host's values
   DebugGroup group("postfx");
-  // Every resource the frame needs is allocated, and every framebuffer checked, before the
-  // first pass adds light: a failure here leaves the target as it was.
-  if (fullScreen) {
-    r = context.caustics.prepare(frame, textures, block, error);
-    if (r != Result::Ok) return r;
-  }
-  if (physical) {
-    r = context.irradiance.reserve(frame, error);
-    if (r != Result::Ok) {
-      context.caustics.finish();
-      return r;
-    }
-  }
-  if (tile) {
-    r = context.tileIrradiance.reserve(frame, error);
-    if (r != Result::Ok) {
-      context.caustics.finish();
-      return r;
-    }
-  }
-  if (godRays) {
-    r = context.godRays.prepare(frame, width, height, godBlock, error);
-    if (r != Result::Ok) {
-      context.caustics.finish();
-      return r;
-    }
-  }
-  if (objects) {
-    r = context.objectCaustics.prepare(frame, light, objectBlock, error);
-    if (r != Result::Ok) {
-      if (godRays) context.godRays.finish();
-      if (fullScreen) context.caustics.finish();
-      return r;
-    }
-  }
-
-  context.timers.beginFrame();
-  if (hasFeature(context.desc.features, Feature::PhysicalCaustics)) {
-    const double clamped = context.irradiance.pollClampCounts();
-    if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
-    if (!physical) {
-      context.timers.markSkipped(Pass::CausticsIrradiance);
-      if (frame.caustics.model == CausticsModel::RayDeviation)
-        context.timers.setClampedFluxFraction(0.0);
-    }
-  }
-  if (!tile) context.timers.markSkipped(Pass::CausticsTileIrradiance);
-  if (!caustics) {
-    context.timers.markSkipped(Pass::Caustics);
-    context.caustics.clearRaw(width, height);
-  }
-  if (!godRays) context.timers.markSkipped(Pass::GodRays);
-  if (!objects) context.timers.markSkipped(Pass::ObjectCaustics);
-  if (!fullScreen && floor) context.timers.markSkipped(Pass::Floor);
-
-  if (fullScreen) {
-    // The god rays draw under the caustics pass's state (its units, samplers and block).
-    const GLuint irradiance = physical ? context.irradiance.texture() : 0;
-    context.caustics.bindState(frame, textures, irradiance);
-    if (physical) {
-      // Before the floor and the caustics: both sample its result. Draws into its own
-      // framebuffer, then the caustics pass's state is set again.
-      DebugGroup irradianceGroup("postfx.caustics_irradiance");
-      if (floor) glFinish();
-      context.timers.begin(Pass::CausticsIrradiance);
-      context.irradiance.draw(frame, textures);
-      context.timers.end(Pass::CausticsIrradiance);
-      context.caustics.bindState(frame, textures, context.irradiance.texture());
-    }
-    if (tile) {
-      // Before the floor and the caustics, like the window model's irradiance.
-      DebugGroup tileGroup("postfx.caustics_tile_irradiance");
-      if (floor) glFinish();
-      context.timers.begin(Pass::CausticsTileIrradiance);
-      context.tileIrradiance.draw(frame, textures);
-      context.timers.end(Pass::CausticsTileIrradiance);
-      context.caustics.bindState(frame, textures, 0, context.tileIrradiance.texture());
-    }
-    // Benchmark mode only (BenchmarkFloor): the GPU is drained before each timed pass.
-    // Tile-based and software rasterizers (llvmpipe) otherwise run both draws interleaved per
-    // tile and no query pair can separate them. This is the one place the plugin waits, and
-    // normal frames never get here.
-    if (floor) {
-      DebugGroup floorGroup("postfx.floor");
-      glFinish();
-      context.timers.begin(Pass::Floor);
-      context.caustics.drawFloor();
-      context.timers.end(Pass::Floor);
-    }
-    if (caustics) {
-      DebugGroup causticsGroup("postfx.caustics");
-      if (floor) glFinish();
-      context.timers.begin(Pass::Caustics);
-      context.caustics.drawCaustics(tileVariant);
-      context.timers.end(Pass::Caustics);
-    }
-    if (godRays) {
-      DebugGroup godRaysGroup("postfx.god_rays");
-      if (floor) glFinish();
-      context.timers.begin(Pass::GodRays);
-      context.godRays.draw(frame, width, height);
-      context.timers.end(Pass::GodRays);
-      context.godRays.finish();
-      context.godRayPivot = pivot;
-    }
-    context.caustics.finish();
-  }
-  if (objects) drawObjectCaustics(context, frame, width, height);
-  context.timers.endFrame();
+  HeldTargets held(context);
+  r = reserve(context, frame, plan, textures, blocks, held, error);
+  if (r != Result::Ok) return r;
+  record(context, frame, plan, textures, blocks, tileVariant, held);
   return Result::Ok;
 }
 

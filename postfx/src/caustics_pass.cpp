@@ -10,6 +10,11 @@
 
 #include "shader_library.h"
 
+// bindState binds the G-buffer's three samplers in one call.
+static_assert(POSTFX_UNIT_NORMAL == POSTFX_UNIT_DEPTH + 1 &&
+                  POSTFX_UNIT_ALBEDO == POSTFX_UNIT_DEPTH + 2,
+              "the G-buffer units are consecutive");
+
 namespace postfx::detail {
 
 std::string shaderDefines(const CreateDesc& desc) {
@@ -32,62 +37,44 @@ std::string shaderDefines(const CreateDesc& desc) {
 
 namespace {
 
-GLuint makeShadowSampler(GLenum compare, const char* name) {
-  GLuint sampler = glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, name);
-  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, static_cast<GLint>(compare));
+glkit::Sampler makeShadowSampler(GLenum compare, const char* name) {
+  glkit::Sampler sampler = glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, name);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_COMPARE_FUNC, static_cast<GLint>(compare));
   return sampler;
 }
 
-void deleteSampler(GLuint& sampler) {
-  if (sampler != 0) glDeleteSamplers(1, &sampler);
-  sampler = 0;
+glkit::Framebuffer makeFramebuffer(int drawBuffers, const char* name) {
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glkit::Framebuffer framebuffer = glkit::createFramebuffer(name);
+  glNamedFramebufferDrawBuffers(framebuffer.id(), drawBuffers, buffers);
+  return framebuffer;
 }
 
 }  // namespace
 
-CausticsPass::~CausticsPass() {
-  release();
-}
-
 Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
-  release();
   desc_ = desc;
   const std::string defines = shaderDefines(desc);
-  GLuint program = 0;
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_VERTEX_SHADER, "postfx/fullscreen.vert"},
-                            {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
-                           defines, "postfx.caustics", program, error))
-    return Result::ShaderCompileFailed;
-  caustics_ = glkit::Program(program);
-  if (hasFeature(desc.features, testing::BenchmarkFloor)) {
-    if (!glkit::buildProgram(shaderLibrary(),
-                             {{GL_VERTEX_SHADER, "postfx/fullscreen.vert"},
-                              {GL_FRAGMENT_SHADER, "postfx/floor.frag"}},
-                             defines, "postfx.floor", program, error)) {
-      release();
-      return Result::ShaderCompileFailed;
-    }
-    floor_ = glkit::Program(program);
-  }
+  Result r = buildPrograms(defines,
+                           {{caustics_,
+                             "postfx.caustics",
+                             {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}}}},
+                           error);
+  const bool floor = hasFeature(desc.features, testing::BenchmarkFloor);
+  if (r == Result::Ok && floor)
+    r = buildPrograms(
+        defines,
+        {{floor_, "postfx.floor", {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/floor.frag"}}}},
+        error);
+  if (r != Result::Ok) return r;
 
-  const bool raw = hasFeature(desc.features, testing::RawCausticOutput);
-  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glCreateFramebuffers(1, &framebuffer_);
-  glkit::label(GL_FRAMEBUFFER, framebuffer_, "postfx.caustics.framebuffer");
-  glNamedFramebufferDrawBuffers(framebuffer_, raw ? 2 : 1, drawBuffers);
-  if (floor_.id() != 0) {
-    glCreateFramebuffers(1, &floorFramebuffer_);
-    glkit::label(GL_FRAMEBUFFER, floorFramebuffer_, "postfx.floor.framebuffer");
-    glNamedFramebufferDrawBuffers(floorFramebuffer_, raw ? 2 : 1, drawBuffers);
-  }
-  glCreateVertexArrays(1, &vertexArray_);
-  glkit::label(GL_VERTEX_ARRAY, vertexArray_, "postfx.fullscreen.vao");
-  glCreateBuffers(1, &uniformBuffer_);
-  glNamedBufferStorage(uniformBuffer_, sizeof(shared::CausticsBlock), nullptr,
-                       GL_DYNAMIC_STORAGE_BIT);
-  glkit::label(GL_BUFFER, uniformBuffer_, "postfx.caustics.block");
+  const int drawBuffers = hasFeature(desc.features, testing::RawCausticOutput) ? 2 : 1;
+  framebuffer_ = makeFramebuffer(drawBuffers, "postfx.caustics.framebuffer");
+  if (floor) floorFramebuffer_ = makeFramebuffer(drawBuffers, "postfx.floor.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.fullscreen.vao");
+  uniformBuffer_ = glkit::createBuffer(sizeof(shared::CausticsBlock), nullptr,
+                                       GL_DYNAMIC_STORAGE_BIT, "postfx.caustics.block");
 
   pointSampler_ =
       glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "postfx.sampler.point");
@@ -108,26 +95,6 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
   return Result::Ok;
 }
 
-void CausticsPass::release() {
-  caustics_ = glkit::Program();
-  floor_ = glkit::Program();
-  for (glkit::Program& p : tileCaustics_) p = glkit::Program();
-  if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
-  if (floorFramebuffer_ != 0) glDeleteFramebuffers(1, &floorFramebuffer_);
-  if (vertexArray_ != 0) glDeleteVertexArrays(1, &vertexArray_);
-  if (uniformBuffer_ != 0) glDeleteBuffers(1, &uniformBuffer_);
-  if (rawTexture_ != 0) glDeleteTextures(1, &rawTexture_);
-  framebuffer_ = floorFramebuffer_ = vertexArray_ = uniformBuffer_ = rawTexture_ = 0;
-  rawWidth_ = rawHeight_ = 0;
-  deleteSampler(pointSampler_);
-  deleteSampler(waterMipSampler_);
-  deleteSampler(waterLinearSampler_);
-  deleteSampler(shadowForwardSampler_);
-  deleteSampler(shadowReverseSampler_);
-  deleteSampler(irradianceSampler_);
-  deleteSampler(tileSampler_);
-}
-
 Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
                                        std::string& error) {
   const int g = groups > 1 ? 2 : 1;
@@ -137,60 +104,59 @@ Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, int& variant
   glkit::Program& program = tileCaustics_[index];
   if (program.id() != 0) return Result::Ok;
   // The window model's lookup is compiled out: the two models never run together.
-  std::string defines = shaderDefines(desc_);
-  defines += "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n";
-  defines += "#define POSTFX_TILE_IRRADIANCE 1\n";
-  defines += "#define POSTFX_TILE_GROUPS " + std::to_string(g) + "\n";
-  defines += "#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
-  GLuint id = 0;
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_VERTEX_SHADER, "postfx/fullscreen.vert"},
-                            {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
-                           defines, "postfx.caustics_tile", id, error))
-    return Result::ShaderCompileFailed;
-  program = glkit::Program(id);
-  return Result::Ok;
+  const std::string tileDefines =
+      "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n"
+      "#define POSTFX_TILE_IRRADIANCE 1\n"
+      "#define POSTFX_TILE_GROUPS " +
+      std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
+  return buildPrograms(shaderDefines(desc_),
+                       {{program,
+                         "postfx.caustics_tile",
+                         {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
+                         tileDefines}},
+                       error);
 }
 
 void CausticsPass::ensureRaw(int width, int height) {
   if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
-  if (rawTexture_ != 0 && rawWidth_ == width && rawHeight_ == height) return;
-  if (rawTexture_ != 0) glDeleteTextures(1, &rawTexture_);
-  glCreateTextures(GL_TEXTURE_2D, 1, &rawTexture_);
-  glTextureStorage2D(rawTexture_, 1, GL_R16F, width, height);
-  glTextureParameteri(rawTexture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(rawTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glkit::label(GL_TEXTURE, rawTexture_, "postfx.caustics.raw");
+  if (rawTexture_ && rawWidth_ == width && rawHeight_ == height) return;
+  rawTexture_.reset();  // the old size goes first: never two of them allocated at once
+  rawTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.raw");
+  const GLuint raw = rawTexture_.id();
+  glTextureStorage2D(raw, 1, GL_R16F, width, height);
+  glTextureParameteri(raw, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(raw, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   rawWidth_ = width;
   rawHeight_ = height;
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT1, rawTexture_, 0);
-  if (floorFramebuffer_ != 0)
-    glNamedFramebufferTexture(floorFramebuffer_, GL_COLOR_ATTACHMENT1, rawTexture_, 0);
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, raw, 0);
+  if (floorFramebuffer_)
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT1, raw, 0);
 }
 
 void CausticsPass::clearRaw(int width, int height) {
   if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
   ensureRaw(width, height);
   // A texture operation: no framebuffer, scissor or mask state involved.
-  glClearTexImage(rawTexture_, 0, GL_RED, GL_FLOAT, nullptr);
+  glClearTexImage(rawTexture_.id(), 0, GL_RED, GL_FLOAT, nullptr);
 }
 
 Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                              const shared::CausticsBlock& block, std::string& error) {
   ensureRaw(textures.width, textures.height);
-  if (floorFramebuffer_ != 0)
-    glNamedFramebufferTexture(floorFramebuffer_, GL_COLOR_ATTACHMENT0, frame.target.texture, 0);
-  if (!attachHostTarget(framebuffer_, frame.target.texture, "caustics", error)) {
+  if (floorFramebuffer_)
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.target.texture,
+                              0);
+  if (!attachHostTarget(framebuffer_.id(), frame.target.texture, "caustics", error)) {
     finish();
     return Result::GlError;
   }
-  glNamedBufferSubData(uniformBuffer_, 0, sizeof(block), &block);
+  glNamedBufferSubData(uniformBuffer_.id(), 0, sizeof(block), &block);
   return Result::Ok;
 }
 
 void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& textures,
                              GLuint irradiance, GLuint tile) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(textures.width),
                      static_cast<float>(textures.height));
   glDisablei(GL_SCISSOR_TEST, 0);
@@ -208,53 +174,55 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
   for (GLint i = 0; i < maxClip && i < 8; ++i)
     glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
-  glBindVertexArray(vertexArray_);
-  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, uniformBuffer_);
+  glBindVertexArray(vertexArray_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id());
 
-  glBindTextureUnit(kDepthUnit, frame.depth.texture);
-  glBindTextureUnit(kNormalUnit, frame.normal.texture);
-  glBindTextureUnit(kAlbedoUnit, frame.albedo.texture);
-  const GLuint pointSamplers[] = {pointSampler_, pointSampler_, pointSampler_};
-  glBindSamplers(kDepthUnit, 3, pointSamplers);
+  glBindTextureUnit(POSTFX_UNIT_DEPTH, frame.depth.texture);
+  glBindTextureUnit(POSTFX_UNIT_NORMAL, frame.normal.texture);
+  glBindTextureUnit(POSTFX_UNIT_ALBEDO, frame.albedo.texture);
+  const GLuint point = pointSampler_.id();
+  const GLuint pointSamplers[] = {point, point, point};
+  glBindSamplers(POSTFX_UNIT_DEPTH, 3, pointSamplers);
   // Without water (object caustics only) nothing samples the unit; binding 0 there would unbind
   // every target of the unit, which the state guard does not restore.
   if (frame.water.texture.texture != 0) {
-    glBindTextureUnit(kWaterUnit, frame.water.texture.texture);
-    glBindSampler(kWaterUnit, textures.waterMipmapped ? waterMipSampler_ : waterLinearSampler_);
+    glBindTextureUnit(POSTFX_UNIT_WATER, frame.water.texture.texture);
+    glBindSampler(POSTFX_UNIT_WATER,
+                  textures.waterMipmapped ? waterMipSampler_.id() : waterLinearSampler_.id());
   }
   if (hasFeature(desc_.features, Feature::ShadowMask)) {
-    glBindTextureUnit(kShadowUnit, frame.shadow.depth.texture);
-    glBindSampler(kShadowUnit, frame.shadow.depthConvention == DepthConvention::ReverseZ
-                                   ? shadowReverseSampler_
-                                   : shadowForwardSampler_);
+    glBindTextureUnit(POSTFX_UNIT_SHADOW, frame.shadow.depth.texture);
+    glBindSampler(POSTFX_UNIT_SHADOW, frame.shadow.depthConvention == DepthConvention::ReverseZ
+                                          ? shadowReverseSampler_.id()
+                                          : shadowForwardSampler_.id());
   }
   if (irradiance != 0) {
-    glBindTextureUnit(kIrradianceUnit, irradiance);
-    glBindSampler(kIrradianceUnit, irradianceSampler_);
+    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, irradiance);
+    glBindSampler(POSTFX_UNIT_IRRADIANCE, irradianceSampler_.id());
   }
   if (tile != 0) {  // the same unit: the two models never run together
-    glBindTextureUnit(kIrradianceUnit, tile);
-    glBindSampler(kIrradianceUnit, tileSampler_);
+    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, tile);
+    glBindSampler(POSTFX_UNIT_IRRADIANCE, tileSampler_.id());
   }
 }
 
 void CausticsPass::drawFloor() {
   if (floor_.id() == 0) return;
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, floorFramebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, floorFramebuffer_.id());
   glUseProgram(floor_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void CausticsPass::drawCaustics(int tileVariant) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glUseProgram(tileVariant > 0 ? tileCaustics_[tileVariant - 1].id() : caustics_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void CausticsPass::finish() {
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
-  if (floorFramebuffer_ != 0)
-    glNamedFramebufferTexture(floorFramebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+  if (floorFramebuffer_)
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
 }  // namespace postfx::detail

@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
@@ -22,23 +23,8 @@ std::string shaderDefines(const CreateDesc& desc);
 
 class CausticsPass {
  public:
-  enum Unit : GLuint {
-    kDepthUnit = 0,
-    kNormalUnit,
-    kAlbedoUnit,
-    kWaterUnit,
-    kShadowUnit,
-    kIrradianceUnit
-  };
-
-  CausticsPass() = default;
-  CausticsPass(const CausticsPass&) = delete;
-  CausticsPass& operator=(const CausticsPass&) = delete;
-  ~CausticsPass();
-
   // Builds the programs for the context's features and the GL objects (DSA: binds nothing).
   Result init(const CreateDesc& desc, std::string& error);
-  void release();
 
   // Attaches the host target (and the raw output, resized to it when needed). GL_ERROR with a
   // message when the framebuffer is incomplete.
@@ -62,7 +48,7 @@ class CausticsPass {
   // The pass was skipped: the raw output (if any) must read 0, resized to the frame.
   void clearRaw(int width, int height);
 
-  GLuint rawTexture() const { return rawTexture_; }
+  GLuint rawTexture() const { return rawTexture_.id(); }
 
  private:
   void ensureRaw(int width, int height);
@@ -74,11 +60,13 @@ class CausticsPass {
   glkit::Program tileCaustics_[2 * kTileMasks];
   // The floor draws through its own framebuffer with the same attachments: the switch makes a
   // software rasterizer start a new scene, so its timer queries separate the two passes.
-  GLuint framebuffer_ = 0, floorFramebuffer_ = 0, vertexArray_ = 0, uniformBuffer_ = 0;
-  GLuint pointSampler_ = 0, waterMipSampler_ = 0, waterLinearSampler_ = 0;
-  GLuint shadowForwardSampler_ = 0, shadowReverseSampler_ = 0, irradianceSampler_ = 0;
-  GLuint tileSampler_ = 0;
-  GLuint rawTexture_ = 0;
+  glkit::Framebuffer framebuffer_, floorFramebuffer_;
+  glkit::VertexArray vertexArray_;
+  glkit::Buffer uniformBuffer_;
+  glkit::Sampler pointSampler_, waterMipSampler_, waterLinearSampler_;
+  glkit::Sampler shadowForwardSampler_, shadowReverseSampler_, irradianceSampler_;
+  glkit::Sampler tileSampler_;
+  glkit::Texture rawTexture_;
   int rawWidth_ = 0, rawHeight_ = 0;
 };
 

@@ -10,6 +10,8 @@
 
 #include <glkit/buffer_binding.h>
 
+#include "shared_math.h"
+
 namespace postfx::detail {
 
 // glEnable / glDisable a capability back to a saved glIsEnabled value.
@@ -19,9 +21,8 @@ void restoreEnabledi(GLenum cap, GLuint index, GLboolean on);
 
 class GlStateGuard {
  public:
-  // Texture units whose 2D / 2D-array / buffer bindings and sampler the passes rebind:
-  // [0, unitCount).
-  static constexpr int kUnitCount = 7;
+  // Texture units whose 2D / 2D-array / buffer bindings and sampler the passes rebind.
+  static constexpr int kUnitCount = POSTFX_UNIT_COUNT;
 
   GlStateGuard();
   ~GlStateGuard();

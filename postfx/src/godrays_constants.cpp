@@ -4,6 +4,10 @@
 #include <cmath>
 
 #include "frame_constants.h"
+#include "shared_math.h"
+
+static_assert(postfx::shared::GODRAYS_MAX_SAMPLES == postfx::kGodRaySampleCountRange.max,
+              "the march's loop bound is the most samples a frame may ask for");
 
 namespace postfx::detail {
 

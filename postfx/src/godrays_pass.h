@@ -3,11 +3,12 @@
 // at half or quarter resolution into a plugin-owned RGBA16F texture (alpha = pixel distance)
 // followed by a depth-aware upsample that adds into the target. Runs under the state
 // CausticsPass::bindState set (units, samplers, caustics block, blend); adds its own block,
-// framebuffers and unit 5.
+// framebuffers and the reduced march's unit (POSTFX_UNIT_GODRAYS_REDUCED).
 #include <epoxy/gl.h>
 
 #include <string>
 
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
@@ -17,16 +18,8 @@ namespace postfx::detail {
 
 class GodRaysPass {
  public:
-  static constexpr GLuint kReducedUnit = 5;
-
-  GodRaysPass() = default;
-  GodRaysPass(const GodRaysPass&) = delete;
-  GodRaysPass& operator=(const GodRaysPass&) = delete;
-  ~GodRaysPass();
-
   // Builds the programs (with the caustics pass's #defines) and GL objects (DSA: binds nothing).
   Result init(const std::string& defines, std::string& error);
-  void release();
 
   // Attaches the host target, sizes the reduced-resolution texture when used, uploads the block.
   Result prepare(const FrameDesc& frame, int width, int height, const shared::GodRaysBlock& block,
@@ -38,8 +31,10 @@ class GodRaysPass {
   void ensureReduced(int width, int height);
 
   glkit::Program full_, reduced_, upsample_;
-  GLuint framebuffer_ = 0, reducedFramebuffer_ = 0, uniformBuffer_ = 0;
-  GLuint reducedTexture_ = 0, reducedSampler_ = 0;
+  glkit::Framebuffer framebuffer_, reducedFramebuffer_;
+  glkit::Buffer uniformBuffer_;
+  glkit::Texture reducedTexture_;
+  glkit::Sampler reducedSampler_;
   int reducedWidth_ = 0, reducedHeight_ = 0;
 };
 

@@ -4,12 +4,7 @@
 
 namespace postfx::detail {
 
-GpuTimers::~GpuTimers() {
-  release();
-}
-
 void GpuTimers::init(const std::array<bool, kPassCount>& present) {
-  release();
   stats_ = FrameStats{};
   for (int p = 0; p < kPassCount; ++p) {
     stats_.passes[p].present = present[p];
@@ -18,21 +13,9 @@ void GpuTimers::init(const std::array<bool, kPassCount>& present) {
   for (auto& frame : queries_)
     for (int p = 0; p < kPassCount; ++p) {
       if (!present[p]) continue;
-      glCreateQueries(GL_TIMESTAMP, 2, frame[p].data());
-      glCreateQueries(GL_TIME_ELAPSED, 1, &frame[p][2]);
+      frame[p] = {glkit::createQuery(GL_TIMESTAMP), glkit::createQuery(GL_TIMESTAMP),
+                  glkit::createQuery(GL_TIME_ELAPSED)};
     }
-}
-
-void GpuTimers::release() {
-  for (auto& frame : queries_)
-    for (auto& pair : frame) {
-      if (pair[0] != 0) glDeleteQueries(3, pair.data());
-      pair = {0, 0, 0};
-    }
-  slots_ = {};
-  history_ = {};
-  frame_ = oldest_ = 0;
-  anyPass_ = false;
 }
 
 bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
@@ -41,20 +24,20 @@ bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
     const bool elapsed = slot.state[p] == SlotState::IssuedElapsed;
     if (!elapsed && slot.state[p] != SlotState::IssuedTimestamps) continue;
     GLuint available = GL_FALSE;
-    glGetQueryObjectuiv(queries_[slotIndex][p][elapsed ? 2 : 1], GL_QUERY_RESULT_AVAILABLE,
+    glGetQueryObjectuiv(queries_[slotIndex][p][elapsed ? 2 : 1].id(), GL_QUERY_RESULT_AVAILABLE,
                         &available);
     if (available != GL_TRUE) return false;
   }
   for (int p = 0; p < kPassCount; ++p) {
     if (slot.state[p] == SlotState::IssuedElapsed) {
       GLuint64 ns = 0;
-      glGetQueryObjectui64v(queries_[slotIndex][p][2], GL_QUERY_RESULT, &ns);
+      glGetQueryObjectui64v(queries_[slotIndex][p][2].id(), GL_QUERY_RESULT, &ns);
       record(p, static_cast<double>(ns) * 1e-6, false);
     } else if (slot.state[p] == SlotState::IssuedTimestamps) {
       GLuint64 begin = 0, end = 0;
       // The end query is available, and queries complete in order, so these do not wait.
-      glGetQueryObjectui64v(queries_[slotIndex][p][0], GL_QUERY_RESULT, &begin);
-      glGetQueryObjectui64v(queries_[slotIndex][p][1], GL_QUERY_RESULT, &end);
+      glGetQueryObjectui64v(queries_[slotIndex][p][0].id(), GL_QUERY_RESULT, &begin);
+      glGetQueryObjectui64v(queries_[slotIndex][p][1].id(), GL_QUERY_RESULT, &end);
       record(p, end > begin ? static_cast<double>(end - begin) * 1e-6 : 0.0, false);
     } else if (slot.state[p] == SlotState::Skipped) {
       record(p, 0.0, true);
@@ -107,9 +90,9 @@ void GpuTimers::begin(Pass pass) {
   elapsedActive_ = hostQuery == 0;
   const auto& queries = queries_[frame_ % kTimerRingDepth][static_cast<int>(pass)];
   if (elapsedActive_) {
-    glBeginQuery(GL_TIME_ELAPSED, queries[2]);
+    glBeginQuery(GL_TIME_ELAPSED, queries[2].id());
   } else {
-    glQueryCounter(queries[0], GL_TIMESTAMP);
+    glQueryCounter(queries[0].id(), GL_TIMESTAMP);
   }
 }
 
@@ -121,7 +104,7 @@ void GpuTimers::end(Pass pass) {
     glEndQuery(GL_TIME_ELAPSED);
     slots_[index].state[p] = SlotState::IssuedElapsed;
   } else {
-    glQueryCounter(queries_[index][p][1], GL_TIMESTAMP);
+    glQueryCounter(queries_[index][p][1].id(), GL_TIMESTAMP);
     slots_[index].state[p] = SlotState::IssuedTimestamps;
   }
 }

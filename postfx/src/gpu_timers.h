@@ -11,20 +11,15 @@
 #include <array>
 #include <cstdint>
 
+#include <glkit/handle.h>
 #include <postfx/diagnostics.h>
 
 namespace postfx::detail {
 
 class GpuTimers {
  public:
-  GpuTimers() = default;
-  GpuTimers(const GpuTimers&) = delete;
-  GpuTimers& operator=(const GpuTimers&) = delete;
-  ~GpuTimers();
-
   // Creates the query objects of the passes the context has (DSA, no binding changes).
   void init(const std::array<bool, kPassCount>& present);
-  void release();
 
   // Reads every completed frame in order, then opens a slot for this frame. Binds
   // GL_QUERY_BUFFER to 0 while reading (so results land in client memory): call under a guard.
@@ -56,7 +51,7 @@ class GpuTimers {
   bool has(Pass pass) const { return stats_.pass(pass).present; }
   bool anyPass_ = false;
   // Per frame and pass: timestamp begin, timestamp end, time elapsed.
-  std::array<std::array<std::array<GLuint, 3>, kPassCount>, kTimerRingDepth> queries_{};
+  std::array<std::array<std::array<glkit::Query, 3>, kPassCount>, kTimerRingDepth> queries_{};
   bool elapsedActive_ = false;
   std::array<Slot, kTimerRingDepth> slots_{};
   std::array<History, kPassCount> history_{};

@@ -12,10 +12,9 @@ namespace postfx::detail {
 inline constexpr int kMaxIrradianceLayers = 8;
 // The surface grid spans the window plus this fraction of it on each side: the refracted rays
 // drift sideways with the slopes, and light entering outside the window's shadow on the
-// surface still lands inside. Drift beyond it shows as a dimmer rim, inside the fade band.
+// surface still lands inside. Drift beyond it shows as a dimmer rim, inside the fade band
+// (shared::IRRADIANCE_FADE_BAND).
 inline constexpr double kGridMargin = 0.125;
-// The window's outer band (fraction of its side) where the physical model fades to seed 002.
-inline constexpr double kIrradianceFadeBand = 0.125;
 
 struct IrradianceLayout {
   int resolution = 0;  // texels and grid cells' nominal count per side

@@ -10,86 +10,49 @@
 
 namespace postfx::detail {
 
-IrradiancePass::~IrradiancePass() {
-  release();
-}
-
 Result IrradiancePass::init(const std::string& defines, std::string& error) {
-  release();
-  GLuint program = 0;
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_COMPUTE_SHADER, "postfx/irradiance_vertices.comp"}}, defines,
-                           "postfx.caustics_irradiance.grid", program, error))
-    return Result::ShaderCompileFailed;
-  vertices_ = glkit::Program(program);
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_VERTEX_SHADER, "postfx/irradiance.vert"},
-                            {GL_FRAGMENT_SHADER, "postfx/irradiance.frag"}},
-                           defines, "postfx.caustics_irradiance.triangles", program, error)) {
-    release();
-    return Result::ShaderCompileFailed;
-  }
-  triangles_ = glkit::Program(program);
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_VERTEX_SHADER, "postfx/irradiance_points.vert"},
-                            {GL_FRAGMENT_SHADER, "postfx/irradiance_points.frag"}},
-                           defines, "postfx.caustics_irradiance.points", program, error)) {
-    release();
-    return Result::ShaderCompileFailed;
-  }
-  points_ = glkit::Program(program);
-  glCreateFramebuffers(1, &framebuffer_);
-  glkit::label(GL_FRAMEBUFFER, framebuffer_, "postfx.caustics_irradiance.framebuffer");
-  glCreateVertexArrays(1, &vertexArray_);
-  glkit::label(GL_VERTEX_ARRAY, vertexArray_, "postfx.caustics_irradiance.vao");
-  for (ClampSlot& slot : clampSlots_) {
-    glCreateBuffers(1, &slot.buffer);
-    glNamedBufferStorage(slot.buffer, 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glkit::label(GL_BUFFER, slot.buffer, "postfx.caustics_irradiance.clamp_count");
-  }
+  const Result r = buildPrograms(defines,
+                                 {{vertices_,
+                                   "postfx.caustics_irradiance.grid",
+                                   {{GL_COMPUTE_SHADER, "postfx/irradiance_vertices.comp"}}},
+                                  {triangles_,
+                                   "postfx.caustics_irradiance.triangles",
+                                   {{GL_VERTEX_SHADER, "postfx/irradiance.vert"},
+                                    {GL_FRAGMENT_SHADER, "postfx/irradiance.frag"}}},
+                                  {points_,
+                                   "postfx.caustics_irradiance.points",
+                                   {{GL_VERTEX_SHADER, "postfx/irradiance_points.vert"},
+                                    {GL_FRAGMENT_SHADER, "postfx/irradiance_points.frag"}}}},
+                                 error);
+  if (r != Result::Ok) return r;
+  framebuffer_ = glkit::createFramebuffer("postfx.caustics_irradiance.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.caustics_irradiance.vao");
+  for (ClampSlot& slot : clampSlots_)
+    slot.buffer = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                      "postfx.caustics_irradiance.clamp_count");
   return Result::Ok;
 }
 
-void IrradiancePass::release() {
-  vertices_ = glkit::Program();
-  triangles_ = glkit::Program();
-  points_ = glkit::Program();
-  if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
-  if (vertexArray_ != 0) glDeleteVertexArrays(1, &vertexArray_);
-  if (texture_ != 0) glDeleteTextures(1, &texture_);
-  if (gridPointView_ != 0) glDeleteTextures(1, &gridPointView_);
-  if (gridPoints_ != 0) glDeleteBuffers(1, &gridPoints_);
-  framebuffer_ = vertexArray_ = texture_ = gridPointView_ = gridPoints_ = 0;
-  textureResolution_ = textureLayers_ = gridPointsPerSide_ = 0;
-  for (ClampSlot& slot : clampSlots_) {
-    if (slot.fence != nullptr) glDeleteSync(slot.fence);
-    if (slot.buffer != 0) glDeleteBuffers(1, &slot.buffer);
-    slot = ClampSlot{};
-  }
-}
-
 void IrradiancePass::ensureGridPoints(int pointsPerSide) {
-  if (gridPoints_ != 0 && gridPointsPerSide_ == pointsPerSide) return;
-  if (gridPointView_ != 0) glDeleteTextures(1, &gridPointView_);
-  if (gridPoints_ != 0) glDeleteBuffers(1, &gridPoints_);
+  if (gridPoints_ && gridPointsPerSide_ == pointsPerSide) return;
+  // The old size goes first: never two of them allocated at once.
+  gridPointView_.reset();
+  gridPoints_.reset();
   // Two vec4 per grid point (see irradiance_vertices.comp); reused by every layer in turn.
   const GLsizeiptr bytes = GLsizeiptr(pointsPerSide) * pointsPerSide * 2 * 16;
-  glCreateBuffers(1, &gridPoints_);
-  glNamedBufferStorage(gridPoints_, bytes, nullptr, 0);
-  glkit::label(GL_BUFFER, gridPoints_, "postfx.caustics_irradiance.grid_points");
-  glCreateTextures(GL_TEXTURE_BUFFER, 1, &gridPointView_);
-  glTextureBuffer(gridPointView_, GL_RGBA32F, gridPoints_);
-  glkit::label(GL_TEXTURE, gridPointView_, "postfx.caustics_irradiance.grid_points_view");
+  gridPoints_ = glkit::createBuffer(bytes, nullptr, 0, "postfx.caustics_irradiance.grid_points");
+  gridPointView_ =
+      glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.caustics_irradiance.grid_points_view");
+  glTextureBuffer(gridPointView_.id(), GL_RGBA32F, gridPoints_.id());
   gridPointsPerSide_ = pointsPerSide;
 }
 
 void IrradiancePass::ensureTexture(int resolution, int layers) {
-  if (texture_ != 0 && textureResolution_ == resolution && textureLayers_ == layers) return;
-  if (texture_ != 0) glDeleteTextures(1, &texture_);
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture_);
+  if (texture_ && textureResolution_ == resolution && textureLayers_ == layers) return;
+  texture_.reset();  // the old size goes first: never two of them allocated at once
+  texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_irradiance");
   // R32F: additive sums of many triangles stay exact well past R16F's 11 bits.
-  glTextureStorage3D(texture_, 1, GL_R32F, resolution, resolution, layers);
-  glkit::label(GL_TEXTURE, texture_, "postfx.caustics_irradiance");
+  glTextureStorage3D(texture_.id(), 1, GL_R32F, resolution, resolution, layers);
   textureResolution_ = resolution;
   textureLayers_ = layers;
 }
@@ -100,17 +63,16 @@ double IrradiancePass::pollClampCounts() {
   for (;;) {
     ClampSlot* oldest = nullptr;
     for (ClampSlot& s : clampSlots_)
-      if (s.fence != nullptr && (oldest == nullptr || s.frame < oldest->frame)) oldest = &s;
+      if (s.fence && (oldest == nullptr || s.frame < oldest->frame)) oldest = &s;
     if (oldest == nullptr) break;
     ClampSlot& slot = *oldest;
-    const GLenum status = glClientWaitSync(slot.fence, 0, 0);  // timeout 0: a poll
+    const GLenum status = glClientWaitSync(slot.fence.id(), 0, 0);  // timeout 0: a poll
     if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) break;
     GLuint words[2] = {0, 0};
-    glGetNamedBufferSubData(slot.buffer, 0, sizeof(words), words);
+    glGetNamedBufferSubData(slot.buffer.id(), 0, sizeof(words), words);
     const double units = static_cast<double>(words[0]) + 4294967296.0 * words[1];
     newest = units / 256.0 / slot.flatFlux;
-    glDeleteSync(slot.fence);
-    slot.fence = nullptr;
+    slot.fence.reset();
   }
   return newest;
 }
@@ -122,9 +84,9 @@ Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer
   // without bytes: found here, before anything is drawn.
   GLint width = 0;
-  glGetTextureLevelParameteriv(texture_, 0, GL_TEXTURE_WIDTH, &width);
+  glGetTextureLevelParameteriv(texture_.id(), 0, GL_TEXTURE_WIDTH, &width);
   GLint64 bytes = 0;
-  glGetNamedBufferParameteri64v(gridPoints_, GL_BUFFER_SIZE, &bytes);
+  glGetNamedBufferParameteri64v(gridPoints_.id(), GL_BUFFER_SIZE, &bytes);
   if (width != layout_.resolution || bytes <= 0) {
     error = "caustics: the driver could not allocate the irradiance layers (gridResolution " +
             std::to_string(layout_.resolution) + ")";
@@ -136,16 +98,15 @@ Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
 void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
   const IrradianceLayout& l = layout_;
   const float zero = 0.0f;
-  glClearTexImage(texture_, 0, GL_RED, GL_FLOAT, &zero);
+  glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
 
   // A slot still pending after a whole ring of frames is dropped rather than waited for.
   ClampSlot& slot = clampSlots_[frame_ % clampSlots_.size()];
-  if (slot.fence != nullptr) glDeleteSync(slot.fence);
-  slot.fence = nullptr;
+  slot.fence.reset();
   slot.frame = frame_++;
   slot.flatFlux = static_cast<double>(l.resolution) * l.resolution * l.layers;
   const GLuint zeros[2] = {0, 0};
-  glNamedBufferSubData(slot.buffer, 0, sizeof(zeros), zeros);
+  glNamedBufferSubData(slot.buffer.id(), 0, sizeof(zeros), zeros);
 
   const int pointsPerSide = l.cells + 1;
   const WaterSurface& water = frame.water;
@@ -169,12 +130,12 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
     glProgramUniform2f(program, 10, static_cast<float>(l.resolution), pointRatio);
   }
 
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(l.resolution),
                      static_cast<float>(l.resolution));
-  glBindVertexArray(vertexArray_);
+  glBindVertexArray(vertexArray_.id());
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindTextureUnit(kGridPointUnit, gridPointView_);
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPointView_.id());
   const int texelsPerSide = std::max(textures.water.width, textures.water.height);
   const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
   for (int k = 0; k < l.layers; ++k) {
@@ -193,22 +154,22 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
     glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
                        static_cast<float>(l.cell), static_cast<float>(l.depth[k]));
     glUseProgram(compute);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStorageBinding, gridPoints_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.id());
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStorageBinding, slot.buffer);
-    glNamedFramebufferTextureLayer(framebuffer_, GL_COLOR_ATTACHMENT0, texture_, 0, k);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, slot.buffer.id());
+    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
     glUseProgram(triangles_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);
     glUseProgram(points_.id());
     glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
   }
-  glNamedFramebufferTextureLayer(framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
   // The fragment atomics must land before the buffer is read back. (The irradiance itself is a
   // framebuffer write, ordered before later draws that sample it without a barrier.)
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  slot.fence = glkit::Fence(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
 }
 
 }  // namespace postfx::detail

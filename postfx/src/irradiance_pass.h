@@ -16,6 +16,7 @@
 #include <array>
 #include <string>
 
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
@@ -27,17 +28,7 @@ namespace postfx::detail {
 
 class IrradiancePass {
  public:
-  // SSBO binding of the grid points (compute step), then of the clamp count (draws).
-  static constexpr GLuint kStorageBinding = 0;
-  static constexpr GLuint kGridPointUnit = 6;  // texture unit of the grid points' buffer view
-
-  IrradiancePass() = default;
-  IrradiancePass(const IrradiancePass&) = delete;
-  IrradiancePass& operator=(const IrradiancePass&) = delete;
-  ~IrradiancePass();
-
   Result init(const std::string& defines, std::string& error);
-  void release();
   bool ready() const { return triangles_.id() != 0; }
 
   // Reads every clamp count that has completed, oldest first. Returns the newest fraction
@@ -49,10 +40,10 @@ class IrradiancePass {
   // Records the pass: clears and fills every layer. Expects the caustics pass's fixed-function
   // state (blend ONE, ONE on draw buffer 0, no cull/scissor) and the water texture bound on
   // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO binding 0,
-  // texture unit kGridPointUnit, and enables GL_PROGRAM_POINT_SIZE.
+  // texture unit POSTFX_UNIT_GRID_POINTS, and enables GL_PROGRAM_POINT_SIZE.
   void draw(const FrameDesc& frame, const ValidatedTextures& textures);
 
-  GLuint texture() const { return texture_; }
+  GLuint texture() const { return texture_.id(); }
   const IrradianceLayout& layout() const { return layout_; }
 
  private:
@@ -60,14 +51,17 @@ class IrradiancePass {
   void ensureGridPoints(int pointsPerSide);
 
   glkit::Program vertices_, triangles_, points_;
-  GLuint framebuffer_ = 0, vertexArray_ = 0, texture_ = 0;
+  glkit::Framebuffer framebuffer_;
+  glkit::VertexArray vertexArray_;
+  glkit::Texture texture_;
   int textureResolution_ = 0, textureLayers_ = 0;
-  GLuint gridPoints_ = 0, gridPointView_ = 0;  // buffer and its RGBA32F buffer-texture view
+  glkit::Buffer gridPoints_;
+  glkit::Texture gridPointView_;  // the grid points' RGBA32F buffer-texture view
   int gridPointsPerSide_ = 0;
   IrradianceLayout layout_{};
   struct ClampSlot {
-    GLuint buffer = 0;
-    GLsync fence = nullptr;
+    glkit::Buffer buffer;
+    glkit::Fence fence;
     double flatFlux = 1.0;  // texels x layers of the frame: the fraction's denominator
     std::uint64_t frame = 0;
   };

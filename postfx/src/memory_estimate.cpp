@@ -18,7 +18,7 @@ struct Terms {
 };
 
 Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int height,
-            const FramePasses& passes) {
+            const FramePlan& passes) {
   Terms t;
   const std::uint64_t pixels = static_cast<std::uint64_t>(width) * std::uint64_t(height);
   if (hasFeature(create.features, testing::RawCausticOutput)) t.raw = pixels * 2;  // R16F
@@ -57,13 +57,13 @@ std::string mib(std::uint64_t bytes) {
 }  // namespace
 
 std::uint64_t frameMemoryBytes(const CreateDesc& create, const FrameDesc& frame, int width,
-                               int height, const FramePasses& passes) {
+                               int height, const FramePlan& passes) {
   const Terms t = terms(create, frame, width, height, passes);
   return t.raw + t.godRays + t.irradiance + t.tile + t.casterMaps + t.causticMap;
 }
 
 Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int width, int height,
-                        const FramePasses& passes, std::string& error) {
+                        const FramePlan& passes, std::string& error) {
   const Terms t = terms(create, frame, width, height, passes);
   const std::uint64_t total =
       t.raw + t.godRays + t.irradiance + t.tile + t.casterMaps + t.causticMap;

@@ -9,18 +9,16 @@
 
 #include <postfx/postfx.h>
 
+#include "frame_plan.h"
+
 namespace postfx::detail {
 
-struct FramePasses {
-  bool caustics = false, godRays = false, physical = false, objects = false, tile = false;
-};
-
 std::uint64_t frameMemoryBytes(const CreateDesc& create, const FrameDesc& frame, int width,
-                               int height, const FramePasses& passes);
+                               int height, const FramePlan& passes);
 
 // OutOfMemory with a message naming the largest consumer when the frame needs more than
 // CreateDesc::memoryBudgetMiB; Ok otherwise.
 Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int width, int height,
-                        const FramePasses& passes, std::string& error);
+                        const FramePlan& passes, std::string& error);
 
 }  // namespace postfx::detail

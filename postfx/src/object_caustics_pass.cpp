@@ -6,11 +6,24 @@
 #include "host_target.h"
 #include "object_caustics_state.h"
 #include "shader_library.h"
+#include "shared_math.h"
 
 namespace postfx::detail {
 namespace {
 
-enum Unit : GLuint { kUnit0 = 0, kUnit1, kUnit2, kUnit3, kUnit4, kUnit5 };
+// Each step binds its textures and samplers in one call from its first unit.
+static_assert(POSTFX_OBJECT_UNIT_FRONT_NORMAL == POSTFX_OBJECT_UNIT_FRONT_POSITION + 1 &&
+                  POSTFX_OBJECT_UNIT_BACK_POSITION == POSTFX_OBJECT_UNIT_FRONT_POSITION + 2 &&
+                  POSTFX_OBJECT_UNIT_BACK_NORMAL == POSTFX_OBJECT_UNIT_FRONT_POSITION + 3 &&
+                  POSTFX_OBJECT_UNIT_SPLAT_RECEIVER_DEPTH == POSTFX_OBJECT_UNIT_FRONT_POSITION + 4,
+              "the splat's units are consecutive");
+static_assert(POSTFX_OBJECT_UNIT_HISTORY_MAP == POSTFX_OBJECT_UNIT_CURRENT_MAP + 1,
+              "the temporal filter's units are consecutive");
+static_assert(POSTFX_UNIT_NORMAL == POSTFX_UNIT_DEPTH + 1 &&
+                  POSTFX_UNIT_ALBEDO == POSTFX_UNIT_DEPTH + 2 &&
+                  POSTFX_OBJECT_UNIT_CAUSTIC_MAP == POSTFX_UNIT_DEPTH + 3 &&
+                  POSTFX_OBJECT_UNIT_RECEIVER_DEPTH == POSTFX_UNIT_DEPTH + 4,
+              "the composite's units are consecutive");
 // Uniform locations of object_caustics_caster.* and object_caustics_temporal.frag.
 enum CasterUniform : GLint {
   kModelToAnchor = 0,
@@ -21,90 +34,51 @@ enum CasterUniform : GLint {
 };
 constexpr GLint kHistoryWeight = 0;
 
-bool build(const std::string& defines, const char* vertex, const char* fragment, const char* label,
-           glkit::Program& out, std::string& error) {
-  GLuint program = 0;
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines,
-                           label, program, error))
-    return false;
-  out = glkit::Program(program);
-  return true;
-}
-
-bool buildTrace(const std::string& defines, glkit::Program& out, std::string& error) {
-  GLuint program = 0;
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_COMPUTE_SHADER, "postfx/object_caustics_trace.comp"}}, defines,
-                           "postfx.object_caustics.trace", program, error))
-    return false;
-  out = glkit::Program(program);
-  return true;
-}
-
-GLuint makeTexture(GLenum format, int size, const char* name) {
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, format, size, size);
-  glkit::label(GL_TEXTURE, texture, name);
+glkit::Texture makeTexture(GLenum format, int size, const char* name) {
+  glkit::Texture texture = glkit::createTexture(GL_TEXTURE_2D, name);
+  glTextureStorage2D(texture.id(), 1, format, size, size);
   return texture;
-}
-
-void deleteTexture(GLuint& texture) {
-  if (texture != 0) glDeleteTextures(1, &texture);
-  texture = 0;
-}
-void deleteFramebuffer(GLuint& fbo) {
-  if (fbo != 0) glDeleteFramebuffers(1, &fbo);
-  fbo = 0;
-}
-
-GLuint makeFramebuffer(const char* name) {
-  GLuint fbo = 0;
-  glCreateFramebuffers(1, &fbo);
-  glkit::label(GL_FRAMEBUFFER, fbo, name);
-  return fbo;
 }
 
 }  // namespace
 
-ObjectCausticsPass::~ObjectCausticsPass() {
-  release();
-}
-
 Result ObjectCausticsPass::init(const std::string& defines, std::string& error) {
-  release();
-  if (!build(defines, "postfx/object_caustics_caster.vert", "postfx/object_caustics_caster.frag",
-             "postfx.object_caustics.caster", caster_, error) ||
-      !buildTrace(defines, trace_, error) ||
-      !build(defines, "postfx/object_caustics_splat.vert", "postfx/object_caustics_splat.frag",
-             "postfx.object_caustics.splat", splat_, error) ||
-      !build(defines, "postfx/fullscreen.vert", "postfx/object_caustics_temporal.frag",
-             "postfx.object_caustics.temporal", temporal_, error) ||
-      !build(defines, "postfx/fullscreen.vert", "postfx/object_caustics_composite.frag",
-             "postfx.object_caustics.composite", composite_, error)) {
-    release();
-    return Result::ShaderCompileFailed;
-  }
-  glCreateVertexArrays(1, &meshVao_);
-  glkit::label(GL_VERTEX_ARRAY, meshVao_, "postfx.object_caustics.mesh_vao");
-  glEnableVertexArrayAttrib(meshVao_, 0);
-  glVertexArrayAttribBinding(meshVao_, 0, 0);
-  glVertexArrayAttribBinding(meshVao_, 1, 0);
-  glCreateVertexArrays(1, &emptyVao_);
-  glkit::label(GL_VERTEX_ARRAY, emptyVao_, "postfx.object_caustics.empty_vao");
-  glCreateBuffers(1, &uniformBuffer_);
-  glNamedBufferStorage(uniformBuffer_, sizeof(shared::ObjectCausticsBlock), nullptr,
-                       GL_DYNAMIC_STORAGE_BIT);
-  glkit::label(GL_BUFFER, uniformBuffer_, "postfx.object_caustics.block");
-  frontFbo_ = makeFramebuffer("postfx.object_caustics.front");
-  backFbo_ = makeFramebuffer("postfx.object_caustics.back");
-  splatFbo_ = makeFramebuffer("postfx.object_caustics.splat");
-  temporalFbo_ = makeFramebuffer("postfx.object_caustics.temporal");
-  compositeFbo_ = makeFramebuffer("postfx.object_caustics.composite");
+  const Result r = buildPrograms(
+      defines,
+      {{caster_,
+        "postfx.object_caustics.caster",
+        {{GL_VERTEX_SHADER, "postfx/object_caustics_caster.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/object_caustics_caster.frag"}}},
+       {trace_,
+        "postfx.object_caustics.trace",
+        {{GL_COMPUTE_SHADER, "postfx/object_caustics_trace.comp"}}},
+       {splat_,
+        "postfx.object_caustics.splat",
+        {{GL_VERTEX_SHADER, "postfx/object_caustics_splat.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/object_caustics_splat.frag"}}},
+       {temporal_,
+        "postfx.object_caustics.temporal",
+        {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/object_caustics_temporal.frag"}}},
+       {composite_,
+        "postfx.object_caustics.composite",
+        {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/object_caustics_composite.frag"}}}},
+      error);
+  if (r != Result::Ok) return r;
+  meshVao_ = glkit::createVertexArray("postfx.object_caustics.mesh_vao");
+  glEnableVertexArrayAttrib(meshVao_.id(), 0);
+  glVertexArrayAttribBinding(meshVao_.id(), 0, 0);
+  glVertexArrayAttribBinding(meshVao_.id(), 1, 0);
+  emptyVao_ = glkit::createVertexArray("postfx.object_caustics.empty_vao");
+  uniformBuffer_ = glkit::createBuffer(sizeof(shared::ObjectCausticsBlock), nullptr,
+                                       GL_DYNAMIC_STORAGE_BIT, "postfx.object_caustics.block");
+  frontFbo_ = glkit::createFramebuffer("postfx.object_caustics.front");
+  backFbo_ = glkit::createFramebuffer("postfx.object_caustics.back");
+  splatFbo_ = glkit::createFramebuffer("postfx.object_caustics.splat");
+  temporalFbo_ = glkit::createFramebuffer("postfx.object_caustics.temporal");
+  compositeFbo_ = glkit::createFramebuffer("postfx.object_caustics.composite");
   const GLenum two[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(frontFbo_, 2, two);
-  glNamedFramebufferDrawBuffers(backFbo_, 2, two);
+  glNamedFramebufferDrawBuffers(frontFbo_.id(), 2, two);
+  glNamedFramebufferDrawBuffers(backFbo_.id(), 2, two);
   pointSampler_ = glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
                                        "postfx.object_caustics.sampler.point");
   linearSampler_ = glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
@@ -112,66 +86,43 @@ Result ObjectCausticsPass::init(const std::string& defines, std::string& error) 
   return Result::Ok;
 }
 
-void ObjectCausticsPass::release() {
-  caster_ = glkit::Program();
-  trace_ = glkit::Program();
-  splat_ = glkit::Program();
-  temporal_ = glkit::Program();
-  composite_ = glkit::Program();
-  if (meshVao_ != 0) glDeleteVertexArrays(1, &meshVao_);
-  if (emptyVao_ != 0) glDeleteVertexArrays(1, &emptyVao_);
-  if (uniformBuffer_ != 0) glDeleteBuffers(1, &uniformBuffer_);
-  meshVao_ = emptyVao_ = uniformBuffer_ = 0;
-  for (GLuint* fbo : {&frontFbo_, &backFbo_, &splatFbo_, &temporalFbo_, &compositeFbo_})
-    deleteFramebuffer(*fbo);
-  for (GLuint* t : {&frontPosition_, &frontNormal_, &backPosition_, &backNormal_, &casterDepth_,
-                    &splatMap_, &history_[0], &history_[1], &landings_})
-    deleteTexture(*t);
-  landingLayers_ = 0;
-  if (pointSampler_ != 0) glDeleteSamplers(1, &pointSampler_);
-  if (linearSampler_ != 0) glDeleteSamplers(1, &linearSampler_);
-  pointSampler_ = linearSampler_ = 0;
-  gridSize_ = mapSize_ = 0;
-  historyValid_ = false;
-  map_ = ObjectCausticMap{};
-}
-
 void ObjectCausticsPass::ensureGrid(int size) {
   if (size == gridSize_) return;
-  for (GLuint* t : {&frontPosition_, &frontNormal_, &backPosition_, &backNormal_, &casterDepth_})
-    deleteTexture(*t);
+  // The old size goes first: never two of them allocated at once.
+  for (glkit::Texture* t :
+       {&frontPosition_, &frontNormal_, &backPosition_, &backNormal_, &casterDepth_})
+    t->reset();
   // Positions in float: the hit search differences them over the caster's size.
   frontPosition_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.front_position");
   frontNormal_ = makeTexture(GL_RGBA16F, size, "postfx.object_caustics.front_normal");
   backPosition_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.back_position");
   backNormal_ = makeTexture(GL_RGBA16F, size, "postfx.object_caustics.back_normal");
   casterDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "postfx.object_caustics.depth");
-  glNamedFramebufferTexture(frontFbo_, GL_COLOR_ATTACHMENT0, frontPosition_, 0);
-  glNamedFramebufferTexture(frontFbo_, GL_COLOR_ATTACHMENT1, frontNormal_, 0);
-  glNamedFramebufferTexture(frontFbo_, GL_DEPTH_ATTACHMENT, casterDepth_, 0);
-  glNamedFramebufferTexture(backFbo_, GL_COLOR_ATTACHMENT0, backPosition_, 0);
-  glNamedFramebufferTexture(backFbo_, GL_COLOR_ATTACHMENT1, backNormal_, 0);
-  glNamedFramebufferTexture(backFbo_, GL_DEPTH_ATTACHMENT, casterDepth_, 0);
+  glNamedFramebufferTexture(frontFbo_.id(), GL_COLOR_ATTACHMENT0, frontPosition_.id(), 0);
+  glNamedFramebufferTexture(frontFbo_.id(), GL_COLOR_ATTACHMENT1, frontNormal_.id(), 0);
+  glNamedFramebufferTexture(frontFbo_.id(), GL_DEPTH_ATTACHMENT, casterDepth_.id(), 0);
+  glNamedFramebufferTexture(backFbo_.id(), GL_COLOR_ATTACHMENT0, backPosition_.id(), 0);
+  glNamedFramebufferTexture(backFbo_.id(), GL_COLOR_ATTACHMENT1, backNormal_.id(), 0);
+  glNamedFramebufferTexture(backFbo_.id(), GL_DEPTH_ATTACHMENT, casterDepth_.id(), 0);
   gridSize_ = size;
 }
 
 void ObjectCausticsPass::ensureLandings(int size, int layers) {
-  if (landings_ != 0 && size == gridSize_ && layers == landingLayers_) return;
-  deleteTexture(landings_);
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &landings_);
-  glTextureStorage3D(landings_, 1, GL_RGBA32F, size, size, layers);
-  glkit::label(GL_TEXTURE, landings_, "postfx.object_caustics.landings");
+  if (landings_.id() != 0 && size == gridSize_ && layers == landingLayers_) return;
+  landings_.reset();  // the old size goes first
+  landings_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.object_caustics.landings");
+  glTextureStorage3D(landings_.id(), 1, GL_RGBA32F, size, size, layers);
   landingLayers_ = layers;
 }
 
 void ObjectCausticsPass::ensureMap(int size) {
   if (size == mapSize_) return;
-  for (GLuint* t : {&splatMap_, &history_[0], &history_[1]}) deleteTexture(*t);
+  for (glkit::Texture* t : {&splatMap_, &history_[0], &history_[1]}) t->reset();
   // RGBA32F: a focus texel sums thousands of splats; half floats would round them away.
   splatMap_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.splats");
   history_[0] = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.filtered_a");
   history_[1] = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.filtered_b");
-  glNamedFramebufferTexture(splatFbo_, GL_COLOR_ATTACHMENT0, splatMap_, 0);
+  glNamedFramebufferTexture(splatFbo_.id(), GL_COLOR_ATTACHMENT0, splatMap_.id(), 0);
   mapSize_ = size;
   historyValid_ = false;
 }
@@ -191,9 +142,9 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
     int size;
     const char* what;
     const char* setting;
-  } made[] = {{history_[0], s.mapSize, "the caustic map", "mapSize"},
-              {history_[1], s.mapSize, "the caustic map", "mapSize"},
-              {landings_, s.gridSize, "the ray landings", "gridSize"}};
+  } made[] = {{history_[0].id(), s.mapSize, "the caustic map", "mapSize"},
+              {history_[1].id(), s.mapSize, "the caustic map", "mapSize"},
+              {landings_.id(), s.gridSize, "the ray landings", "gridSize"}};
   for (const auto& m : made) {
     GLint width = 0;
     glGetTextureLevelParameteriv(m.texture, 0, GL_TEXTURE_WIDTH, &width);
@@ -203,7 +154,7 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
       return Result::OutOfMemory;
     }
   }
-  for (GLuint fbo : {frontFbo_, backFbo_, splatFbo_}) {
+  for (GLuint fbo : {frontFbo_.id(), backFbo_.id(), splatFbo_.id()}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       error =
           "objectCaustics: an internal framebuffer is incomplete (could the driver not "
@@ -212,11 +163,11 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
       return Result::OutOfMemory;
     }
   }
-  if (!attachHostTarget(compositeFbo_, frame.target.texture, "object caustics", error)) {
-    glNamedFramebufferTexture(compositeFbo_, GL_COLOR_ATTACHMENT0, 0, 0);
+  if (!attachHostTarget(compositeFbo_.id(), frame.target.texture, "object caustics", error)) {
+    glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
     return Result::GlError;
   }
-  glNamedBufferSubData(uniformBuffer_, 0, sizeof(block), &block);
+  glNamedBufferSubData(uniformBuffer_.id(), 0, sizeof(block), &block);
   const ObjectCausticMap placement = describeObjectCausticMap(light, s.mapSize);
   // The history is only meaningful in the same texel grid.
   if (!(placement.origin == placement_.origin && placement.axisU == placement_.axisU &&
@@ -234,12 +185,12 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glUseProgram(caster_.id());
-  glBindVertexArray(meshVao_);
+  glBindVertexArray(meshVao_.id());
   const GLuint program = caster_.id();
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   for (int side = 0; side < 2; ++side) {
     const bool back = side == 1;
-    const GLuint fbo = back ? backFbo_ : frontFbo_;
+    const GLuint fbo = back ? backFbo_.id() : frontFbo_.id();
     const float clearDepth = back ? 0.0f : 1.0f;
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
@@ -258,62 +209,64 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
       glProgramUniform1i(program, kCasterIndex, c);
       const bool normals = m.normalOffset >= 0;
       glProgramUniform1i(program, kFlatNormals, normals ? 0 : 1);
-      glVertexArrayVertexBuffer(meshVao_, 0, m.vertexBuffer, static_cast<GLintptr>(m.baseOffset),
-                                m.stride);
-      glVertexArrayAttribFormat(meshVao_, 0, 3, GL_FLOAT, GL_FALSE,
+      glVertexArrayVertexBuffer(meshVao_.id(), 0, m.vertexBuffer,
+                                static_cast<GLintptr>(m.baseOffset), m.stride);
+      glVertexArrayAttribFormat(meshVao_.id(), 0, 3, GL_FLOAT, GL_FALSE,
                                 static_cast<GLuint>(m.positionOffset));
       if (normals) {
-        glEnableVertexArrayAttrib(meshVao_, 1);
-        glVertexArrayAttribFormat(meshVao_, 1, 3, GL_FLOAT, GL_FALSE,
+        glEnableVertexArrayAttrib(meshVao_.id(), 1);
+        glVertexArrayAttribFormat(meshVao_.id(), 1, 3, GL_FLOAT, GL_FALSE,
                                   static_cast<GLuint>(m.normalOffset));
       } else {
-        glDisableVertexArrayAttrib(meshVao_, 1);
+        glDisableVertexArrayAttrib(meshVao_.id(), 1);
       }
       if (m.indexBuffer != 0) {
-        glVertexArrayElementBuffer(meshVao_, m.indexBuffer);
+        glVertexArrayElementBuffer(meshVao_.id(), m.indexBuffer);
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.indexCount),
                        static_cast<GLenum>(m.indexType),
                        reinterpret_cast<const void*>(static_cast<std::intptr_t>(m.indexOffset)));
       } else {
-        glVertexArrayElementBuffer(meshVao_, 0);
+        glVertexArrayElementBuffer(meshVao_.id(), 0);
         glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m.vertexCount));
       }
     }
   }
   // Our VAO must not keep the host's buffers alive after the call.
-  glVertexArrayVertexBuffer(meshVao_, 0, 0, 0, 16);
-  glVertexArrayElementBuffer(meshVao_, 0);
+  glVertexArrayVertexBuffer(meshVao_.id(), 0, 0, 0, 16);
+  glVertexArrayElementBuffer(meshVao_.id(), 0);
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
 }
 
 void ObjectCausticsPass::traceRays(const FrameDesc& frame) {
-  const GLuint textures[] = {frontPosition_, frontNormal_, backPosition_, backNormal_,
-                             frame.objectCaustics.receivers.depth.texture};
-  glBindTextures(kUnit0, 5, textures);
-  const GLuint samplers[] = {pointSampler_, pointSampler_, pointSampler_, pointSampler_,
-                             linearSampler_};
-  glBindSamplers(kUnit0, 5, samplers);
-  glBindImageTexture(0, landings_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  const GLuint textures[] = {frontPosition_.id(), frontNormal_.id(), backPosition_.id(),
+                             backNormal_.id(), frame.objectCaustics.receivers.depth.texture};
+  glBindTextures(POSTFX_OBJECT_UNIT_FRONT_POSITION, 5, textures);
+  const GLuint point = pointSampler_.id(), linear = linearSampler_.id();
+  const GLuint samplers[] = {point, point, point, point, linear};
+  glBindSamplers(POSTFX_OBJECT_UNIT_FRONT_POSITION, 5, samplers);
+  glBindImageTexture(POSTFX_IMAGE_OBJECT_LANDINGS, landings_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                     GL_RGBA32F);
   glUseProgram(trace_.id());
   const GLuint rays = static_cast<GLuint>(gridSize_) * static_cast<GLuint>(gridSize_);
+  // One invocation per cell and colour channel (three when a caster is dispersed this frame).
   glDispatchCompute((rays + 63) / 64, dispersed_ ? 3 : 1, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void ObjectCausticsPass::drawSplats() {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(splatFbo_, GL_COLOR, 0, zero);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, splatFbo_);
+  glClearNamedFramebufferfv(splatFbo_.id(), GL_COLOR, 0, zero);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, splatFbo_.id());
   const float size = static_cast<float>(mapSize_);
   glViewportIndexedf(0, 0.0f, 0.0f, size, size);
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindTextureUnit(kUnit5, landings_);
-  glBindSampler(kUnit5, pointSampler_);
-  glBindVertexArray(emptyVao_);
+  glBindTextureUnit(POSTFX_OBJECT_UNIT_LANDINGS, landings_.id());
+  glBindSampler(POSTFX_OBJECT_UNIT_LANDINGS, pointSampler_.id());
+  glBindVertexArray(emptyVao_.id());
   glUseProgram(splat_.id());
   // A dispersed caster needs one ray per colour channel: three instances, the shader drops the
   // extra rays of the others. Without dispersion the draw is the single grid it always was.
@@ -326,41 +279,41 @@ void ObjectCausticsPass::filterTemporally(const FrameDesc& frame) {
   if (!s.temporalFilter) {
     historyValid_ = false;
     map_ = placement_;
-    map_.texture = splatMap_;
+    map_.texture = splatMap_.id();
     return;
   }
   const int out = historyIndex_ ^ 1;
-  glNamedFramebufferTexture(temporalFbo_, GL_COLOR_ATTACHMENT0, history_[out], 0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, temporalFbo_);
+  glNamedFramebufferTexture(temporalFbo_.id(), GL_COLOR_ATTACHMENT0, history_[out].id(), 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, temporalFbo_.id());
   glDisablei(GL_BLEND, 0);
-  const GLuint textures[] = {splatMap_, history_[historyIndex_]};
-  glBindTextures(kUnit0, 2, textures);
-  const GLuint samplers[] = {pointSampler_, pointSampler_};
-  glBindSamplers(kUnit0, 2, samplers);
+  const GLuint textures[] = {splatMap_.id(), history_[historyIndex_].id()};
+  glBindTextures(POSTFX_OBJECT_UNIT_CURRENT_MAP, 2, textures);
+  const GLuint samplers[] = {pointSampler_.id(), pointSampler_.id()};
+  glBindSamplers(POSTFX_OBJECT_UNIT_CURRENT_MAP, 2, samplers);
   glProgramUniform1f(temporal_.id(), kHistoryWeight, historyValid_ ? s.temporalWeight : 0.0f);
   glUseProgram(temporal_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   historyIndex_ = out;
   historyValid_ = true;
   map_ = placement_;
-  map_.texture = history_[out];
+  map_.texture = history_[out].id();
 }
 
 void ObjectCausticsPass::composite(const FrameDesc& frame, int width, int height) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
   const GLuint textures[] = {frame.depth.texture, frame.normal.texture, frame.albedo.texture,
                              map_.texture, frame.objectCaustics.receivers.depth.texture};
-  glBindTextures(kUnit0, 5, textures);
-  const GLuint samplers[] = {pointSampler_, pointSampler_, pointSampler_, linearSampler_,
-                             pointSampler_};
-  glBindSamplers(kUnit0, 5, samplers);
+  glBindTextures(POSTFX_UNIT_DEPTH, 5, textures);
+  const GLuint point = pointSampler_.id(), linear = linearSampler_.id();
+  const GLuint samplers[] = {point, point, point, linear, point};
+  glBindSamplers(POSTFX_UNIT_DEPTH, 5, samplers);
   glUseProgram(composite_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glNamedFramebufferTexture(compositeFbo_, GL_COLOR_ATTACHMENT0, 0, 0);
+  glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
 void ObjectCausticsPass::draw(const FrameDesc& frame, int width, int height) {
@@ -386,12 +339,12 @@ void ObjectCausticsPass::draw(const FrameDesc& frame, int width, int height) {
   glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
   for (GLint i = 0; i < maxClip && i < 8; ++i)
     glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
-  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING, uniformBuffer_);
+  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id());
 
   drawCasterMaps(frame);
   traceRays(frame);
   drawSplats();
-  glBindVertexArray(emptyVao_);
+  glBindVertexArray(emptyVao_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(mapSize_), static_cast<float>(mapSize_));
   filterTemporally(frame);
   composite(frame, width, height);

@@ -16,6 +16,7 @@
 
 #include <string>
 
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
@@ -25,13 +26,7 @@ namespace postfx::detail {
 
 class ObjectCausticsPass {
  public:
-  ObjectCausticsPass() = default;
-  ObjectCausticsPass(const ObjectCausticsPass&) = delete;
-  ObjectCausticsPass& operator=(const ObjectCausticsPass&) = delete;
-  ~ObjectCausticsPass();
-
   Result init(const std::string& defines, std::string& error);
-  void release();
 
   // Sizes the maps, attaches the host target, uploads the block. GlError with a message when a
   // framebuffer is incomplete. Call under a GlStateGuard.
@@ -53,15 +48,16 @@ class ObjectCausticsPass {
   void composite(const FrameDesc& frame, int width, int height);
 
   glkit::Program caster_, trace_, splat_, temporal_, composite_;
-  GLuint meshVao_ = 0, emptyVao_ = 0, uniformBuffer_ = 0;
-  GLuint frontFbo_ = 0, backFbo_ = 0, splatFbo_ = 0, temporalFbo_ = 0, compositeFbo_ = 0;
-  GLuint frontPosition_ = 0, frontNormal_ = 0, backPosition_ = 0, backNormal_ = 0;
-  GLuint casterDepth_ = 0;
-  GLuint splatMap_ = 0, history_[2] = {0, 0};
+  glkit::VertexArray meshVao_, emptyVao_;
+  glkit::Buffer uniformBuffer_;
+  glkit::Framebuffer frontFbo_, backFbo_, splatFbo_, temporalFbo_, compositeFbo_;
+  glkit::Texture frontPosition_, frontNormal_, backPosition_, backNormal_;
+  glkit::Texture casterDepth_;
+  glkit::Texture splatMap_, history_[2];
   // Where each ray lands and its flux (object_caustics_trace.comp): 2 layers per colour channel.
-  GLuint landings_ = 0;
+  glkit::Texture landings_;
   int landingLayers_ = 0;
-  GLuint pointSampler_ = 0, linearSampler_ = 0;
+  glkit::Sampler pointSampler_, linearSampler_;
   int gridSize_ = 0, mapSize_ = 0;
   int historyIndex_ = 0;
   bool historyValid_ = false;

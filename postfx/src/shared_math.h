@@ -5,6 +5,7 @@
 #include "shared/common.h"  // before the namespace: it includes GLM
 
 namespace postfx {
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_caustics_block.h"
 #include "shared/postfx_godrays.h"

@@ -41,67 +41,44 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame) {
   return l;
 }
 
-TileIrradiancePass::~TileIrradiancePass() {
-  release();
-}
-
 Result TileIrradiancePass::init(const std::string& defines, std::string& error) {
-  release();
-  GLuint program = 0;
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}}, defines,
-                           "postfx.caustics_tile.scatter", program, error))
-    return Result::ShaderCompileFailed;
-  scatter_ = glkit::Program(program);
-  if (!glkit::buildProgram(shaderLibrary(),
-                           {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}, defines,
-                           "postfx.caustics_tile.resolve", program, error)) {
-    release();
-    return Result::ShaderCompileFailed;
-  }
-  resolve_ = glkit::Program(program);
-  return Result::Ok;
-}
-
-void TileIrradiancePass::release() {
-  scatter_ = glkit::Program();
-  resolve_ = glkit::Program();
-  if (texture_ != 0) glDeleteTextures(1, &texture_);
-  if (accumulators_ != 0) glDeleteBuffers(1, &accumulators_);
-  texture_ = accumulators_ = 0;
-  textureResolution_ = textureLayers_ = 0;
-  accumulatorBytes_ = 0;
+  return buildPrograms(defines,
+                       {{scatter_,
+                         "postfx.caustics_tile.scatter",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}}},
+                        {resolve_,
+                         "postfx.caustics_tile.resolve",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}}},
+                       error);
 }
 
 Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   layout_ = tileIrradianceLayout(frame);
   const TileIrradianceLayout& l = layout_;
   const int arrayLayers = std::max(l.cascadeCount * l.groups, 1);
-  if (texture_ == 0 || textureResolution_ != l.resolution || textureLayers_ != arrayLayers) {
-    if (texture_ != 0) glDeleteTextures(1, &texture_);
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture_);
-    glTextureStorage3D(texture_, glkit::mipLevelCount(l.resolution), GL_RGBA16F, l.resolution,
+  if (!texture_ || textureResolution_ != l.resolution || textureLayers_ != arrayLayers) {
+    texture_.reset();  // the old size goes first: never two of them allocated at once
+    texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_tile.irradiance");
+    glTextureStorage3D(texture_.id(), glkit::mipLevelCount(l.resolution), GL_RGBA16F, l.resolution,
                        l.resolution, arrayLayers);
-    glkit::label(GL_TEXTURE, texture_, "postfx.caustics_tile.irradiance");
     textureResolution_ = l.resolution;
     textureLayers_ = arrayLayers;
   }
   const GLsizeiptr bytes = GLsizeiptr(l.resolution) * l.resolution * std::max(l.cascadeCount, 1) *
                            l.layers * GLsizeiptr(sizeof(GLuint));
-  if (accumulators_ == 0 || accumulatorBytes_ != bytes) {
-    if (accumulators_ != 0) glDeleteBuffers(1, &accumulators_);
-    glCreateBuffers(1, &accumulators_);
-    glNamedBufferStorage(accumulators_, bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glkit::label(GL_BUFFER, accumulators_, "postfx.caustics_tile.accumulators");
+  if (!accumulators_ || accumulatorBytes_ != bytes) {
+    accumulators_.reset();
+    accumulators_ = glkit::createBuffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                        "postfx.caustics_tile.accumulators");
     // Zero once; the resolve leaves them zero for the next frame.
     const GLuint zero = 0;
-    glClearNamedBufferData(accumulators_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(accumulators_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     accumulatorBytes_ = bytes;
   }
   GLint width = 0;
-  glGetTextureLevelParameteriv(texture_, 0, GL_TEXTURE_WIDTH, &width);
+  glGetTextureLevelParameteriv(texture_.id(), 0, GL_TEXTURE_WIDTH, &width);
   GLint64 allocated = 0;
-  glGetNamedBufferParameteri64v(accumulators_, GL_BUFFER_SIZE, &allocated);
+  glGetNamedBufferParameteri64v(accumulators_.id(), GL_BUFFER_SIZE, &allocated);
   if (width != l.resolution || allocated != bytes) {
     error = "caustics: the driver could not allocate the tile irradiance (tileResolution " +
             std::to_string(l.resolution) + ")";
@@ -134,7 +111,7 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
                      static_cast<float>(perPoint * double(shared::TILE_FIXED_POINT)));
   glProgramUniform1i(scatter, 4, l.layers);
   glProgramUniform1fv(scatter, 5, shared::TILE_MAX_LAYERS, depths);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulatorBinding, accumulators_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_ACCUMULATORS, accumulators_.id());
   glUseProgram(scatter);
   const GLuint pointGroups = static_cast<GLuint>((points + 7) / 8);
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
@@ -150,7 +127,8 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   const GLuint resolve = resolve_.id();
   const float clamp = std::min(frame.caustics.maxIrradiance, shared::TILE_MAX_IRRADIANCE);
   glUseProgram(resolve);
-  glBindImageTexture(kImageUnit, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                     GL_RGBA16F);
   const GLuint texelGroups = static_cast<GLuint>((l.resolution + 7) / 8);
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
     if (l.slot[c] < 0) continue;
@@ -162,7 +140,7 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   // The mip chain is built from the image writes; the caustics pass then samples it.
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT);
-  glGenerateTextureMipmap(texture_);
+  glGenerateTextureMipmap(texture_.id());
 }
 
 }  // namespace postfx::detail

@@ -12,6 +12,7 @@
 
 #include <string>
 
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
@@ -43,30 +44,23 @@ bool tileIrradianceActive(const FrameDesc& frame);
 
 class TileIrradiancePass {
  public:
-  static constexpr GLuint kAccumulatorBinding = 0;  // SSBO binding of both dispatches
-  static constexpr GLuint kImageUnit = 0;           // image unit of the resolve's output
-
-  TileIrradiancePass() = default;
-  TileIrradiancePass(const TileIrradiancePass&) = delete;
-  TileIrradiancePass& operator=(const TileIrradiancePass&) = delete;
-  ~TileIrradiancePass();
-
   Result init(const std::string& defines, std::string& error);
-  void release();
 
   // Allocates this frame's irradiance array and accumulators (before any pass adds light);
   // OutOfMemory with a message when the driver could not.
   Result reserve(const FrameDesc& frame, std::string& error);
   // Records the pre-pass. Expects the water texture bound on its unit (CausticsPass::bindState);
-  // binds its programs, SSBO binding 0 and image unit 0 (the caller's state guard restores them).
+  // binds its programs, its storage binding and image unit (shared/postfx_bindings.h; the
+  // caller's state guard restores them).
   void draw(const FrameDesc& frame, const ValidatedTextures& textures);
 
-  GLuint texture() const { return texture_; }
+  GLuint texture() const { return texture_.id(); }
   const TileIrradianceLayout& layout() const { return layout_; }
 
  private:
   glkit::Program scatter_, resolve_;
-  GLuint texture_ = 0, accumulators_ = 0;
+  glkit::Texture texture_;
+  glkit::Buffer accumulators_;
   int textureResolution_ = 0, textureLayers_ = 0;
   GLsizeiptr accumulatorBytes_ = 0;
   TileIrradianceLayout layout_{};

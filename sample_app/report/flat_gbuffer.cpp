@@ -34,7 +34,7 @@ PlaneView topDownView(int width, int height, double floorDistance) {
 
 PlaneGbuffer::PlaneGbuffer(int width, int height, float windowDepth, const glm::vec3& normal) {
   const size_t pixels = size_t(width) * size_t(height);
-  glCreateTextures(GL_TEXTURE_2D, 3, textures_);
+  for (glkit::Texture& texture : textures_) texture = glkit::createTexture(GL_TEXTURE_2D, {});
   glTextureStorage2D(depth(), 1, GL_DEPTH_COMPONENT32F, width, height);
   glTextureStorage2D(this->normal(), 1, GL_RGBA16F, width, height);
   glTextureStorage2D(albedo(), 1, GL_RGBA8, width, height);
@@ -43,10 +43,6 @@ PlaneGbuffer::PlaneGbuffer(int width, int height, float windowDepth, const glm::
   const float n[4] = {normal.x, normal.y, normal.z, 0.0f}, white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   glClearTexImage(this->normal(), 0, GL_RGBA, GL_FLOAT, n);
   glClearTexImage(albedo(), 0, GL_RGBA, GL_FLOAT, white);
-}
-
-PlaneGbuffer::~PlaneGbuffer() {
-  glDeleteTextures(3, textures_);
 }
 
 }  // namespace ocean::report

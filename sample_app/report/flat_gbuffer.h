@@ -8,6 +8,8 @@
 // it is projected onto along an image axis, such as the horizontal grid of a reference).
 #include <epoxy/gl.h>
 
+#include <glkit/handle.h>
+
 #include <glm/glm.hpp>
 
 namespace ocean::report {
@@ -33,15 +35,12 @@ class PlaneGbuffer {
   // Depth GL_DEPTH_COMPONENT32F, normals GL_RGBA16F world xyz (normal encoding 1), albedo RGBA8.
   PlaneGbuffer(int width, int height, float windowDepth,
                const glm::vec3& normal = glm::vec3(0.0f, 1.0f, 0.0f));
-  ~PlaneGbuffer();
-  PlaneGbuffer(const PlaneGbuffer&) = delete;
-  PlaneGbuffer& operator=(const PlaneGbuffer&) = delete;
-  GLuint depth() const { return textures_[0]; }
-  GLuint normal() const { return textures_[1]; }
-  GLuint albedo() const { return textures_[2]; }
+  GLuint depth() const { return textures_[0].id(); }
+  GLuint normal() const { return textures_[1].id(); }
+  GLuint albedo() const { return textures_[2].id(); }
 
  private:
-  GLuint textures_[3] = {};
+  glkit::Texture textures_[3];
 };
 
 }  // namespace ocean::report

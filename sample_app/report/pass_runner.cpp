@@ -11,13 +11,9 @@ constexpr int kWarmupFrames = 4;
 
 }  // namespace
 
-ReportTarget::ReportTarget(int width, int height) : width_(width), height_(height) {
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
-  glTextureStorage2D(texture_, 1, GL_RGBA32F, width, height);
-}
-
-ReportTarget::~ReportTarget() {
-  glDeleteTextures(1, &texture_);
+ReportTarget::ReportTarget(int width, int height)
+    : texture_(glkit::createTexture(GL_TEXTURE_2D, {})), width_(width), height_(height) {
+  glTextureStorage2D(texture_.id(), 1, GL_RGBA32F, width, height);
 }
 
 bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pass,

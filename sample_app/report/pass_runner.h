@@ -5,6 +5,8 @@
 // for the image the error is computed from.
 #include <epoxy/gl.h>
 
+#include <glkit/handle.h>
+
 #include <string>
 #include <vector>
 
@@ -31,15 +33,12 @@ struct PassRun {
 class ReportTarget {
  public:
   ReportTarget(int width, int height);
-  ~ReportTarget();
-  ReportTarget(const ReportTarget&) = delete;
-  ReportTarget& operator=(const ReportTarget&) = delete;
-  GLuint texture() const { return texture_; }
+  GLuint texture() const { return texture_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
 
  private:
-  GLuint texture_ = 0;
+  glkit::Texture texture_;
   int width_, height_;
 };
 

@@ -10,14 +10,6 @@ bool isCausticCaster(const ocean_scene::Material& material) {
   return material.isRefractive() || material.metallic >= 0.5f;
 }
 
-GpuScene::~GpuScene() {
-  for (GpuMesh& mesh : meshes_) {
-    glDeleteVertexArrays(1, &mesh.vao);
-    glDeleteBuffers(1, &mesh.vertices);
-    glDeleteBuffers(1, &mesh.indices);
-  }
-}
-
 void GpuScene::upload(const ocean_scene::Model& model) {
   for (const ocean_scene::Mesh& mesh : model.meshes) {
     std::vector<glm::vec3> interleaved;
@@ -27,22 +19,20 @@ void GpuScene::upload(const ocean_scene::Model& model) {
       interleaved.push_back(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0));
     }
     GpuMesh gpu;
-    glCreateBuffers(1, &gpu.vertices);
-    glNamedBufferStorage(gpu.vertices, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)),
-                         interleaved.data(), 0);
-    glCreateBuffers(1, &gpu.indices);
-    glNamedBufferStorage(gpu.indices, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)),
-                         mesh.indices.data(), 0);
-    glCreateVertexArrays(1, &gpu.vao);
-    glVertexArrayVertexBuffer(gpu.vao, 0, gpu.vertices, 0, 2 * sizeof(glm::vec3));
-    glVertexArrayElementBuffer(gpu.vao, gpu.indices);
+    gpu.vertices = glkit::createBuffer(GLsizeiptr(interleaved.size() * sizeof(glm::vec3)),
+                                       interleaved.data(), 0, {});
+    gpu.indices = glkit::createBuffer(GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)),
+                                      mesh.indices.data(), 0, {});
+    gpu.vao = glkit::createVertexArray("scene." + mesh.name);
+    const GLuint vao = gpu.vao.id();
+    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, 2 * sizeof(glm::vec3));
+    glVertexArrayElementBuffer(vao, gpu.indices.id());
     for (GLuint attribute : {0u, 1u}) {
-      glEnableVertexArrayAttrib(gpu.vao, attribute);
-      glVertexArrayAttribFormat(gpu.vao, attribute, 3, GL_FLOAT, GL_FALSE,
+      glEnableVertexArrayAttrib(vao, attribute);
+      glVertexArrayAttribFormat(vao, attribute, 3, GL_FLOAT, GL_FALSE,
                                 attribute * GLuint(sizeof(glm::vec3)));
-      glVertexArrayAttribBinding(gpu.vao, attribute, 0);
+      glVertexArrayAttribBinding(vao, attribute, 0);
     }
-    glkit::label(GL_VERTEX_ARRAY, gpu.vao, "scene." + mesh.name);
     gpu.indexCount = GLsizei(mesh.indices.size());
     gpu.vertexCount = GLsizei(mesh.positions.size());
     gpu.boundsMin = glm::vec3(0.0f);
@@ -52,7 +42,7 @@ void GpuScene::upload(const ocean_scene::Model& model) {
       gpu.boundsMin = glm::min(gpu.boundsMin, p);
       gpu.boundsMax = glm::max(gpu.boundsMax, p);
     }
-    meshes_.push_back(gpu);
+    meshes_.push_back(std::move(gpu));
   }
   for (const ocean_scene::Instance& instance : model.instances) {
     const ocean_scene::Mesh& mesh = model.meshes[instance.mesh];
@@ -64,8 +54,8 @@ void GpuScene::upload(const ocean_scene::Model& model) {
     instances_.push_back({instance.mesh, glm::dmat4(instance.transform), albedo, caster});
     if (caster) {
       const GpuMesh& gpu = meshes_[instance.mesh];
-      casters_.push_back({gpu.vertices, gpu.indices, gpu.vertexCount, gpu.indexCount, gpu.boundsMin,
-                          gpu.boundsMax, glm::dmat4(instance.transform),
+      casters_.push_back({gpu.vertices.id(), gpu.indices.id(), gpu.vertexCount, gpu.indexCount,
+                          gpu.boundsMin, gpu.boundsMax, glm::dmat4(instance.transform),
                           model.materials[mesh.material]});
     }
   }
@@ -86,7 +76,7 @@ void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet se
       glUniformMatrix3fv(normalLocation, 1, GL_FALSE, glm::value_ptr(normalMatrix));
     if (albedoLocation >= 0) glUniform3fv(albedoLocation, 1, glm::value_ptr(instance.albedo));
     const GpuMesh& mesh = meshes_[instance.mesh];
-    glBindVertexArray(mesh.vao);
+    glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
   }
   glBindVertexArray(0);

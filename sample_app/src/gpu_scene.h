@@ -2,6 +2,8 @@
 // The scene's meshes on the GPU: one vertex/index buffer pair per mesh, drawn per instance
 // with camera-relative transforms (the translation is taken against the camera in double).
 #include <epoxy/gl.h>
+
+#include <glkit/handle.h>
 #include <glm/glm.hpp>
 
 #include <vector>
@@ -28,11 +30,6 @@ class GpuScene {
  public:
   enum class DrawSet { All, NonCasters };
 
-  GpuScene() = default;
-  GpuScene(const GpuScene&) = delete;
-  GpuScene& operator=(const GpuScene&) = delete;
-  ~GpuScene();
-
   void upload(const ocean_scene::Model& model);
   // Draws every instance with `program` bound; sets its modelRelative, normalMatrix and albedo
   // uniforms (those it has).
@@ -42,7 +39,8 @@ class GpuScene {
 
  private:
   struct GpuMesh {
-    GLuint vao = 0, vertices = 0, indices = 0;
+    glkit::VertexArray vao;
+    glkit::Buffer vertices, indices;
     GLsizei indexCount = 0, vertexCount = 0;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
   };

@@ -19,14 +19,10 @@ namespace {
 
 bool build(glkit::Program& program, const char* vertex, const char* fragment, const char* label,
            std::string& error) {
-  GLuint id = 0;
-  if (!glkit::buildProgram(ocean_sample::shaderLibrary(),
-                           {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", label,
-                           id, error)) {
-    return false;
-  }
-  program = glkit::Program(id);
-  return true;
+  program = glkit::buildProgram(ocean_sample::shaderLibrary(),
+                                {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "",
+                                label, error);
+  return program.id() != 0;
 }
 
 void drawFullscreen(GLuint vao) {
@@ -43,16 +39,6 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
   renderer->settings_ = settings;
   if (!renderer->initialise(scene, error)) return nullptr;
   return renderer;
-}
-
-Renderer::~Renderer() {
-  glDeleteBuffers(1, &frameUniforms_);
-  glDeleteVertexArrays(1, &emptyVao_);
-  glDeleteTextures(1, &fogged_);
-  glDeleteTextures(1, &sceneBelow_);
-  glDeleteTextures(1, &output_);
-  glDeleteFramebuffers(1, &foggedFbo_);
-  glDeleteFramebuffers(1, &outputFbo_);
 }
 
 bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
@@ -78,24 +64,22 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   shadowMap_.create(settings_.shadowMapSize);
   waterGrid_.create(160, 256, 0.02f, 4000.0f);
 
-  glCreateBuffers(1, &frameUniforms_);
-  glNamedBufferStorage(frameUniforms_, sizeof(shared::SampleFrame), nullptr,
-                       GL_DYNAMIC_STORAGE_BIT);
-  glkit::label(GL_BUFFER, frameUniforms_, "sample.frame_constants");
-  glCreateVertexArrays(1, &emptyVao_);
+  frameUniforms_ = glkit::createBuffer(sizeof(shared::SampleFrame), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                       "sample.frame_constants");
+  emptyVao_ = glkit::createVertexArray({});
 
   fogged_ = glkit::createTexture2D(GL_RGBA16F, settings_.width, settings_.height, GL_NEAREST,
                                    "sample.fogged");
   sceneBelow_ = glkit::createTexture2D(GL_RGBA16F, settings_.width, settings_.height, GL_LINEAR,
                                        "sample.scene_below_water");
-  glCreateFramebuffers(1, &foggedFbo_);
-  glNamedFramebufferTexture(foggedFbo_, GL_COLOR_ATTACHMENT0, fogged_, 0);
-  glNamedFramebufferTexture(foggedFbo_, GL_DEPTH_ATTACHMENT, targets_.depth(), 0);
+  foggedFbo_ = glkit::createFramebuffer({});
+  glNamedFramebufferTexture(foggedFbo_.id(), GL_COLOR_ATTACHMENT0, fogged_.id(), 0);
+  glNamedFramebufferTexture(foggedFbo_.id(), GL_DEPTH_ATTACHMENT, targets_.depth(), 0);
   output_ = glkit::createTexture2D(GL_RGBA8, settings_.width, settings_.height, GL_NEAREST,
                                    "sample.output");
-  glCreateFramebuffers(1, &outputFbo_);
-  glNamedFramebufferTexture(outputFbo_, GL_COLOR_ATTACHMENT0, output_, 0);
-  for (GLuint fbo : {foggedFbo_, outputFbo_}) {
+  outputFbo_ = glkit::createFramebuffer({});
+  glNamedFramebufferTexture(outputFbo_.id(), GL_COLOR_ATTACHMENT0, output_.id(), 0);
+  for (GLuint fbo : {foggedFbo_.id(), outputFbo_.id()}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       error = "sample framebuffer incomplete";
       return false;
@@ -153,7 +137,7 @@ glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
   }
   frame.cascadeInfo =
       glm::vec4(float(std::min(ocean_->cascadeCount(), 4)), settings_.exposure, 0.0f, 0.0f);
-  glNamedBufferSubData(frameUniforms_, 0, sizeof(frame), &frame);
+  glNamedBufferSubData(frameUniforms_.id(), 0, sizeof(frame), &frame);
   return projection;
 }
 
@@ -164,7 +148,7 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   const glm::dvec3 eye = input.camera.position;
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
@@ -208,23 +192,23 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   const GLuint lightingInputs[] = {targets_.depth(), targets_.normal(), targets_.albedo(),
                                    shadowMap_.texture()};
   glBindTextures(0, 4, lightingInputs);
-  drawFullscreen(emptyVao_);
+  drawFullscreen(emptyVao_.id());
   glPopDebugGroup();
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.fog");
-  glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_.id());
   glViewport(0, 0, width, height);
   glUseProgram(composite_.id());
   const GLuint fogInputs[] = {targets_.depth(), targets_.hdr()};
   glBindTextures(0, 2, fogInputs);
-  drawFullscreen(emptyVao_);
+  drawFullscreen(emptyVao_.id());
   glPopDebugGroup();
 
   if (plugin_) {
     // After the fog, as the plugin's header asks (ViewExtinction::Plugin): the light it adds
     // arrives attenuated along the view ray, and fog applied after it would do so twice.
     const HostFrame frame{targets_,
-                          fogged_,
+                          fogged_.id(),
                           input,
                           *ocean_,
                           optics_,
@@ -234,7 +218,7 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
                           receiverMap_.texture(),
                           scene_.casters()};
     if (!plugin_(frame, error)) return false;
-    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
   }
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.water_surface");
@@ -244,12 +228,12 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   // The surface refracts the frame as it is now; it cannot read the target it draws into.
-  glCopyImageSubData(fogged_, GL_TEXTURE_2D, 0, 0, 0, 0, sceneBelow_, GL_TEXTURE_2D, 0, 0, 0, 0,
-                     width, height, 1);
+  glCopyImageSubData(fogged_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, sceneBelow_.id(), GL_TEXTURE_2D, 0, 0,
+                     0, 0, width, height, 1);
   glUseProgram(water_.id());
   const GLuint waterInputs[] = {ocean_->displacementTexture(), ocean_->slopeTexture()};
   glBindTextures(4, 2, waterInputs);
-  const GLuint refractionInputs[] = {targets_.depth(), sceneBelow_};
+  const GLuint refractionInputs[] = {targets_.depth(), sceneBelow_.id()};
   glBindTextures(0, 2, refractionInputs);
   waterGrid_.draw();
   glDisable(GL_BLEND);
@@ -258,10 +242,10 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glPopDebugGroup();
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.tonemap");
-  glBindFramebuffer(GL_FRAMEBUFFER, outputFbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, outputFbo_.id());
   glUseProgram(tonemap_.id());
-  glBindTextureUnit(0, fogged_);
-  drawFullscreen(emptyVao_);
+  glBindTextureUnit(0, fogged_.id());
+  drawFullscreen(emptyVao_.id());
   glPopDebugGroup();
 
   glBindTextures(0, 6, nullptr);
@@ -271,19 +255,20 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
 }
 
 void Renderer::presentTo(GLuint framebuffer, int width, int height) const {
-  glBlitNamedFramebuffer(outputFbo_, framebuffer, 0, 0, settings_.width, settings_.height, 0, 0,
-                         width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBlitNamedFramebuffer(outputFbo_.id(), framebuffer, 0, 0, settings_.width, settings_.height, 0,
+                         0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
 std::vector<uint8_t> Renderer::readColor() const {
   std::vector<uint8_t> pixels(size_t(settings_.width) * settings_.height * 4);
-  glGetTextureImage(output_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+  glGetTextureImage(output_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()),
+                    pixels.data());
   return pixels;
 }
 
 std::vector<float> Renderer::readRadiance() const {
   std::vector<float> pixels(size_t(settings_.width) * settings_.height * 4);
-  glGetTextureImage(fogged_, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
+  glGetTextureImage(fogged_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
                     pixels.data());
   return pixels;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gbuffer/targets.h>
+#include <glkit/handle.h>
 #include <glkit/program.h>
 #include <postfx/water/ocean.h>
 #include <postfx/water/optics.h>
@@ -59,7 +60,6 @@ class Renderer {
  public:
   static std::unique_ptr<Renderer> create(const RenderSettings& settings,
                                           const ocean_scene::Model& scene, std::string& error);
-  ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
@@ -95,10 +95,13 @@ class Renderer {
   ShadowMap receiverMap_;  // created by enableReceiverMap()
   WaterGrid waterGrid_;
   glkit::Program geometry_, shadow_, lighting_, composite_, water_, tonemap_;
-  GLuint frameUniforms_ = 0, emptyVao_ = 0;
-  GLuint fogged_ = 0, foggedFbo_ = 0;  // RGBA16F: the frame after fog, plus the water surface
-  GLuint sceneBelow_ = 0;              // RGBA16F copy of the fogged frame the surface refracts
-  GLuint output_ = 0, outputFbo_ = 0;  // RGBA8 tone-mapped image
+  glkit::Buffer frameUniforms_;
+  glkit::VertexArray emptyVao_;
+  glkit::Texture fogged_;  // RGBA16F: the frame after fog, plus the water surface
+  glkit::Framebuffer foggedFbo_;
+  glkit::Texture sceneBelow_;  // RGBA16F copy of the fogged frame the surface refracts
+  glkit::Texture output_;      // RGBA8 tone-mapped image
+  glkit::Framebuffer outputFbo_;
   glm::dmat4 shadowWorldToClip_{1.0};
   PluginPass plugin_;
 };

@@ -6,26 +6,20 @@
 
 namespace ocean {
 
-ShadowMap::~ShadowMap() {
-  glDeleteTextures(1, &texture_);
-  glDeleteFramebuffers(1, &framebuffer_);
-}
-
 void ShadowMap::create(int size) {
   size_ = size;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
-  glTextureStorage2D(texture_, 1, GL_DEPTH_COMPONENT32F, size, size);
-  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(texture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glTextureParameteri(texture_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glkit::label(GL_TEXTURE, texture_, "sample.shadow_map");
-  glCreateFramebuffers(1, &framebuffer_);
-  glNamedFramebufferTexture(framebuffer_, GL_DEPTH_ATTACHMENT, texture_, 0);
-  glNamedFramebufferDrawBuffer(framebuffer_, GL_NONE);
-  glkit::label(GL_FRAMEBUFFER, framebuffer_, "sample.shadow_map");
+  texture_ = glkit::createTexture(GL_TEXTURE_2D, "sample.shadow_map");
+  const GLuint texture = texture_.id();
+  glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, size, size);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  framebuffer_ = glkit::createFramebuffer("sample.shadow_map");
+  glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, texture, 0);
+  glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
 }
 
 glm::dmat4 ShadowMap::fit(const glm::dvec3& cameraPosition, const glm::vec3& toLight,

@@ -5,15 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include <glkit/program.h>
+#include <glkit/handle.h>
 
 namespace ocean {
-
-WaterGrid::~WaterGrid() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vertices_);
-  glDeleteBuffers(1, &indices_);
-}
 
 void WaterGrid::create(int rings, int segments, float innerRadius, float outerRadius) {
   std::vector<glm::vec2> points{glm::vec2(0.0f)};
@@ -40,22 +34,22 @@ void WaterGrid::create(int rings, int segments, float innerRadius, float outerRa
       triangle(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
     }
   }
-  glCreateBuffers(1, &vertices_);
-  glNamedBufferStorage(vertices_, GLsizeiptr(points.size() * sizeof(glm::vec2)), points.data(), 0);
-  glCreateBuffers(1, &indices_);
-  glNamedBufferStorage(indices_, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), 0);
-  glCreateVertexArrays(1, &vao_);
-  glVertexArrayVertexBuffer(vao_, 0, vertices_, 0, sizeof(glm::vec2));
-  glVertexArrayElementBuffer(vao_, indices_);
-  glEnableVertexArrayAttrib(vao_, 0);
-  glVertexArrayAttribFormat(vao_, 0, 2, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(vao_, 0, 0);
-  glkit::label(GL_VERTEX_ARRAY, vao_, "water.grid");
+  vertices_ =
+      glkit::createBuffer(GLsizeiptr(points.size() * sizeof(glm::vec2)), points.data(), 0, {});
+  indices_ =
+      glkit::createBuffer(GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), 0, {});
+  vao_ = glkit::createVertexArray("water.grid");
+  const GLuint vao = vao_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(glm::vec2));
+  glVertexArrayElementBuffer(vao, indices_.id());
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 2, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao, 0, 0);
   indexCount_ = GLsizei(indices.size());
 }
 
 void WaterGrid::draw() const {
-  glBindVertexArray(vao_);
+  glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
 }

@@ -3,19 +3,18 @@
 // centimetres (the waterline preset sits 3 cm above the water) to kilometres.
 #include <epoxy/gl.h>
 
+#include <glkit/handle.h>
+
 namespace ocean {
 
 class WaterGrid {
  public:
-  WaterGrid() = default;
-  WaterGrid(const WaterGrid&) = delete;
-  WaterGrid& operator=(const WaterGrid&) = delete;
-  ~WaterGrid();
   void create(int rings, int segments, float innerRadius, float outerRadius);
   void draw() const;
 
  private:
-  GLuint vao_ = 0, vertices_ = 0, indices_ = 0;
+  glkit::VertexArray vao_;
+  glkit::Buffer vertices_, indices_;
   GLsizei indexCount_ = 0;
 };
 

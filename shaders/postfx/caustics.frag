@@ -14,11 +14,7 @@
 #include "shared/postfx_tile_irradiance.h"
 #if POSTFX_PHYSICAL
 
-layout(binding = 5) uniform sampler2DArray causticIrradiance;
-
-// Width of the window's outer band over which the physical irradiance fades to seed 002
-// (irradiance_layout.h kIrradianceFadeBand).
-const float kIrradianceFadeBand = 0.125;
+layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray causticIrradiance;
 
 // Layer k's irradiance at receiver p (camera-relative) `depthBelow` under the level, each
 // layer looked up where ITS ray through the same surface point lands: the pattern is moved
@@ -39,7 +35,7 @@ float physicalIrradiance(vec3 p, float depthBelow, out float weight) {
   if (layers <= 0) return 1.0;
   vec2 uv = (p.xz - u.irradianceWindow.xy) * u.irradianceWindow.z;
   float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y));
-  weight = smoothstep(0.0, kIrradianceFadeBand, edge);
+  weight = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge);
   if (!(weight > 0.0)) return 1.0;
   vec3 blend = layerBlend(depthBelow, u.irradianceDepths[0], u.irradianceDepths[1], layers);
   float lower = blend.x < 0.0 ? 1.0 : layerIrradiance(p, depthBelow, blend.x);
@@ -49,7 +45,7 @@ float physicalIrradiance(vec3 p, float depthBelow, out float weight) {
 #endif
 
 #ifdef POSTFX_TILE_IRRADIANCE
-layout(binding = 5) uniform sampler2DArray tileIrradiance;
+layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray tileIrradiance;
 
 // Cascade c's own irradiance where its light lands at entry coordinate `coord` (m), interpolated
 // between the depth layers around the receiver (1 above the first: flat water at the surface).

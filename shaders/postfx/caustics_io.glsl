@@ -1,20 +1,21 @@
 // Inputs and outputs shared by the caustics and floor passes, so the floor reads and writes
-// exactly what the caustics pass does. Texture units match CausticsPass::Unit.
+// exactly what the caustics pass does.
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_caustics_block.h"
 
-layout(binding = 0) uniform sampler2D gbufferDepth;
-layout(binding = 1) uniform sampler2D gbufferNormal;
-layout(binding = 2) uniform sampler2D gbufferAlbedo;
+layout(binding = POSTFX_UNIT_DEPTH) uniform sampler2D gbufferDepth;
+layout(binding = POSTFX_UNIT_NORMAL) uniform sampler2D gbufferNormal;
+layout(binding = POSTFX_UNIT_ALBEDO) uniform sampler2D gbufferAlbedo;
 #if POSTFX_WATER_SINGLE_2D
-layout(binding = 3) uniform sampler2D waterSurface;
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
 #define WATER_COORD(uv, layer) (uv)
 #else
-layout(binding = 3) uniform sampler2DArray waterSurface;
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
 #define WATER_COORD(uv, layer) vec3(uv, float(layer))
 #endif
 #if POSTFX_SHADOW_MASK
-layout(binding = 4) uniform sampler2DShadow sunShadowMap;
+layout(binding = POSTFX_UNIT_SHADOW) uniform sampler2DShadow sunShadowMap;
 #endif
 
 layout(location = 0) out vec4 outLight;  // blended ONE, ONE into the host's HDR target

@@ -84,7 +84,7 @@ void main() {
   if (g.gridOffset.z > 0.5) {
     // Uniform along the ray (comparison mode): the samples slide with the camera.
     float dt = (tEnd - tStart) / float(count);
-    for (int i = 0; i < 64; ++i) {
+    for (int i = 0; i < GODRAYS_MAX_SAMPLES; ++i) {
       if (i >= count) break;
       float t = tStart + (float(i) + phase) * dt;
       vec3 w = dt * exp(-g.extinction.rgb * (t - tStart));
@@ -102,7 +102,7 @@ void main() {
     float tz = godRayFirstCrossing(g.gridOffset.y + shift, dz, s, tStart);
     float stepX = godRayCrossingStep(dx, s), stepZ = godRayCrossingStep(dz, s);
     float tPrev = tStart;
-    for (int i = 0; i < 64; ++i) {
+    for (int i = 0; i < GODRAYS_MAX_SAMPLES; ++i) {
       if (i >= count) break;
       float t = min(tx, tz);
       if (!(t <= tEnd)) break;

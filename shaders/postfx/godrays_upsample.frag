@@ -5,7 +5,7 @@
 // not bleed across silhouettes; when no neighbour matches, the closest in distance is taken.
 #include "postfx/godrays_common.glsl"
 
-layout(binding = 5) uniform sampler2D reducedGodRays;
+layout(binding = POSTFX_UNIT_GODRAYS_REDUCED) uniform sampler2D reducedGodRays;
 
 // Relative distance difference at which a neighbour's weight falls to 1/4.
 const float kDepthTolerance = 0.05;

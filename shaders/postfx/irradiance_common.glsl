@@ -1,7 +1,8 @@
 // Shared by the two draws of the irradiance pass: the grid points the compute step wrote
 // (read as a buffer texture) and the count of the flux the clamp removes.
+#include "shared/postfx_bindings.h"
 
-layout(binding = 6) uniform samplerBuffer gridPoints;  // 2 texels per grid point
+layout(binding = POSTFX_UNIT_GRID_POINTS) uniform samplerBuffer gridPoints;  // 2 texels per grid point
 layout(location = 8) uniform float maxIrradiance;
 // x: irradiance texels per side; y: area ratio above which a triangle is deposited as a point
 // (its refracted area is under a quarter texel) instead of rasterised.

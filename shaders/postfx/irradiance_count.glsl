@@ -1,6 +1,8 @@
 // The flux the clamp removes, counted in fixed point (1/256 of a texel of flat-water flux) as
 // a 64-bit sum in two words, so the host can read the bias the clamp introduces.
-layout(std430, binding = 0) buffer ClampCount {
+#include "shared/postfx_bindings.h"
+
+layout(std430, binding = POSTFX_STORAGE_CLAMP_COUNT) buffer ClampCount {
   uint removedLow;
   uint removedHigh;
 };

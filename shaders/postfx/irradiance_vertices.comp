@@ -5,6 +5,7 @@
 // beam xy) in irradiance texels from the window corner, and (transmittance ratio, 0, 0, 0).
 // Compile-time switch: POSTFX_WATER_SINGLE_2D.
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_caustics_block.h"  // POSTFX_MAX_CASCADES (its block goes unused here)
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_irradiance.h"
@@ -12,10 +13,10 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #if POSTFX_WATER_SINGLE_2D
-layout(binding = 3) uniform sampler2D waterSurface;
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
 #define WATER_COORD(uv, layer) (uv)
 #else
-layout(binding = 3) uniform sampler2DArray waterSurface;
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
 #define WATER_COORD(uv, layer) vec3(uv, float(layer))
 #endif
 
@@ -32,7 +33,7 @@ layout(location = 6) uniform vec4 towardSun;  // xyz: unit vector to the sun; w:
 layout(location = 7) uniform vec4 scales;
 layout(location = 9) uniform int pointsPerSide;
 
-layout(std430, binding = 0) writeonly buffer GridPoints {
+layout(std430, binding = POSTFX_STORAGE_GRID_POINTS) writeonly buffer GridPoints {
   vec4 gridPoints[];
 };
 

@@ -4,15 +4,16 @@
 // map's surface (the casters themselves, anything between them and the sun, anything in a
 // receiver's shadow) get nothing.
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_object_caustics_block.h"
 
-layout(binding = 0) uniform sampler2D gbufferDepth;
-layout(binding = 1) uniform sampler2D gbufferNormal;
-layout(binding = 2) uniform sampler2D gbufferAlbedo;
-layout(binding = 3) uniform sampler2D causticMap;
-layout(binding = 4) uniform sampler2D receiverDepth;
+layout(binding = POSTFX_UNIT_DEPTH) uniform sampler2D gbufferDepth;
+layout(binding = POSTFX_UNIT_NORMAL) uniform sampler2D gbufferNormal;
+layout(binding = POSTFX_UNIT_ALBEDO) uniform sampler2D gbufferAlbedo;
+layout(binding = POSTFX_OBJECT_UNIT_CAUSTIC_MAP) uniform sampler2D causticMap;
+layout(binding = POSTFX_OBJECT_UNIT_RECEIVER_DEPTH) uniform sampler2D receiverDepth;
 
 layout(location = 0) out vec4 outLight;
 

@@ -3,11 +3,12 @@
 // caustic map where the trace pass found the ray lands, its shape taken from where the rays of
 // the neighbouring cells land.
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_object_caustics.h"
 #include "shared/postfx_object_caustics_block.h"
 
 // The trace pass's results: see object_caustics_trace.comp.
-layout(binding = 5) uniform sampler2DArray landings;
+layout(binding = POSTFX_OBJECT_UNIT_LANDINGS) uniform sampler2DArray landings;
 
 flat out vec2 splatCentre;  // map texels
 flat out vec3 splatFlux;

@@ -2,8 +2,10 @@
 // Seed 003's temporal filter over the caustic map: history blended with this frame's splats.
 // The history is first clamped to the 3x3 neighbourhood of the new map (the TAA bound), so a
 // caustic that moved leaves no trail longer than one frame's blur.
-layout(binding = 0) uniform sampler2D currentMap;
-layout(binding = 1) uniform sampler2D historyMap;
+#include "shared/postfx_bindings.h"
+
+layout(binding = POSTFX_OBJECT_UNIT_CURRENT_MAP) uniform sampler2D currentMap;
+layout(binding = POSTFX_OBJECT_UNIT_HISTORY_MAP) uniform sampler2D historyMap;
 layout(location = 0) uniform float historyWeight;
 
 layout(location = 0) out vec4 outMap;

@@ -3,6 +3,7 @@
 // stores where it lands, so that the splat pass can shape each ray's Gaussian from where its
 // neighbours land without tracing them again.
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_object_caustics_block.h"
 
 #include "postfx/object_caustics_trace.glsl"
@@ -11,7 +12,7 @@ layout(local_size_x = 64) in;
 
 // Layer 2c: (centre in map texels, splat sigma, 1 where the ray lands, else 0); layer 2c + 1:
 // its flux. c: the colour channel (0 only without dispersion).
-layout(binding = 0, rgba32f) uniform writeonly image2DArray landings;
+layout(binding = POSTFX_IMAGE_OBJECT_LANDINGS, rgba32f) uniform writeonly image2DArray landings;
 
 void main() {
   int size = int(u.grid.x);

@@ -6,15 +6,16 @@
 #ifndef POSTFX_OBJECT_CAUSTICS_TRACE_GLSL
 #define POSTFX_OBJECT_CAUSTICS_TRACE_GLSL
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_object_caustics.h"
 #include "shared/postfx_object_caustics_block.h"
 
-layout(binding = 0) uniform sampler2D frontPosition;
-layout(binding = 1) uniform sampler2D frontNormal;
-layout(binding = 2) uniform sampler2D backPosition;
-layout(binding = 3) uniform sampler2D backNormal;
-layout(binding = 4) uniform sampler2D receiverDepth;
+layout(binding = POSTFX_OBJECT_UNIT_FRONT_POSITION) uniform sampler2D frontPosition;
+layout(binding = POSTFX_OBJECT_UNIT_FRONT_NORMAL) uniform sampler2D frontNormal;
+layout(binding = POSTFX_OBJECT_UNIT_BACK_POSITION) uniform sampler2D backPosition;
+layout(binding = POSTFX_OBJECT_UNIT_BACK_NORMAL) uniform sampler2D backNormal;
+layout(binding = POSTFX_OBJECT_UNIT_SPLAT_RECEIVER_DEPTH) uniform sampler2D receiverDepth;
 
 const float kNoBracket = 1e30;
 

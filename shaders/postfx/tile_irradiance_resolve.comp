@@ -3,14 +3,15 @@
 // texel of the irradiance array (relative to flat water, clamped), and the accumulators are
 // zeroed for the next cascade and frame (cheaper than a separate clear).
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_tile_irradiance.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 0) buffer TileAccumulators {
+layout(std430, binding = POSTFX_STORAGE_TILE_ACCUMULATORS) buffer TileAccumulators {
   uint accumulators[];
 };
-layout(binding = 0, rgba16f) writeonly uniform image2DArray tileIrradiance;
+layout(binding = POSTFX_IMAGE_TILE_IRRADIANCE, rgba16f) writeonly uniform image2DArray tileIrradiance;
 
 // x: texels per side, y: first accumulator layer, z: first array layer, w: clamp
 layout(location = 0) uniform vec4 resolve;

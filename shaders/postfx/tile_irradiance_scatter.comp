@@ -7,20 +7,21 @@
 // exactness in the dark parts costs a rasterised triangle per cell and layer, several times
 // this pass on a CPU rasteriser. Compile-time switch: POSTFX_WATER_SINGLE_2D.
 #include "shared/common.h"
+#include "shared/postfx_bindings.h"
 #include "shared/postfx_caustics_block.h"  // POSTFX_MAX_CASCADES (its block goes unused here)
 #include "shared/postfx_tile_irradiance.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #if POSTFX_WATER_SINGLE_2D
-layout(binding = 3) uniform sampler2D waterSurface;
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
 #define WATER_COORD(uv, layer) (uv)
 #else
-layout(binding = 3) uniform sampler2DArray waterSurface;
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
 #define WATER_COORD(uv, layer) vec3(uv, float(layer))
 #endif
 
-layout(std430, binding = 0) buffer TileAccumulators {
+layout(std430, binding = POSTFX_STORAGE_TILE_ACCUMULATORS) buffer TileAccumulators {
   uint accumulators[];
 };
 

@@ -38,12 +38,10 @@ TEST_F(GbufferShaderMirror, GlslAndCppReconstructAndDecodeAlike) {
     }
   }
   std::string error;
-  GLuint id = 0;
-  ASSERT_TRUE(glkit::buildProgram(gbuffer_test::shaderLibrary(),
-                                  {{GL_COMPUTE_SHADER, "gbuffer/test_reconstruct.comp"}}, "",
-                                  "test.reconstruct", id, error))
-      << error;
-  glkit::Program program(id);
+  const glkit::Program program = glkit::buildProgram(
+      gbuffer_test::shaderLibrary(), {{GL_COMPUTE_SHADER, "gbuffer/test_reconstruct.comp"}}, "",
+      "test.reconstruct", error);
+  ASSERT_NE(program.id(), 0u) << error;
   GLuint buffers[2];
   glCreateBuffers(2, buffers);
   glNamedBufferStorage(buffers[0], GLsizeiptr(cases.size() * sizeof(Case)), cases.data(), 0);

@@ -100,12 +100,17 @@ Result Ocean::initialise(std::string& error) {
                               std::to_string(std::countr_zero(static_cast<unsigned>(n))) +
                               "\n#define WATER_MODE_COUNT " +
                               std::to_string(static_cast<size_t>(n) * n * cascades) + "\n";
-  if (!glkit::buildProgram(shaderLibrary(), {{GL_COMPUTE_SHADER, "water/spectrum_rows.comp"}},
-                           defines, "water.spectrum_rows", rowProgram_, error) ||
-      !glkit::buildProgram(shaderLibrary(), {{GL_COMPUTE_SHADER, "water/columns_assemble.comp"}},
-                           defines, "water.columns_assemble", columnProgram_, error)) {
-    return Result::ShaderCompileFailed;
-  }
+  // Plain names: the public header holds them without glkit; the destructor deletes them.
+  rowProgram_ =
+      glkit::buildProgram(shaderLibrary(), {{GL_COMPUTE_SHADER, "water/spectrum_rows.comp"}},
+                          defines, "water.spectrum_rows", error)
+          .release();
+  if (rowProgram_ == 0) return Result::ShaderCompileFailed;
+  columnProgram_ =
+      glkit::buildProgram(shaderLibrary(), {{GL_COMPUTE_SHADER, "water/columns_assemble.comp"}},
+                          defines, "water.columns_assemble", error)
+          .release();
+  if (columnProgram_ == 0) return Result::ShaderCompileFailed;
 
   waveStats_ = cascadeWaveStats(desc_);
   const std::vector<unsigned char> spectrum = packSpectrum(buildInitialSpectrum(desc_));

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include <glkit/handle.h>
 #include <glkit/shader_library.h>
 
 namespace glkit {
@@ -15,28 +16,17 @@ struct ShaderStage {
   std::string_view path;  // relative to shaders/
 };
 
-// Builds a program; on failure returns false, sets `error` to the compiler or linker log and
-// leaves `program` 0 with nothing allocated. `label` names the program for debuggers.
-bool buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStage> stages,
-                  std::string_view defines, std::string_view label, GLuint& program,
-                  std::string& error);
-
 // A program deleted when it goes out of scope; movable, not copyable.
-class Program {
+class Program : public Handle<GLuint, deleteProgram> {
  public:
-  Program() = default;
-  explicit Program(GLuint id) : id_(id) {}
-  Program(Program&& other) noexcept : id_(other.id_) { other.id_ = 0; }
-  Program& operator=(Program&& other) noexcept;
-  Program(const Program&) = delete;
-  Program& operator=(const Program&) = delete;
-  ~Program();
-  GLuint id() const { return id_; }
-  GLint uniform(const char* name) const { return glGetUniformLocation(id_, name); }
-
- private:
-  GLuint id_ = 0;
+  using Handle::Handle;
+  GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
 };
+
+// Builds a program; on failure returns an empty Program (nothing allocated) and sets `error` to
+// the compiler or linker log. `label` names the program for debuggers.
+Program buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStage> stages,
+                     std::string_view defines, std::string_view label, std::string& error);
 
 // Labels a GL object for debuggers (KHR_debug); a no-op for empty labels.
 void label(GLenum identifier, GLuint name, std::string_view text);

@@ -1,0 +1,31 @@
+#pragma once
+// Which of a frame's passes run, decided once from the context's features and the frame's
+// settings before any GL work: the memory estimate, the resources reserved, the passes recorded
+// and the timers' skipped marks all read this one plan.
+#include <postfx/diagnostics.h>
+#include <postfx/postfx.h>
+
+namespace postfx {
+struct Context;
+}
+
+namespace postfx::detail {
+
+struct FramePlan {
+  bool caustics = false;  // the seabed caustics pass
+  bool physical = false;  // its WavefrontAreaRatio pre-pass
+  bool tile = false;      // its TileIrradiance pre-pass
+  bool godRays = false;
+  bool objects = false;  // the object caustics
+  bool floor = false;    // benchmark mode (testing::BenchmarkFloor): every timed pass drained
+  // The caustics pass's framebuffer and state are set up: a full-screen pass draws. The floor
+  // runs whenever a timed pass does, so that every pass has its ratio.
+  bool fullScreen = false;
+
+  // Whether `pass` records GPU work this frame; one that does not is timed as skipped (0 ms).
+  bool runs(Pass pass) const;
+};
+
+FramePlan planFrame(const Context& context, const FrameDesc& frame);
+
+}  // namespace postfx::detail
