@@ -90,8 +90,8 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
   tileSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT,
                                       "postfx.sampler.tile_irradiance");
   if (hasFeature(desc.features, Feature::PhysicalCaustics))
-    irradianceSampler_ =
-        glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "postfx.sampler.irradiance");
+    irradianceSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
+                                              "postfx.sampler.irradiance");
   return Result::Ok;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "frame_constants.h"
+#include "shared_math.h"
 
 namespace postfx::detail {
 
@@ -20,7 +21,11 @@ IrradianceLayout irradianceLayout(const FrameDesc& frame) {
   l.windowSize = s.windowSize;
   l.texel = l.windowSize / l.resolution;
   const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
-  l.windowOrigin = glm::floor((camera - 0.5 * l.windowSize) / l.texel) * l.texel;
+  // Snapped to whole texels of the coarsest mip level the lookup filters with, so that every
+  // level keeps its texels on the same world grid as the camera moves (a one-texel snap would
+  // shift level k's texels by 2^-k of theirs and the filtered light would jump).
+  const double snap = l.texel * double(1 << shared::IRRADIANCE_MIP_LEVELS);
+  l.windowOrigin = glm::floor((camera - 0.5 * l.windowSize) / snap) * snap;
   const double gridSpan = l.windowSize * (1.0 + 2.0 * kGridMargin);
   l.cell = gridSpan / l.resolution;
   l.cells = l.resolution + 1;

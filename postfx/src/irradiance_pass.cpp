@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glkit/texture.h>
+
 #include "block_check.h"
 #include "frame_constants.h"
 #include "shader_library.h"
@@ -51,8 +53,12 @@ void IrradiancePass::ensureTexture(int resolution, int layers) {
   if (texture_ && textureResolution_ == resolution && textureLayers_ == layers) return;
   texture_.reset();  // the old size goes first: never two of them allocated at once
   texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_irradiance");
-  // R32F: additive sums of many triangles stay exact well past R16F's 11 bits.
-  glTextureStorage3D(texture_.id(), 1, GL_R32F, resolution, resolution, layers);
+  // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
+  // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
+  // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.
+  glTextureStorage3D(texture_.id(),
+                     std::min(glkit::mipLevelCount(resolution), shared::IRRADIANCE_MIP_LEVELS + 1),
+                     GL_R32F, resolution, resolution, layers);
   textureResolution_ = resolution;
   textureLayers_ = layers;
 }
@@ -166,6 +172,7 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
     glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
   }
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  glGenerateTextureMipmap(texture_.id());
   // The fragment atomics must land before the buffer is read back. (The irradiance itself is a
   // framebuffer write, ordered before later draws that sample it without a barrier.)
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

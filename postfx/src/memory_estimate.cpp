@@ -26,9 +26,10 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
     t.godRays = static_cast<std::uint64_t>(godRayReducedSize(width, frame.godRays.resolution)) *
                 std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) * 8;  // RGBA16F
   if (passes.physical) {
-    // R32F layers plus two vec4 per grid point ((resolution + 2)^2 points).
+    // R32F layers with their mip chain (4/3), plus two vec4 per grid point ((resolution + 2)^2
+    // points).
     const int resolution = frame.caustics.gridResolution;
-    t.irradiance = square(resolution) * 4 * std::uint64_t(frame.caustics.depthLayers) +
+    t.irradiance = square(resolution) * 4 * std::uint64_t(frame.caustics.depthLayers) * 4 / 3 +
                    square(resolution + 2) * 32;
   }
   if (passes.tile) {

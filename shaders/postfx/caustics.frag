@@ -20,26 +20,35 @@ layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray causticIrradianc
 // layer looked up where ITS ray through the same surface point lands: the pattern is moved
 // along the flat-water drift by the depth difference, so that the interpolation mixes the
 // same caustic features at two stages of focus rather than two unrelated patterns.
-float layerIrradiance(vec3 p, float depthBelow, float layer) {
+// Filtered over the pixel's footprint (lod: log2 of its side in texels): irradiance is linear,
+// so a far pixel gets the mean light over what it covers instead of one texel's sparkle.
+float layerIrradiance(vec3 p, float depthBelow, float layer, float lod) {
   float layerDepth = packedLayerDepth(u.irradianceDepths[0], u.irradianceDepths[1], int(layer));
   vec2 xz = layerSamplePoint(p.xz, depthBelow, layerDepth, u.oblique.xy);
   vec2 uv = (xz - u.irradianceWindow.xy) * u.irradianceWindow.z;
-  return textureLod(causticIrradiance, vec3(uv, layer), 0.0).r;
+  return textureLod(causticIrradiance, vec3(uv, layer), lod).r;
 }
 
 // Seed-004 irradiance at camera-relative p, depthBelow under the level, interpolated between
 // the depth layers around it; `weight` is how much of it to use (0 outside the window).
-float physicalIrradiance(vec3 p, float depthBelow, out float weight) {
+float physicalIrradiance(vec3 p, float depthBelow, float logFootprint, out float weight) {
   weight = 0.0;
   int layers = int(u.irradianceWindow.w);
   if (layers <= 0) return 1.0;
-  vec2 uv = (p.xz - u.irradianceWindow.xy) * u.irradianceWindow.z;
-  float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y));
+  // The fade follows the camera continuously (p is camera-relative): the texture's window snaps
+  // in steps of the coarsest mip texel, and a fade tied to it would jump with each step. Shrunk
+  // by one such step, it stays inside the texture.
+  vec2 uv = p.xz * u.irradianceWindow.z + 0.5;
+  float margin = float(1 << IRRADIANCE_MIP_LEVELS) / float(textureSize(causticIrradiance, 0).x);
+  float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)) - margin;
   weight = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge);
   if (!(weight > 0.0)) return 1.0;
   vec3 blend = layerBlend(depthBelow, u.irradianceDepths[0], u.irradianceDepths[1], layers);
-  float lower = blend.x < 0.0 ? 1.0 : layerIrradiance(p, depthBelow, blend.x);
-  float upper = layerIrradiance(p, depthBelow, blend.y);
+  // Texels per metre: the texture's side over the window's.
+  float lod =
+      logFootprint + log2(float(textureSize(causticIrradiance, 0).x) * u.irradianceWindow.z);
+  float lower = blend.x < 0.0 ? 1.0 : layerIrradiance(p, depthBelow, blend.x, lod);
+  float upper = layerIrradiance(p, depthBelow, blend.y, lod);
   return mix(lower, upper, blend.z);
 }
 #endif
@@ -171,19 +180,16 @@ void main() {
   float physicalWeight = 0.0;
 #if POSTFX_PHYSICAL
   // One irradiance for all channels: the mesh is refracted with the mean IOR.
-  vec3 physical = vec3(physicalIrradiance(p, depthBelow, physicalWeight));
+  vec3 physical = vec3(physicalIrradiance(p, depthBelow, logFootprint, physicalWeight));
 #endif
   // Inside the physical window the seed-002 lookups are not needed: zero weights skip their
   // fetches (on GPUs; a CPU rasteriser runs them masked).
-  vec4 cascades =
-      physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
+  vec4 cascades = physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
 #if POSTFX_DISPERSION
-  vec3 omega = causticFactorRgb(u.towardSun.xyz, waterNormal, u.eta.rgb, tau,
-                                reflectionWeight);
+  vec3 omega = causticFactorRgb(u.towardSun.xyz, waterNormal, u.eta.rgb, tau, reflectionWeight);
 #else
-  vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, tau,
-                                  reflectionWeight));
+  vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, tau, reflectionWeight));
 #endif
 #if POSTFX_PHYSICAL
   omega = mix(omega, physical, physicalWeight);
@@ -191,9 +197,11 @@ void main() {
 #endif  // POSTFX_TILE_IRRADIANCE
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
-  vec3 light = albedo * u.lightScale.rgb * causticTransmittance(u.absorptionPerDepth.rgb, depthBelow);
+  vec3 light =
+      albedo * u.lightScale.rgb * causticTransmittance(u.absorptionPerDepth.rgb, depthBelow);
   // ViewExtinction::Plugin: from the receiver to the camera, once (the host's fog must not).
-  light *= exp(-u.viewExtinction.rgb * submergedViewLength(distance, depthBelow, u.depthAndWater.z));
+  light *=
+      exp(-u.viewExtinction.rgb * submergedViewLength(distance, depthBelow, u.depthAndWater.z));
   outLight = vec4(light * raw, 0.0);
 #if POSTFX_RAW_OUTPUT
   outRaw = (raw.r + raw.g + raw.b) * (1.0 / 3.0);

@@ -55,6 +55,10 @@ SHARED_CONST int GODRAYS_MAX_SAMPLES = 64;
 // The WavefrontAreaRatio window's outer band (fraction of its side) over which its irradiance
 // fades to the RayDeviation model's.
 SHARED_CONST float IRRADIANCE_FADE_BAND = 0.125f;
+// Mip levels above the base of the WavefrontAreaRatio irradiance layers (the lookup filters a
+// pixel's footprint); the window snaps to texels of the coarsest, and its fade is taken from a
+// camera-centred window that much smaller, so that the fade moves smoothly with the camera.
+SHARED_CONST int IRRADIANCE_MIP_LEVELS = 4;
 
 SHARED_END
 

@@ -213,8 +213,9 @@ TEST_F(PostfxPhysicalTest, CausticsPassSamplesTheIrradiance) {
   EXPECT_GT(contrast, 1.5) << "the floor must show caustics";
 }
 
-// World-snapped: a camera move inside one texel leaves the irradiance bit for bit the same (no
-// swimming), and a move of whole texels shifts it by exactly those texels.
+// World-snapped: a camera move inside one snap step (16 texels: the coarsest mip level's texel)
+// leaves the irradiance bit for bit the same (no swimming), and a move of whole steps shifts it
+// by exactly those texels.
 TEST_F(PostfxPhysicalTest, PatternStaysPutWhenTheCameraMoves) {
   auto ocean = postfxtest::makeSmallOcean(2.0);
   ASSERT_TRUE(ocean);
@@ -230,14 +231,15 @@ TEST_F(PostfxPhysicalTest, PatternStaysPutWhenTheCameraMoves) {
   };
   postfx::testing::CausticIrradianceInfo a, b, c;
   const double texel = 16.0 / 128.0;
+  const int stepTexels = 1 << postfx::shared::IRRADIANCE_MIP_LEVELS;
   const std::vector<float> base = irradianceAt(glm::dvec3(0.0), a);
   const std::vector<float> nudged = irradianceAt(glm::dvec3(0.3 * texel, 0.0, 0.4 * texel), b);
-  const std::vector<float> moved = irradianceAt(glm::dvec3(5.0 * texel, 0.0, 0.0), c);
+  const std::vector<float> moved = irradianceAt(glm::dvec3(stepTexels * texel, 0.0, 0.0), c);
   EXPECT_EQ(a.windowOrigin, b.windowOrigin);
   int differing = 0;
   for (size_t i = 0; i < base.size(); ++i) differing += base[i] != nudged[i];
-  // 5 texels to the right: texel i of the moved window is texel i + 5 of the first one. The
-  // same triangles land 5 texels over, but their float positions relative to the new corner
+  // One step to the right: texel i of the moved window is texel i + 16 of the first one. The
+  // same triangles land 16 texels over, but their float positions relative to the new corner
   // round differently, so a texel centre right on a triangle edge may flip sides: a few texels
   // may differ, the pattern may not.
   double sumShifted = 0.0;
@@ -245,22 +247,22 @@ TEST_F(PostfxPhysicalTest, PatternStaysPutWhenTheCameraMoves) {
   const int n = a.resolution;
   for (int k = 0; k < a.layers; ++k)
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i + 5 < n; ++i) {
+      for (int i = 0; i + stepTexels < n; ++i) {
         const size_t at = (static_cast<size_t>(k) * n + j) * n;
-        const double d =
-            std::abs(static_cast<double>(moved[at + i]) - static_cast<double>(base[at + i + 5]));
+        const double d = std::abs(static_cast<double>(moved[at + i]) -
+                                  static_cast<double>(base[at + i + stepTexels]));
         sumShifted += d;
         flipped += d > 1e-3;
         ++compared;
       }
   std::printf(
-      "camera nudged 0.3 texel: %d texels differ; moved 5 texels: %d of %d texels "
+      "camera nudged 0.3 texel: %d texels differ; moved 16 texels: %d of %d texels "
       "differ by > 1e-3, mean difference %.2e\n",
       differing, flipped, compared, sumShifted / compared);
   EXPECT_EQ(differing, 0);
   EXPECT_LT(flipped, compared / 100);
   EXPECT_LT(sumShifted / compared, 1e-3);
-  EXPECT_DOUBLE_EQ(c.windowOrigin.x - a.windowOrigin.x, 5.0 * texel);
+  EXPECT_DOUBLE_EQ(c.windowOrigin.x - a.windowOrigin.x, stepTexels * texel);
 }
 
 TEST_F(PostfxPhysicalTest, NoneAboveWaterOnSkyAndNanFree) {

@@ -126,10 +126,15 @@ TEST_P(PassStability, StillIsStillAndShorterStepsChangeLess) {
     }
     EXPECT_GT(normal.mean, 0.0) << (camera ? "camera" : "time");
     // A smooth signal: 16 times shorter steps, about 16 times less change (measured 13-19
-    // times less for every pass except the physical model with time running, 4.9 times: its
-    // folds, finer than a pixel, move faster than linearly over a 33 ms step). 0.25 fails per-frame
-    // noise, sliding samples or popping, which do not shrink with the step.
-    EXPECT_LT(shorter.mean, 0.25 * normal.mean) << (camera ? "camera" : "time");
+    // times less for every pass except the physical model with time running: its fold cells,
+    // finer than a pixel, change brightness faster than linearly over a 33 ms step; 4.9 times
+    // with point lookups, 3.9 since its lookup filters the pixel's footprint, which took more
+    // off the 33 ms change, 0.34 -> 0.20, than off the 2 ms one, 0.069 -> 0.051). 0.25 (1/3 for
+    // that one) fails per-frame noise, sliding samples or popping, which do not shrink with the
+    // step.
+    const bool foldsInTime = !camera && pass == StabilityPass::PhysicalCaustics;
+    EXPECT_LT(shorter.mean, (foldsInTime ? 1.0 / 3.0 : 0.25) * normal.mean)
+        << (camera ? "camera" : "time");
   }
 }
 

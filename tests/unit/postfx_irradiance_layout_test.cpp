@@ -42,28 +42,31 @@ TEST(IrradianceLayout, WindowAndGridsAreSnappedInWorldSpace) {
   for (const glm::dvec3 camera :
        {glm::dvec3(3.3, -2.0, 7.1), glm::dvec3(1e6 + 0.37, -5.0, -1e6 - 0.91)}) {
     const IrradianceLayout a = irradianceLayout(physicalFrame(camera));
-    EXPECT_TRUE(isMultiple(a.windowOrigin.x, a.texel) && isMultiple(a.windowOrigin.y, a.texel));
-    // The camera stays inside the window's central texel.
-    EXPECT_LE(std::abs(a.windowOrigin.x + 0.5 * a.windowSize - camera.x), a.texel);
+    // The window snaps to texels of the coarsest mip level the lookup filters with, so that
+    // every level stays on one world grid as the camera moves.
+    const double snap = a.texel * double(1 << postfx::shared::IRRADIANCE_MIP_LEVELS);
+    EXPECT_TRUE(isMultiple(a.windowOrigin.x, snap) && isMultiple(a.windowOrigin.y, snap));
+    // The camera stays inside the window's central snap step.
+    EXPECT_LE(std::abs(a.windowOrigin.x + 0.5 * a.windowSize - camera.x), snap);
     for (int k = 0; k < a.layers; ++k)
       EXPECT_TRUE(isMultiple(a.gridOrigin[k].x, a.cell) && isMultiple(a.gridOrigin[k].y, a.cell));
-    // A move within the texel changes nothing; 10 whole texels move everything by exactly that.
-    const glm::dvec3 small = camera + glm::dvec3(0.3 * a.texel, 0.0, -0.2 * a.texel);
-    const glm::dvec3 whole = camera + glm::dvec3(10.0 * a.texel, 0.0, 0.0);
+    // A move within the step changes nothing; 10 whole steps move everything by exactly that.
+    const glm::dvec3 small = camera + glm::dvec3(0.3 * snap, 0.0, -0.2 * snap);
+    const glm::dvec3 whole = camera + glm::dvec3(10.0 * snap, 0.0, 0.0);
     const IrradianceLayout b = irradianceLayout(physicalFrame(small));
     const IrradianceLayout c = irradianceLayout(physicalFrame(whole));
-    const double sameInTexel = std::abs(b.windowOrigin.x - a.windowOrigin.x) +
-                               std::abs(b.windowOrigin.y - a.windowOrigin.y);
-    const double step = (c.windowOrigin.x - a.windowOrigin.x) / a.texel;
+    const double sameInStep = std::abs(b.windowOrigin.x - a.windowOrigin.x) +
+                              std::abs(b.windowOrigin.y - a.windowOrigin.y);
+    const double step = (c.windowOrigin.x - a.windowOrigin.x) / snap;
     std::printf(
-        "camera (%.2f, %.2f): window corner moves %.3g m for a 0.3-texel step, %.6f "
-        "texels for a 10-texel step\n",
-        camera.x, camera.z, sameInTexel, step);
-    const bool insideOneTexel =
-        std::floor((camera.x - 16.0) / a.texel) == std::floor((small.x - 16.0) / a.texel) &&
-        std::floor((camera.z - 16.0) / a.texel) == std::floor((small.z - 16.0) / a.texel);
-    if (insideOneTexel) {
-      EXPECT_EQ(sameInTexel, 0.0);
+        "camera (%.2f, %.2f): window corner moves %.3g m for a 0.3-step move, %.6f "
+        "steps for a 10-step move\n",
+        camera.x, camera.z, sameInStep, step);
+    const bool insideOneStep =
+        std::floor((camera.x - 16.0) / snap) == std::floor((small.x - 16.0) / snap) &&
+        std::floor((camera.z - 16.0) / snap) == std::floor((small.z - 16.0) / snap);
+    if (insideOneStep) {
+      EXPECT_EQ(sameInStep, 0.0);
     }
     EXPECT_NEAR(step, 10.0, 1e-6);
   }
