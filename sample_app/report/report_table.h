@@ -1,6 +1,6 @@
 #pragma once
 // One row per (pass, method, setting) of the error-against-run-time report, and the two text
-// forms it is written in: CSV for tools, a markdown table for the README.
+// forms it is written in: CSV for tools, a markdown table for docs/measurements.md.
 #include <limits>
 #include <string>
 #include <vector>

@@ -1,9 +1,10 @@
-// The composition contract of FrameDesc::viewExtinction (postfx/frame_desc.h, README
-// "Composition in your frame"): every piece of light dispatch() adds is attenuated along the view
-// ray exactly once. A flat-water frame is checked pixel by pixel against the documented model's
-// analytic radiance; the Host mode adds the same light without the view-path factor (so a fog
-// after dispatch applies it once); god rays, whose extinction is part of their in-scattering
-// integral, are refused in the Host mode rather than attenuated twice.
+// The composition contract of FrameDesc::viewExtinction (postfx/frame_desc.h;
+// docs/integration.md, "Composition in your frame"): every piece of light dispatch() adds is
+// attenuated along the view ray exactly once. A flat-water frame is checked pixel by pixel
+// against the documented model's analytic radiance; the Host mode adds the same light without
+// the view-path factor (so a fog after dispatch applies it once); god rays, whose extinction is
+// part of their in-scattering integral, are refused in the Host mode rather than attenuated
+// twice.
 #include <gtest/gtest.h>
 
 #include <algorithm>

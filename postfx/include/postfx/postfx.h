@@ -8,7 +8,8 @@
 //   postfx::dispatch(*fx, frameDesc);           // adds light, view-attenuated, into .target
 //   ... postfx::stats(*fx).pass(postfx::Pass::Caustics).medianMs   (postfx/diagnostics.h)
 // What is added, in which units, and who attenuates it along the view ray:
-// FrameDesc::viewExtinction (postfx/frame_desc.h) and the README's "Composition in your frame".
+// FrameDesc::viewExtinction (postfx/frame_desc.h) and docs/integration.md, "Composition in your
+// frame".
 //   postfx::destroy(fx);
 //
 // Threading and GL: every call needs the host's GL 4.5 context current on the calling thread.

@@ -56,7 +56,8 @@ struct CausticsSettings {
   float reflectionWeight = 0.25f;
 
   // Multiplier on the sun's irradiance for the added caustic light, kIntensityRange. The light
-  // added is a copy of the direct underwater sun without 1/pi and surface Fresnel (README,
+  // added is a copy of the direct underwater sun without 1/pi and surface Fresnel
+  // (docs/integration.md,
   // "Composition in your frame"): (1 - F) / pi replaces a Lambertian direct sun exactly.
   float intensity = 1.0f;
 
@@ -171,7 +172,7 @@ struct GodRaySettings {
   // kMaxMarchDistanceRange.
   float maxDistance = 60.0f;
   // Half by default: as accurate as full resolution against the dense reference at a third of
-  // the cost (see the README's error-against-time table).
+  // the cost (see the error-against-time table in docs/measurements.md).
   GodRayResolution resolution = GodRayResolution::Half;
   // Shift the grid per pixel by a 4x4 ordered-dither phase that is fixed on screen and in time:
   // breaks the banding of few samples into fine static noise, without temporal flicker.
