@@ -89,11 +89,9 @@ Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   ensureGridPoints(layout_.cells + 1);
   // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer
   // without bytes: found here, before anything is drawn.
-  GLint width = 0;
-  glGetTextureLevelParameteriv(texture_.id(), 0, GL_TEXTURE_WIDTH, &width);
   GLint64 bytes = 0;
   glGetNamedBufferParameteri64v(gridPoints_.id(), GL_BUFFER_SIZE, &bytes);
-  if (width != layout_.resolution || bytes <= 0) {
+  if (glkit::storedWidth(texture_) != layout_.resolution || bytes <= 0) {
     error = "caustics: the driver could not allocate the irradiance layers (gridResolution " +
             std::to_string(layout_.resolution) + ")";
     return Result::OutOfMemory;

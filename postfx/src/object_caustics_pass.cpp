@@ -108,7 +108,7 @@ void ObjectCausticsPass::ensureGrid(int size) {
 }
 
 void ObjectCausticsPass::ensureLandings(int size, int layers) {
-  if (landings_.id() != 0 && size == gridSize_ && layers == landingLayers_) return;
+  if (glkit::storedWidth(landings_) == size && layers == landingLayers_) return;
   landings_.reset();  // the old size goes first
   landings_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.object_caustics.landings");
   glTextureStorage3D(landings_.id(), 1, GL_RGBA32F, size, size, layers);
@@ -131,28 +131,21 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
                                    const shared::ObjectCausticsBlock& block, std::string& error) {
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
   dispersed_ = block.receiver.w > 0.5f;
-  // Before ensureGrid, which records the grid size these are made for.
   ensureLandings(s.gridSize, dispersed_ ? 6 : 2);
   ensureGrid(s.gridSize);
   ensureMap(s.mapSize);
   // Storage the driver refused (GL_OUT_OF_MEMORY) leaves a map without levels and its
   // framebuffer incomplete: found here, before any pass adds light.
-  const struct {
-    GLuint texture;
-    int size;
-    const char* what;
-    const char* setting;
-  } made[] = {{history_[0].id(), s.mapSize, "the caustic map", "mapSize"},
-              {history_[1].id(), s.mapSize, "the caustic map", "mapSize"},
-              {landings_.id(), s.gridSize, "the ray landings", "gridSize"}};
-  for (const auto& m : made) {
-    GLint width = 0;
-    glGetTextureLevelParameteriv(m.texture, 0, GL_TEXTURE_WIDTH, &width);
-    if (width != m.size) {
-      error = std::string("objectCaustics: the driver could not allocate ") + m.what + " (" +
-              m.setting + " " + std::to_string(m.size) + ")";
-      return Result::OutOfMemory;
-    }
+  if (glkit::storedWidth(history_[0]) != s.mapSize ||
+      glkit::storedWidth(history_[1]) != s.mapSize) {
+    error = "objectCaustics: the driver could not allocate the caustic map (mapSize " +
+            std::to_string(s.mapSize) + ")";
+    return Result::OutOfMemory;
+  }
+  if (glkit::storedWidth(landings_) != s.gridSize) {
+    error = "objectCaustics: the driver could not allocate the ray landings (gridSize " +
+            std::to_string(s.gridSize) + ")";
+    return Result::OutOfMemory;
   }
   for (GLuint fbo : {frontFbo_.id(), backFbo_.id(), splatFbo_.id()}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {

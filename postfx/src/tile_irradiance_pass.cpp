@@ -75,11 +75,9 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
     glClearNamedBufferData(accumulators_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     accumulatorBytes_ = bytes;
   }
-  GLint width = 0;
-  glGetTextureLevelParameteriv(texture_.id(), 0, GL_TEXTURE_WIDTH, &width);
   GLint64 allocated = 0;
   glGetNamedBufferParameteri64v(accumulators_.id(), GL_BUFFER_SIZE, &allocated);
-  if (width != l.resolution || allocated != bytes) {
+  if (glkit::storedWidth(texture_) != l.resolution || allocated != bytes) {
     error = "caustics: the driver could not allocate the tile irradiance (tileResolution " +
             std::to_string(l.resolution) + ")";
     return Result::OutOfMemory;

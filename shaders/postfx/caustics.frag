@@ -39,14 +39,14 @@ float physicalIrradiance(vec3 p, float depthBelow, float logFootprint, out float
   // in steps of the coarsest mip texel, and a fade tied to it would jump with each step. Shrunk
   // by one such step, it stays inside the texture.
   vec2 uv = p.xz * u.irradianceWindow.z + 0.5;
-  float margin = float(1 << IRRADIANCE_MIP_LEVELS) / float(textureSize(causticIrradiance, 0).x);
+  float texels = float(textureSize(causticIrradiance, 0).x);
+  float margin = float(1 << IRRADIANCE_MIP_LEVELS) / texels;
   float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)) - margin;
   weight = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge);
   if (!(weight > 0.0)) return 1.0;
   vec3 blend = layerBlend(depthBelow, u.irradianceDepths[0], u.irradianceDepths[1], layers);
   // Texels per metre: the texture's side over the window's.
-  float lod =
-      logFootprint + log2(float(textureSize(causticIrradiance, 0).x) * u.irradianceWindow.z);
+  float lod = logFootprint + log2(texels * u.irradianceWindow.z);
   float lower = blend.x < 0.0 ? 1.0 : layerIrradiance(p, depthBelow, blend.x, lod);
   float upper = layerIrradiance(p, depthBelow, blend.y, lod);
   return mix(lower, upper, blend.z);

@@ -67,9 +67,9 @@ void main() {
   float spreadArea = abs(alongX.x * alongY.y - alongX.y * alongY.x) / u.grid.w;
   splatShape =
       splatCovariance(record.z, alongX, alongY, u.splatScale.y, smoothstep(1.5, 4.0, spreadArea));
-  // NaN fails every comparison, Inf fails the bound: neither reaches the map.
-  if (!(all(lessThan(abs(splatFlux), vec3(1e30))) && all(lessThan(abs(splatCentre), vec2(1e30))) &&
-        all(greaterThanEqual(splatShape.xz, vec2(u.grid.z * u.grid.z))) &&
+  // The trace stored only finite landings and flux; a neighbour's landing can still make the
+  // shape NaN or Inf, which fails these comparisons and never reaches the map.
+  if (!(all(greaterThanEqual(splatShape.xz, vec2(u.grid.z * u.grid.z))) &&
         all(lessThan(splatShape, vec3(1e30))))) {
     dropRay();
     return;

@@ -172,10 +172,6 @@ bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out f
   centre = vec2(0.0);
   rayFlux = vec3(0.0);
   sigma = u.grid.z;
-  // texelFetch outside the grid is undefined: a neighbour of an edge cell must not read it.
-  if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(int(u.grid.x))))) {
-    return false;
-  }
   vec4 front = texelFetch(frontPosition, cell, 0);
   if (!(front.w > 0.5)) return false;
   int caster = clamp(int(front.w + 0.5) - 1, 0, POSTFX_MAX_CASTERS - 1);

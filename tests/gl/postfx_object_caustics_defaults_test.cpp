@@ -25,12 +25,10 @@ struct DefaultsRun {
   double placementError = 0.0;  // relative L1 distance of the whole map against the reference
 };
 
-// Mean over texels of |a - b| / mean(b), green channel, over the texels of `mask`.
-double relativeL1(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b,
-                  const std::vector<bool>& mask) {
+// Mean over texels of |a - b| / mean(b), green channel.
+double relativeL1(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
   double diff = 0.0, sum = 0.0;
   for (size_t i = 0; i < a.size(); ++i) {
-    if (!mask[i]) continue;
     diff += std::abs(a[i].g - b[i].g);
     sum += b[i].g;
   }
@@ -78,7 +76,6 @@ DefaultsRun runDefaults(const SphereCaster& sphere, const glm::dvec3& sun, doubl
   for (const glm::dvec3& v : blurred)
     if (v.g > 0.0) litMean += v.g, ++lit;
   litMean /= std::max(lit, 1);
-  std::vector<bool> halo(gpu.size(), false), all(gpu.size(), true);
   double squared = 0.0, mean = 0.0;
   int count = 0;
   for (int y = 0; y < map.size; ++y) {
@@ -87,7 +84,6 @@ DefaultsRun runDefaults(const SphereCaster& sphere, const glm::dvec3& sun, doubl
       const glm::dvec3 p = texelOnPlane(map, glm::dvec2(x, y), 0.0);
       if (!(blurred[i].g > 0.1 * litMean) || glm::length(p - refFocus) < 0.25 * sphere.radius)
         continue;
-      halo[i] = true;
       squared += (gpu[i].g - blurred[i].g) * (gpu[i].g - blurred[i].g);
       mean += blurred[i].g;
       ++count;
@@ -95,8 +91,8 @@ DefaultsRun runDefaults(const SphereCaster& sphere, const glm::dvec3& sun, doubl
   }
   mean /= std::max(count, 1);
   run.haloError = count > 0 ? std::sqrt(squared / count) / mean : 0.0;
-  run.placementError = relativeL1(gaussianBlur(gpu, map.size, 2.0),
-                                  gaussianBlur(ref.irradiance, map.size, 2.0), all);
+  run.placementError =
+      relativeL1(gaussianBlur(gpu, map.size, 2.0), gaussianBlur(ref.irradiance, map.size, 2.0));
   std::printf(
       "%s, defaults (map %d, grid %d, %d receiver iteration(s), splat %.1f, footprint x%.1f): "
       "focus error %.3f%% of R; flux in map error %.3f%% (G); %.2f%% of the transmitted flux "

@@ -15,6 +15,15 @@ inline int mipLevelCount(int size) {
   return std::bit_width(static_cast<unsigned>(size));
 }
 
+// Width of level 0 of `texture`, 0 when it has no storage: glTextureStorage* that the driver
+// refused (GL_OUT_OF_MEMORY) leaves the texture without levels, which is how a pass finds out
+// before it draws anything.
+inline int storedWidth(const Texture& texture) {
+  GLint width = 0;
+  if (texture) glGetTextureLevelParameteriv(texture.id(), 0, GL_TEXTURE_WIDTH, &width);
+  return width;
+}
+
 // One mip level, clamp-to-edge, `filter` for both min and mag (render targets are read
 // texel-exact: GL_NEAREST unless the reader interpolates on purpose), labelled for debuggers.
 Texture createTexture2D(GLenum format, int width, int height, GLenum filter,
