@@ -109,7 +109,9 @@ Result ensureTileIrradiance(Context& context, const FrameDesc& frame, int& varia
     context.tileIrradianceReady = true;
   }
   const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
-  return context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, variant, error);
+  return context.caustics.ensureTileProgram(
+      layout.groups, layout.cascadeMask,
+      frame.caustics.tileLookupResolution == CausticsLookupResolution::Half, variant, error);
 }
 
 // Our framebuffers hold the host's target only within the frame: every pass prepared lets go of

@@ -31,17 +31,20 @@ class CausticsPass {
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                  const shared::CausticsBlock& block, std::string& error);
   // The TileIrradiance variant of the caustics program: `groups` RGBA fetches per cascade (1 or
-  // 2) for the cascades in `cascadeMask` (bit c: cascade c). Built the first time a frame needs
-  // it: a context that never uses the model never compiles it. Returns the variant's index for
-  // drawCaustics (>= 1).
-  Result ensureTileProgram(int groups, int cascadeMask, int& variant, std::string& error);
+  // 2) for the cascades in `cascadeMask` (bit c: cascade c), its lookups at every pixel or at
+  // half resolution (`reduced`: then a lookup program and an upsampling caustics program).
+  // Built the first time a frame needs it: a context that never uses the model never compiles
+  // it. Returns the variant's index for drawCaustics (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, bool reduced, int& variant,
+                           std::string& error);
   // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
   // WavefrontAreaRatio model's texture, tile: the TileIrradiance model's (0 when not in use).
   void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance,
                  GLuint tile = 0);
   void drawFloor();
   // tileVariant: 0 for the RayDeviation / WavefrontAreaRatio program, else the TileIrradiance
-  // variant ensureTileProgram returned.
+  // variant ensureTileProgram returned (a reduced one draws its lookups first, then blends them
+  // in: both inside the caustics pass's timing).
   void drawCaustics(int tileVariant = 0);
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
   void finish();
@@ -52,12 +55,17 @@ class CausticsPass {
 
  private:
   void ensureRaw(int width, int height);
+  void ensureReduced(int width, int height);
+  void drawReducedLookups(const glkit::Program& program);
 
   CreateDesc desc_{};
   glkit::Program caustics_, floor_;
-  // TileIrradiance variants: [groups - 1][cascade mask], index 1 + 16 * (groups - 1) + mask.
+  // TileIrradiance variants: [reduced][groups - 1][cascade mask], index
+  // 1 + 32 * reduced + 16 * (groups - 1) + mask; the reduced ones' lookups in tileLookups_.
   static constexpr int kTileMasks = 1 << kMaxCascades;
-  glkit::Program tileCaustics_[2 * kTileMasks];
+  static constexpr int kTileVariants = 2 * kTileMasks;
+  glkit::Program tileCaustics_[2 * kTileVariants];
+  glkit::Program tileLookups_[kTileVariants];
   // The floor draws through its own framebuffer with the same attachments: the switch makes a
   // software rasterizer start a new scene, so its timer queries separate the two passes.
   glkit::Framebuffer framebuffer_, floorFramebuffer_;
@@ -68,6 +76,10 @@ class CausticsPass {
   glkit::Sampler tileSampler_;
   glkit::Texture rawTexture_;
   int rawWidth_ = 0, rawHeight_ = 0;
+  // The half-resolution lookups (CausticsLookupResolution::Half), RG16F, allocated on first use.
+  glkit::Texture reducedTexture_;
+  glkit::Framebuffer reducedFramebuffer_;
+  int reducedWidth_ = 0, reducedHeight_ = 0, fullWidth_ = 0, fullHeight_ = 0;
 };
 
 }  // namespace postfx::detail

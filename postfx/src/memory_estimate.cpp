@@ -38,6 +38,9 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
     const TileIrradianceLayout l = tileIrradianceLayout(frame);
     const std::uint64_t texels = square(l.resolution) * std::uint64_t(l.cascadeCount);
     t.tile = texels * std::uint64_t(l.groups) * 8 * 4 / 3 + texels * std::uint64_t(l.layers) * 4;
+    // The half-resolution lookups: RG16F, irradiance and distance.
+    if (frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
+      t.tile += std::uint64_t((width + 1) / 2) * std::uint64_t((height + 1) / 2) * 4;
   }
   if (passes.objects) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
@@ -75,7 +78,8 @@ Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int wi
   const std::pair<std::uint64_t, const char*> others[] = {
       {t.godRays, "the god-ray march texture (target size, godRays.resolution)"},
       {t.irradiance, "the irradiance layers (caustics.gridResolution, depthLayers)"},
-      {t.tile, "the tile irradiance (caustics.tileResolution, tileDepthLayers)"},
+      {t.tile,
+       "the tile irradiance (caustics.tileResolution, tileDepthLayers, tileLookupResolution)"},
       {t.casterMaps, "the caster maps (objectCaustics.settings.gridSize)"},
       {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"}};
   for (const auto& [bytes, name] : others)

@@ -3,7 +3,8 @@
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
 // POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL,
 // POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the TileIrradiance variant defines
-// POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers each).
+// POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers each),
+// and POSTFX_TILE_REDUCED where the lookups ran at half resolution (tile_irradiance_reduced.frag).
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
@@ -14,6 +15,7 @@
 #include "shared/postfx_tile_irradiance.h"
 #include "postfx/physical_irradiance_lookup.glsl"
 #include "postfx/tile_irradiance_lookup.glsl"
+#include "postfx/tile_irradiance_upsample.glsl"
 
 #if POSTFX_TRIPLANAR_WALLS
 // Tri-planar weights below this skip their projection's fetches (on GPUs).
@@ -71,11 +73,14 @@ void main() {
 #endif
   // Pixel footprint in metres, widened where the surface is seen at a grazing angle.
   float distance = length(viewPos);
-  float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
-  float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
+  float logFootprint = surfaceLogFootprint(n, p, distance);
 
 #ifdef POSTFX_TILE_IRRADIANCE
+#if POSTFX_TILE_REDUCED
+  vec3 omega = vec3(upsampledTileIrradiance(pixel, distance));
+#else
   vec3 omega = vec3(tileIrradianceAt(p, depthBelow, logFootprint));
+#endif
 #else
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;

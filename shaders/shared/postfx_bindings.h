@@ -18,6 +18,9 @@
 // The god rays' reduced-resolution march, read by their upsample: it reuses the irradiance unit,
 // whose reader (the caustics pass) has drawn by then.
 #define POSTFX_UNIT_GODRAYS_REDUCED 5
+// The TileIrradiance lookups at half resolution, read by the caustics pass's upsample: the
+// irradiance unit again, which the reduced lookups read before.
+#define POSTFX_UNIT_TILE_REDUCED 5
 // The WavefrontAreaRatio pre-pass's grid points (a buffer texture).
 #define POSTFX_UNIT_GRID_POINTS 6
 // Units [0, POSTFX_UNIT_COUNT) are the ones GlStateGuard saves and restores.
