@@ -104,11 +104,12 @@ void main() {
 #endif  // POSTFX_TILE_IRRADIANCE
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
-  vec3 light =
-      albedo * u.lightScale.rgb * causticTransmittance(u.absorptionPerDepth.rgb, depthBelow);
-  // ViewExtinction::Plugin: from the receiver to the camera, once (the host's fog must not).
-  light *=
-      exp(-u.viewExtinction.rgb * submergedViewLength(distance, depthBelow, u.depthAndWater.z));
+  // Beer-Lambert along the refracted sun path to the receiver (causticTransmittance) and, with
+  // ViewExtinction::Plugin, from the receiver to the camera, once (the host's fog must not):
+  // one exp for both.
+  float viewLength = submergedViewLength(distance, depthBelow, u.depthAndWater.z);
+  vec3 light = albedo * u.lightScale.rgb *
+               exp(-(u.absorptionPerDepth.rgb * depthBelow + u.viewExtinction.rgb * viewLength));
   outLight = vec4(light * raw, 0.0);
 #if POSTFX_RAW_OUTPUT
   outRaw = (raw.r + raw.g + raw.b) * (1.0 / 3.0);
