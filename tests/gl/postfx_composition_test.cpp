@@ -55,8 +55,8 @@ glm::dvec3 analyticRadiance(const postfx::FrameDesc& f, const postfxtest::PixelT
   const double viewLength = glm::length(t.position);  // camera under water: all of it
   glm::dvec3 out;
   for (int c = 0; c < 3; ++c) {
-    const double a = f.water.absorption[c], sigmaT = a + f.water.scattering[c];
-    out[c] = double(f.sun.irradiance[c]) * f.caustics.intensity *
+    const double a = f.water.absorption[c], sigmaT = a + double(f.water.scattering[c]);
+    out[c] = double(f.sun.irradiance[c]) * double(f.caustics.intensity) *
              std::max(glm::dot(t.normal, l), 0.0) * std::exp(-a * depth / l.y) *
              (viewExtinction ? std::exp(-sigmaT * viewLength) : 1.0);
   }
@@ -92,8 +92,8 @@ TEST_F(PostfxCompositionTest, FlatWaterMatchesTheDocumentedModelAttenuatedOnce) 
       for (int c = 0; c < 3; ++c) {
         // Float shader math against double, a D32F depth and an RG16_SNORM normal (measured
         // 3e-6): 2e-4 leaves room for drivers, far below a missing or doubled factor.
-        worstPlugin = std::max(worstPlugin, std::abs(added[0][i][c] / plugin[c] - 1.0));
-        worstHost = std::max(worstHost, std::abs(added[1][i][c] / host[c] - 1.0));
+        worstPlugin = std::max(worstPlugin, std::abs(double(added[0][i][c]) / plugin[c] - 1.0));
+        worstHost = std::max(worstHost, std::abs(double(added[1][i][c]) / host[c] - 1.0));
         minTransmittance = std::min(minTransmittance, plugin[c] / host[c]);
       }
     }

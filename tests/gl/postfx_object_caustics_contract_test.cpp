@@ -261,10 +261,12 @@ TEST_F(PostfxObjectCausticsContractTest, SettingsOverTheMemoryBudgetAreRefusedUp
   host.scene.clearTarget(marker);
   ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
   const postfx::FrameStats& stats = postfx::stats(*fx);
-  for (int p = 0; p < postfx::kPassCount; ++p)
-    if (stats.passes[p].present)
+  for (int p = 0; p < postfx::kPassCount; ++p) {
+    if (stats.passes[p].present) {
       EXPECT_FALSE(stats.passes[p].skipped)
           << postfx::toString(postfx::Pass(p)) << ": every pass ran";
+    }
+  }
   int changed = 0;
   for (const glm::vec4& v : readRgba(host.scene.target, w, h)) changed += v != marker ? 1 : 0;
   EXPECT_GT(changed, 100) << "the frame within budget adds light (the test can tell)";
