@@ -95,17 +95,17 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
   return Result::Ok;
 }
 
-Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
+Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
                                        std::string& error) {
   const int g = groups > 1 ? 2 : 1;
   const int mask = cascadeMask & (kTileMasks - 1);
-  const int index = kTileMasks * (g - 1) + mask;
+  const int index = 2 * kTileMasks * (physical ? 1 : 0) + kTileMasks * (g - 1) + mask;
   variant = 1 + index;
   glkit::Program& program = tileCaustics_[index];
   if (program.id() != 0) return Result::Ok;
-  // The window model's lookup is compiled out: the two models never run together.
+  // The TileIrradiance model alone compiles the window's lookup out.
   const std::string tileDefines =
-      "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n"
+      std::string(physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n") +
       "#define POSTFX_TILE_IRRADIANCE 1\n"
       "#define POSTFX_TILE_GROUPS " +
       std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
@@ -200,9 +200,9 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
     glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, irradiance);
     glBindSampler(POSTFX_UNIT_IRRADIANCE, irradianceSampler_.id());
   }
-  if (tile != 0) {  // the same unit: the two models never run together
-    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, tile);
-    glBindSampler(POSTFX_UNIT_IRRADIANCE, tileSampler_.id());
+  if (tile != 0) {
+    glBindTextureUnit(POSTFX_UNIT_TILE_IRRADIANCE, tile);
+    glBindSampler(POSTFX_UNIT_TILE_IRRADIANCE, tileSampler_.id());
   }
 }
 

@@ -30,18 +30,20 @@ class CausticsPass {
   // message when the framebuffer is incomplete.
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                  const shared::CausticsBlock& block, std::string& error);
-  // The TileIrradiance variant of the caustics program: `groups` RGBA fetches per cascade (1 or
-  // 2) for the cascades in `cascadeMask` (bit c: cascade c). Built the first time a frame needs
-  // it: a context that never uses the model never compiles it. Returns the variant's index for
-  // drawCaustics (>= 1).
-  Result ensureTileProgram(int groups, int cascadeMask, int& variant, std::string& error);
+  // The variant of the caustics program that reads the tile irradiance: `groups` RGBA fetches
+  // per cascade (1 or 2) for the cascades in `cascadeMask` (bit c: cascade c); `physical`: the
+  // WavefrontAreaRatio window, continued beyond its edge by the tile irradiance, else the
+  // TileIrradiance model alone. Built the first time a frame needs it: a context that never
+  // uses the field never compiles it. Returns the variant's index for drawCaustics (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
+                           std::string& error);
   // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
-  // WavefrontAreaRatio model's texture, tile: the TileIrradiance model's (0 when not in use).
+  // WavefrontAreaRatio model's texture, tile: the tile irradiance (0 when not in use).
   void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance,
                  GLuint tile = 0);
   void drawFloor();
-  // tileVariant: 0 for the RayDeviation / WavefrontAreaRatio program, else the TileIrradiance
-  // variant ensureTileProgram returned.
+  // tileVariant: 0 for the RayDeviation program (and WavefrontAreaRatio without a tile field),
+  // else the variant ensureTileProgram returned.
   void drawCaustics(int tileVariant = 0);
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
   void finish();
@@ -55,9 +57,10 @@ class CausticsPass {
 
   CreateDesc desc_{};
   glkit::Program caustics_, floor_;
-  // TileIrradiance variants: [groups - 1][cascade mask], index 1 + 16 * (groups - 1) + mask.
+  // Tile-irradiance variants: [physical][groups - 1][cascade mask], index
+  // 1 + 32 * physical + 16 * (groups - 1) + mask.
   static constexpr int kTileMasks = 1 << kMaxCascades;
-  glkit::Program tileCaustics_[2 * kTileMasks];
+  glkit::Program tileCaustics_[2 * 2 * kTileMasks];
   // The floor draws through its own framebuffer with the same attachments: the switch makes a
   // software rasterizer start a new scene, so its timer queries separate the two passes.
   glkit::Framebuffer framebuffer_, floorFramebuffer_;
