@@ -7,6 +7,7 @@
 
 #include "block_check.h"
 #include "frame_constants.h"
+#include "gl_sizes.h"
 #include "shader_library.h"
 #include "shared_math.h"
 
@@ -56,11 +57,14 @@ void IrradiancePass::ensureTexture(int resolution, int layers) {
   // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
   // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
   // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.
-  glTextureStorage3D(texture_.id(),
-                     std::min(glkit::mipLevelCount(resolution), shared::IRRADIANCE_MIP_LEVELS + 1),
-                     GL_R32F, resolution, resolution, layers);
+  glTextureStorage3D(texture_.id(), irradianceMipLevels(resolution), GL_R32F, resolution,
+                     resolution, layers);
   textureResolution_ = resolution;
   textureLayers_ = layers;
+}
+
+std::uint64_t IrradiancePass::allocatedBytes() const {
+  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.id());  // R32F
 }
 
 double IrradiancePass::pollClampCounts() {

@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 #include <glkit/handle.h>
@@ -45,6 +46,8 @@ class IrradiancePass {
 
   GLuint texture() const { return texture_.id(); }
   const IrradianceLayout& layout() const { return layout_; }
+  // What its texture and grid-point buffer hold now, asked of GL (0 before the first frame).
+  std::uint64_t allocatedBytes() const;
 
  private:
   void ensureTexture(int resolution, int layers);
