@@ -121,10 +121,14 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
   const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
   const double texelsPerMetre = l.resolution / l.windowSize;
-  // Triangles whose refracted area is under a quarter texel go to the point draw: their area
-  // ratio exceeds (nominal beam area of a triangle, half a cell squared) / (1/4 texel).
+  // Triangles whose refracted area is under half a texel go to the point draw: their area ratio
+  // exceeds (nominal beam area of a triangle, half a cell squared) / (1/2 texel). Rasterised,
+  // such a triangle covers 0, 1 or 2 texel centres as it moves (a quarter texel was the bound
+  // before: with time running the physical model then changed 0.207 per frame against 0.168
+  // now, ocean_sample report --only stability --quick). Half a texel stays under flat water's
+  // own triangles (0.78 texel), which keep their exact rasterised ratio of 1.
   const double cellTexels = l.cell * texelsPerMetre;
-  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.25);
+  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.5);
   const GLuint compute = vertices_.id();
   glProgramUniform1i(compute, 4, water.cascadeCount);
   glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),
