@@ -54,7 +54,7 @@ TEST_F(PostfxPhysicalTest, FlatWaterGivesOneEverywhere) {
   EXPECT_NEAR(hi, 1.0, 1e-3);
 
   // The caustics pass: raw = E * (n . up) on the floor, = up.y here, inside the window and
-  // out (seed 002 also gives 1 on flat water).
+  // out (the tile irradiance that continues the window also gives 1 on flat water).
   const int w = scene.spec().width, h = scene.spec().height;
   const auto raw = postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), w, h);
   const double upY = -postfx::detail::refractedSunDown(frame.sun.direction, frame.water.ior).y;
