@@ -109,8 +109,12 @@ Result ensureTileIrradiance(Context& context, const FrameDesc& frame, bool physi
     context.tileIrradianceReady = true;
   }
   const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
-  return context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, physical, variant,
-                                            error);
+  // The TileIrradiance model may look the field up at half resolution; the window continued by
+  // it looks it up per pixel (only in its outer band and beyond).
+  const bool reduced =
+      !physical && frame.caustics.tileLookupResolution == CausticsLookupResolution::Half;
+  return context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, reduced, physical,
+                                            variant, error);
 }
 
 // Our framebuffers hold the host's target only within the frame: every pass prepared lets go of

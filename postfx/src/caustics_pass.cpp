@@ -95,26 +95,73 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
   return Result::Ok;
 }
 
-Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
-                                       std::string& error) {
+Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced, bool physical,
+                                       int& variant, std::string& error) {
+  reduced = reduced && !physical;
   const int g = groups > 1 ? 2 : 1;
   const int mask = cascadeMask & (kTileMasks - 1);
-  const int index = 2 * kTileMasks * (physical ? 1 : 0) + kTileMasks * (g - 1) + mask;
-  variant = 1 + index;
-  glkit::Program& program = tileCaustics_[index];
+  const int index = kTileMasks * (g - 1) + mask;
+  variant = 1 + (physical ? 2 * kTileVariants : reduced ? kTileVariants : 0) + index;
+  glkit::Program& program = tileCaustics_[variant - 1];
   if (program.id() != 0) return Result::Ok;
   // The TileIrradiance model alone compiles the window's lookup out.
-  const std::string tileDefines =
+  std::string tileDefines =
       std::string(physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n") +
       "#define POSTFX_TILE_IRRADIANCE 1\n"
       "#define POSTFX_TILE_GROUPS " +
       std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
-  return buildPrograms(shaderDefines(desc_),
-                       {{program,
-                         "postfx.caustics_tile",
-                         {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
-                         tileDefines}},
-                       error);
+  tileDefines += reduced ? "#define POSTFX_TILE_REDUCED 1\n" : "#define POSTFX_TILE_REDUCED 0\n";
+  const std::string defines = shaderDefines(desc_);
+  if (!reduced)
+    return buildPrograms(defines,
+                         {{program,
+                           physical ? "postfx.caustics_physical_tile" : "postfx.caustics_tile",
+                           {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
+                           tileDefines}},
+                         error);
+  return buildPrograms(
+      defines,
+      {{program,
+        "postfx.caustics_tile_upsampled",
+        {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
+        tileDefines},
+       {tileLookups_[index],
+        "postfx.caustics_tile_lookups",
+        {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/tile_irradiance_reduced.frag"}},
+        tileDefines}},
+      error);
+}
+
+void CausticsPass::ensureReduced(int width, int height) {
+  const int w = (width + 1) / 2, h = (height + 1) / 2;  // texel i: pixel 2i
+  fullWidth_ = width;
+  fullHeight_ = height;
+  if (reducedTexture_ && reducedWidth_ == w && reducedHeight_ == h) return;
+  reducedTexture_.reset();  // the old size goes first: never two of them allocated at once
+  reducedTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.tile_lookups");
+  glTextureStorage2D(reducedTexture_.id(), 1, GL_RG16F, w, h);
+  reducedWidth_ = w;
+  reducedHeight_ = h;
+  if (!reducedFramebuffer_)
+    reducedFramebuffer_ = makeFramebuffer(1, "postfx.caustics.tile_lookups");
+  glNamedFramebufferTexture(reducedFramebuffer_.id(), GL_COLOR_ATTACHMENT0, reducedTexture_.id(),
+                            0);
+}
+
+void CausticsPass::drawReducedLookups(const glkit::Program& program) {
+  // Under bindState's state, with the tile irradiance on its unit: its own target, unblended.
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, reducedFramebuffer_.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(reducedWidth_),
+                     static_cast<float>(reducedHeight_));
+  glDisablei(GL_BLEND, 0);
+  glUseProgram(program.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Back to bindState's: the upsample reads the lookups on the irradiance unit, texel by texel.
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(fullWidth_),
+                     static_cast<float>(fullHeight_));
+  glEnablei(GL_BLEND, 0);
+  glBindTextureUnit(POSTFX_UNIT_TILE_REDUCED, reducedTexture_.id());
+  glBindSampler(POSTFX_UNIT_TILE_REDUCED, pointSampler_.id());
 }
 
 void CausticsPass::ensureRaw(int width, int height) {
@@ -143,6 +190,9 @@ void CausticsPass::clearRaw(int width, int height) {
 Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                              const shared::CausticsBlock& block, std::string& error) {
   ensureRaw(textures.width, textures.height);
+  if (frame.caustics.enabled && frame.caustics.model == CausticsModel::TileIrradiance &&
+      frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
+    ensureReduced(textures.width, textures.height);
   if (floorFramebuffer_)
     glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.target.texture,
                               0);
@@ -214,6 +264,8 @@ void CausticsPass::drawFloor() {
 }
 
 void CausticsPass::drawCaustics(int tileVariant) {
+  if (tileVariant > kTileVariants && tileVariant <= 2 * kTileVariants)
+    drawReducedLookups(tileLookups_[tileVariant - 1 - kTileVariants]);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glUseProgram(tileVariant > 0 ? tileCaustics_[tileVariant - 1].id() : caustics_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

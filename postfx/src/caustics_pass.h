@@ -32,10 +32,12 @@ class CausticsPass {
                  const shared::CausticsBlock& block, std::string& error);
   // The variant of the caustics program that reads the tile irradiance: `groups` RGBA fetches
   // per cascade (1 or 2) for the cascades in `cascadeMask` (bit c: cascade c); `physical`: the
-  // WavefrontAreaRatio window, continued beyond its edge by the tile irradiance, else the
-  // TileIrradiance model alone. Built the first time a frame needs it: a context that never
-  // uses the field never compiles it. Returns the variant's index for drawCaustics (>= 1).
-  Result ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
+  // WavefrontAreaRatio window, continued beyond its edge by the tile irradiance (looked up per
+  // pixel), else the TileIrradiance model alone, its lookups at every pixel or at half
+  // resolution (`reduced`: then a lookup program and an upsampling caustics program). Built the
+  // first time a frame needs it: a context that never uses the field never compiles it.
+  // Returns the variant's index for drawCaustics (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, bool reduced, bool physical, int& variant,
                            std::string& error);
   // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
   // WavefrontAreaRatio model's texture, tile: the tile irradiance (0 when not in use).
@@ -43,7 +45,8 @@ class CausticsPass {
                  GLuint tile = 0);
   void drawFloor();
   // tileVariant: 0 for the RayDeviation program (and WavefrontAreaRatio without a tile field),
-  // else the variant ensureTileProgram returned.
+  // else the variant ensureTileProgram returned (a reduced one draws its lookups first, then
+  // blends them in: both inside the caustics pass's timing).
   void drawCaustics(int tileVariant = 0);
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
   void finish();
@@ -54,13 +57,18 @@ class CausticsPass {
 
  private:
   void ensureRaw(int width, int height);
+  void ensureReduced(int width, int height);
+  void drawReducedLookups(const glkit::Program& program);
 
   CreateDesc desc_{};
   glkit::Program caustics_, floor_;
-  // Tile-irradiance variants: [physical][groups - 1][cascade mask], index
-  // 1 + 32 * physical + 16 * (groups - 1) + mask.
+  // Tile-irradiance variants: [physical, reduced][groups - 1][cascade mask], index
+  // 1 + 32 * reduced + 64 * physical + 16 * (groups - 1) + mask (a physical one is never
+  // reduced); the reduced ones' lookups in tileLookups_.
   static constexpr int kTileMasks = 1 << kMaxCascades;
-  glkit::Program tileCaustics_[2 * 2 * kTileMasks];
+  static constexpr int kTileVariants = 2 * kTileMasks;
+  glkit::Program tileCaustics_[3 * kTileVariants];
+  glkit::Program tileLookups_[kTileVariants];
   // The floor draws through its own framebuffer with the same attachments: the switch makes a
   // software rasterizer start a new scene, so its timer queries separate the two passes.
   glkit::Framebuffer framebuffer_, floorFramebuffer_;
@@ -71,6 +79,10 @@ class CausticsPass {
   glkit::Sampler tileSampler_;
   glkit::Texture rawTexture_;
   int rawWidth_ = 0, rawHeight_ = 0;
+  // The half-resolution lookups (CausticsLookupResolution::Half), RG16F, allocated on first use.
+  glkit::Texture reducedTexture_;
+  glkit::Framebuffer reducedFramebuffer_;
+  int reducedWidth_ = 0, reducedHeight_ = 0, fullWidth_ = 0, fullHeight_ = 0;
 };
 
 }  // namespace postfx::detail

@@ -30,7 +30,14 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
   // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window.
   if (passes.physical)
     t.irradiance = irradianceBytes(frame.caustics.gridResolution, frame.caustics.depthLayers);
-  if (passes.tile) t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
+  if (passes.tile) {
+    t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
+    // The half-resolution lookups (the TileIrradiance model's only): RG16F, irradiance and
+    // distance.
+    if (frame.caustics.model == CausticsModel::TileIrradiance &&
+        frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
+      t.tile += std::uint64_t((width + 1) / 2) * std::uint64_t((height + 1) / 2) * 4;
+  }
   if (passes.objects) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
@@ -67,7 +74,8 @@ Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int wi
   const std::pair<std::uint64_t, const char*> others[] = {
       {t.godRays, "the god-ray march texture (target size, godRays.resolution)"},
       {t.irradiance, "the irradiance layers (caustics.gridResolution, depthLayers)"},
-      {t.tile, "the tile irradiance (caustics.tileResolution, tileDepthLayers)"},
+      {t.tile,
+       "the tile irradiance (caustics.tileResolution, tileDepthLayers, tileLookupResolution)"},
       {t.casterMaps, "the caster maps (objectCaustics.settings.gridSize)"},
       {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"}};
   for (const auto& [bytes, name] : others)

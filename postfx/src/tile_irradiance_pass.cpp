@@ -114,9 +114,8 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   const glm::dvec3 down = refractedSunDown(sun, water.ior);
   const glm::dvec2 flatDrift = glm::dvec2(down.x, down.z) / std::max(-down.y, 1e-6);
   const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
-  // At least two points per irradiance texel and side, and every water texel.
-  const int points =
-      std::max(std::max(textures.water.width, textures.water.height), 2 * l.resolution);
+  // tilePointsPerTexel per irradiance texel and side, each reading its cell's mean water.
+  const int points = l.resolution * frame.caustics.tilePointsPerTexel;
   const double perPoint = double(l.resolution) * l.resolution / (double(points) * points);
   float depths[shared::TILE_MAX_LAYERS] = {};
   for (int k = 0; k < l.layers; ++k)
@@ -130,6 +129,11 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
                      static_cast<float>(perPoint * double(shared::TILE_FIXED_POINT)));
   glProgramUniform1i(scatter, 4, l.layers);
   glProgramUniform1fv(scatter, 5, shared::TILE_MAX_LAYERS, depths);
+  const int waterSide = std::max(textures.water.width, textures.water.height);
+  glProgramUniform1f(scatter, 13,
+                     textures.waterMipmapped && waterSide > points
+                         ? static_cast<float>(std::log2(double(waterSide) / points))
+                         : 0.0f);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_ACCUMULATORS, accumulators_.id());
   glUseProgram(scatter);
   const GLuint pointGroups = static_cast<GLuint>((points + 7) / 8);

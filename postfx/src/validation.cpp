@@ -357,6 +357,12 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
                 rangeText(kTileResolutionRange) + ", got " + std::to_string(s.tileResolution));
   if (!within(s.tileMinModulation, kTileMinModulationRange))
     return outside("tileMinModulation", kTileMinModulationRange, "");
+  if (s.tileLookupResolution != CausticsLookupResolution::Full &&
+      s.tileLookupResolution != CausticsLookupResolution::Half)
+    return fail("caustics.tileLookupResolution is not a CausticsLookupResolution");
+  if (s.tilePointsPerTexel != 1 && s.tilePointsPerTexel != 2)
+    return fail("caustics.tilePointsPerTexel must be 1 or 2, got " +
+                std::to_string(s.tilePointsPerTexel));
   if (s.tileDepthLayers != 4 && s.tileDepthLayers != 8)
     return fail("caustics.tileDepthLayers must be 4 or 8, got " +
                 std::to_string(s.tileDepthLayers));

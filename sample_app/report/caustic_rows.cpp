@@ -140,15 +140,30 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     std::optional<PrePass> prePass;
   };
   std::vector<Variant> variants;
-  for (auto [resolution, layers] :
-       {std::pair{128, 4}, std::pair{64, 4}, std::pair{256, 4}, std::pair{128, 8}}) {
-    Variant v{resolution == 128 && layers == 4 ? "tile irradiance (default)" : "tile irradiance",
-              "tiles " + std::to_string(resolution) + ", " + std::to_string(layers) + " layers",
+  // Tile irradiance: the default (128 texels, 4 layers, 1 point per texel, half-resolution
+  // lookups), then one setting changed at a time.
+  struct TileVariant {
+    int resolution, layers, pointsPerTexel;
+    postfx::CausticsLookupResolution lookup;
+  };
+  constexpr auto kHalf = postfx::CausticsLookupResolution::Half;
+  constexpr auto kFull = postfx::CausticsLookupResolution::Full;
+  for (const TileVariant& t : {TileVariant{128, 4, 1, kHalf}, TileVariant{128, 4, 1, kFull},
+                               TileVariant{128, 4, 2, kFull}, TileVariant{64, 4, 1, kHalf},
+                               TileVariant{256, 4, 1, kHalf}, TileVariant{128, 8, 1, kHalf}}) {
+    const bool isDefault =
+        t.resolution == 128 && t.layers == 4 && t.pointsPerTexel == 1 && t.lookup == kHalf;
+    Variant v{isDefault ? "tile irradiance (default)" : "tile irradiance",
+              "tiles " + std::to_string(t.resolution) + ", " + std::to_string(t.layers) +
+                  " layers, " + std::to_string(t.pointsPerTexel) + " pt/texel, " +
+                  (t.lookup == kHalf ? "half-res lookups" : "full-res lookups"),
               postfx::CausticsSettings{}, false,
               PrePass{postfx::Pass::CausticsTileIrradiance, "tile pre-pass"}};
     v.caustics.model = postfx::CausticsModel::TileIrradiance;
-    v.caustics.tileResolution = resolution;
-    v.caustics.tileDepthLayers = layers;
+    v.caustics.tileResolution = t.resolution;
+    v.caustics.tileDepthLayers = t.layers;
+    v.caustics.tilePointsPerTexel = t.pointsPerTexel;
+    v.caustics.tileLookupResolution = t.lookup;
     variants.push_back(v);
   }
   postfx::CausticsSettings rayDeviation;

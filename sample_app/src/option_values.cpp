@@ -157,6 +157,16 @@ const std::array kValueOptions{
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 64, 1024, o.causticsGrid, "--caustics-grid", error);
                 }},
+    ValueOption{"--caustics-lookup", "RES",
+                "tile model's lookups at full or half (default) resolution", false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (text == "full" || text == "half") {
+                    o.causticsLookup = text == "full" ? 1 : 2;
+                    return true;
+                  }
+                  error = "--caustics-lookup must be full or half" + got(text);
+                  return false;
+                }},
     ValueOption{"--god-rays-resolution", "RES", "full, half (default) or quarter", false,
                 [](std::string_view text, Options& o, std::string& error) {
                   const std::array<std::pair<std::string_view, int>, 3> names{

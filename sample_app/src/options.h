@@ -39,6 +39,8 @@ struct Options {
   int causticsGrid = 256;
   // World-axis tri-planar lookup on steep surfaces (Feature::TriplanarWalls).
   bool triplanarWalls = false;
+  // Tile-irradiance lookup resolution divisor: 1 full, 2 half; 0 keeps the plugin's default.
+  int causticsLookup = 0;
   // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
   int godRayResolution = 0;
   int waterResolution = 256;

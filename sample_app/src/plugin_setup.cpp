@@ -47,6 +47,9 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   // once (fog before dispatch), not twice.
   setup->godRays_.intensity = 0.3f;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
+  if (options.causticsLookup > 0)
+    setup->caustics_.tileLookupResolution =
+        static_cast<postfx::CausticsLookupResolution>(options.causticsLookup);
   if (options.godRayResolution > 0)
     setup->godRays_.resolution = static_cast<postfx::GodRayResolution>(options.godRayResolution);
   if (options.physicalCaustics) {

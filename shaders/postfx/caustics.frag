@@ -4,8 +4,9 @@
 // POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL,
 // POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the variants that read the tile irradiance
 // define POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers
-// each): the TileIrradiance model (POSTFX_PHYSICAL 0) and the WavefrontAreaRatio window
-// continued by it (POSTFX_PHYSICAL 1).
+// each): the TileIrradiance model (POSTFX_PHYSICAL 0; POSTFX_TILE_REDUCED where its lookups ran
+// at half resolution, tile_irradiance_reduced.frag) and the WavefrontAreaRatio window continued
+// by it (POSTFX_PHYSICAL 1, looked up per pixel).
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
@@ -16,6 +17,7 @@
 #include "shared/postfx_tile_irradiance.h"
 #include "postfx/physical_irradiance_lookup.glsl"
 #include "postfx/tile_irradiance_lookup.glsl"
+#include "postfx/tile_irradiance_upsample.glsl"
 
 #if POSTFX_TRIPLANAR_WALLS
 // Tri-planar weights below this skip their projection's fetches (on GPUs).
@@ -73,11 +75,14 @@ void main() {
 #endif
   // Pixel footprint in metres, widened where the surface is seen at a grazing angle.
   float distance = length(viewPos);
-  float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
-  float logFootprint = log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
+  float logFootprint = surfaceLogFootprint(n, p, distance);
 
 #if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_PHYSICAL
+#if POSTFX_TILE_REDUCED
+  vec3 omega = vec3(upsampledTileIrradiance(pixel, distance));
+#else
   vec3 omega = vec3(tileIrradianceAt(p, depthBelow, logFootprint));
+#endif
 #elif defined(POSTFX_TILE_IRRADIANCE)
   // The window, continued beyond its edge by the tile irradiance: the same physics (irradiance
   // of the refracted sun, in the same units) without a window, so the fade band blends two

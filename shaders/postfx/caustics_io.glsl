@@ -33,3 +33,11 @@ void emitNothing() {
   discard;
 #endif
 }
+
+// log2 of the metres a pixel covers on the surface at camera-relative p (normal n, `distance`
+// from the camera), widened where the surface is seen at a grazing angle, plus the water
+// texture's lod bias: the mip level of a lookup of that footprint.
+float surfaceLogFootprint(vec3 n, vec3 p, float distance) {
+  float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 0.25);
+  return log2(max(distance * u.depthAndWater.w / facing, 1e-6)) + u.oblique.z;
+}

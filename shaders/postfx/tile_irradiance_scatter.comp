@@ -1,11 +1,13 @@
 #version 450 core
-// Tile irradiance, step 1 of 2: every water texel of one cascade refracts the sun onto every
-// depth layer and adds its flux, split bilinearly over the four nearest irradiance texels, into
-// integer accumulators (periodic: the tile wraps). Why points and not the refracted triangles of
-// the window model: a texel gathers several points (the water grid is at least twice as fine),
-// so the density is smooth where the light converges, which is where caustics are; the mesh's
-// exactness in the dark parts costs a rasterised triangle per cell and layer, several times
-// this pass on a CPU rasteriser. Compile-time switch: POSTFX_WATER_SINGLE_2D.
+// Tile irradiance, step 1 of 2: a grid of water points (CausticsSettings::tilePointsPerTexel
+// per irradiance texel and side, each with its cell's mean slopes and height from the water's
+// mip chain) of one cascade refracts the sun onto every depth layer and adds its flux, split
+// bilinearly over the four nearest irradiance texels, into integer accumulators (periodic: the
+// tile wraps). Why points and not the refracted triangles of the window model: the bilinear
+// split spreads each point's flux over its neighbours, so the density stays smooth where the
+// light converges, which is where caustics are; the mesh's exactness in the dark parts costs a
+// rasterised triangle per cell and layer, several times this pass on a CPU rasteriser.
+// Compile-time switch: POSTFX_WATER_SINGLE_2D.
 #include "shared/common.h"
 #include "shared/postfx_bindings.h"
 #include "shared/postfx_caustics_block.h"  // POSTFX_MAX_CASCADES (its block goes unused here)
@@ -35,6 +37,8 @@ layout(location = 2) uniform vec4 towardSun;  // xyz: unit vector to the sun; w:
 layout(location = 3) uniform vec4 flatWater;
 layout(location = 4) uniform int layers;
 layout(location = 5) uniform float depths[TILE_MAX_LAYERS];
+// Water mip level of one point's cell: its mean slopes when points are sparser than texels.
+layout(location = 13) uniform float sourceLod;
 
 void addFlux(int layer, ivec2 texel, int mask, int side, float value) {
   ivec2 t = texel & ivec2(mask);
@@ -47,7 +51,7 @@ void main() {
   int points = int(grid.x);
   if (id.x >= points || id.y >= points) return;
   vec2 uv = (vec2(id) + 0.5) / grid.x;
-  vec3 surface = textureLod(waterSurface, WATER_COORD(uv, cascade), 0.0).rgb;
+  vec3 surface = textureLod(waterSurface, WATER_COORD(uv, cascade), sourceLod).rgb;
   float flux = tileLandingFlux(surface, towardSun.xyz, towardSun.w, flatWater.z) * flatWater.w;
   if (!(flux > 0.0)) return;
   int side = int(grid.y);

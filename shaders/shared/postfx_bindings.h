@@ -18,6 +18,10 @@
 // The god rays' reduced-resolution march, read by their upsample: it reuses the irradiance unit,
 // whose reader (the caustics pass) has drawn by then.
 #define POSTFX_UNIT_GODRAYS_REDUCED 5
+// The TileIrradiance lookups at half resolution, read by the caustics pass's upsample: the
+// window's irradiance unit, unused in that model's frames (the reduced lookups read the tile
+// field on its own unit).
+#define POSTFX_UNIT_TILE_REDUCED 5
 // The WavefrontAreaRatio pre-pass's grid points (a buffer texture).
 #define POSTFX_UNIT_GRID_POINTS 6
 // The TileIrradiance field (that model's light, and the WavefrontAreaRatio model's beyond its

@@ -134,6 +134,9 @@ TEST_F(PostfxPhysicalWindowTest, ContinuesBeyondTheWindowWithoutAnEdge) {
   postfxtest::useOcean(frame, *ocean);
   postfxtest::usePhysical(frame, 256, 2, 4.0f);  // the floor on the second layer
   frame.caustics.windowSize = 8.0f;              // its edge 4 m from the camera
+  // The window's continuation looks the tile field up at every pixel; so does this
+  // TileIrradiance frame (by default its lookups run at half resolution).
+  frame.caustics.tileLookupResolution = postfx::CausticsLookupResolution::Full;
   postfx::testing::CausticIrradianceInfo info;
   std::vector<float> texels;
   auto render = [&](postfx::CausticsModel model) {

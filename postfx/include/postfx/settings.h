@@ -44,6 +44,18 @@ inline constexpr Range<int> kDepthLayersRange{1, 8};
 inline constexpr Range<float> kMaxReceiverDepthRange{0.01f, 1e4f};  // m
 inline constexpr Range<float> kMaxIrradianceRange{1.0f, 1e4f};
 inline constexpr Range<int> kTileResolutionRange{32, 1024};  // and a power of two
+
+// Where TileIrradiance looks its irradiance up. Its four filtered fetches per pixel (two
+// cascades' light and the slopes that move it) are most of its cost on a CPU rasteriser; the
+// light they give varies on the scale of the caustic network, several pixels wide at any
+// distance (the lookup is filtered over the footprint).
+enum class CausticsLookupResolution {
+  Full = 1,  // every pixel
+  // Every other pixel in x and y into a plugin-owned RG16F texture (irradiance and distance),
+  // blended back per pixel by bilinear weight times distance similarity, so no light bleeds
+  // across silhouettes; everything else (normal, shadow, albedo, absorption) stays per pixel.
+  Half = 2,
+};
 inline constexpr Range<float> kTileMinModulationRange{0.0f, 1e3f};
 
 struct CausticsSettings {
@@ -88,11 +100,16 @@ struct CausticsSettings {
   CausticsModel model = CausticsModel::TileIrradiance;
 
   // --- TileIrradiance only (validated always) ---
-  // Irradiance texels per side of each cascade's tile, a power of two in kTileResolutionRange. The
-  // refracted points per side are twice that (at least the water texture's size). GPU memory:
+  // Irradiance texels per side of each cascade's tile, a power of two in kTileResolutionRange.
+  // GPU memory:
   // tileResolution^2 * (8 bytes * 4/3 + 4 bytes) * tileDepthLayers / 4 per cascade with
   // waves that focus (128, 4 layers: 0.44 MB per cascade).
   int tileResolution = 128;
+  // Refracted water points per irradiance texel and side, 1 or 2: each point carries the mean
+  // slope and height of its cell of the water texture (the mip level of the cell's size). 2
+  // quadruples the pre-pass for a smoother density where light converges; at the defaults the
+  // default preset's error is in docs/measurements.md for both.
+  int tilePointsPerTexel = 1;
   // Depth layers per cascade, 4 or 8: one or two filtered fetches per cascade and pixel.
   int tileDepthLayers = 4;
   // Cascades whose first-order irradiance modulation at maxReceiverDepth
@@ -101,6 +118,10 @@ struct CausticsSettings {
   // long waves barely focus there, they only move the finer cascades' light (which is kept).
   // Each one left out saves a fetch per pixel and a third of the pre-pass.
   float tileMinModulation = 0.25f;
+  // Resolution of the lookups (see CausticsLookupResolution). Half costs a quarter of the
+  // lookups plus a 4-tap upsample and 4 bytes per reduced texel (0.9 MB at 1280x720); its
+  // accuracy and cost against Full are in docs/measurements.md.
+  CausticsLookupResolution tileLookupResolution = CausticsLookupResolution::Half;
 
   // --- WavefrontAreaRatio only (validated always) ---
   // Surface grid vertices per side and irradiance texels per side, kGridResolutionRange. Cost grows
