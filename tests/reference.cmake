@@ -3,11 +3,12 @@ postfx_add_test(reference_unit_tests
   SOURCES unit/reference_seabed_test.cpp unit/reference_object_caustics_test.cpp
   LIBS ocean_reference)
 
-# The WavefrontAreaRatio caustics model (seed 004): its own properties, and its error against
-# the seabed reference on the same read-back water texture.
+# The WavefrontAreaRatio caustics model (seed 004): its own properties, its window as the
+# caustics pass shows it, and its error against the seabed reference on the same read-back
+# water texture.
 postfx_add_test(postfx_physical_tests GL
   SOURCES gl/postfx_scene.cpp gl/postfx_physical_mode_test.cpp
-          gl/postfx_physical_reference_test.cpp
+          gl/postfx_physical_reference_test.cpp gl/postfx_physical_window_test.cpp
   LIBS postfx ocean_reference water gbuffer glm::glm postfx::epoxy)
 target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})

@@ -100,8 +100,8 @@ Result buildBlocks(const Context& context, const FrameDesc& frame, const detail:
 }
 
 // The TileIrradiance pre-pass, built on first use, and the caustics program's variant for this
-// frame's cascades (`variant`). A failure changes nothing.
-Result ensureTileIrradiance(Context& context, const FrameDesc& frame, int& variant,
+// frame's cascades and model (`variant`). A failure changes nothing.
+Result ensureTileIrradiance(Context& context, const FrameDesc& frame, bool physical, int& variant,
                             std::string& error) {
   if (!context.tileIrradianceReady) {
     const Result r = context.tileIrradiance.init(detail::shaderDefines(context.desc), error);
@@ -109,9 +109,12 @@ Result ensureTileIrradiance(Context& context, const FrameDesc& frame, int& varia
     context.tileIrradianceReady = true;
   }
   const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
-  return context.caustics.ensureTileProgram(
-      layout.groups, layout.cascadeMask,
-      frame.caustics.tileLookupResolution == CausticsLookupResolution::Half, variant, error);
+  // The TileIrradiance model may look the field up at half resolution; the window continued by
+  // it looks it up per pixel (only in its outer band and beyond).
+  const bool reduced =
+      !physical && frame.caustics.tileLookupResolution == CausticsLookupResolution::Half;
+  return context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, reduced, physical,
+                                            variant, error);
 }
 
 // Our framebuffers hold the host's target only within the frame: every pass prepared lets go of
@@ -209,7 +212,8 @@ void record(Context& context, const FrameDesc& frame, const detail::FramePlan& p
     // The god rays draw under the caustics pass's state (its units, samplers and block); each
     // pre-pass draws into its own framebuffer, then that state is set again with its result.
     // Both pre-passes run before the floor and the caustics: both sample their result.
-    context.caustics.bindState(frame, textures, plan.physical ? context.irradiance.texture() : 0);
+    const GLuint irradiance = plan.physical ? context.irradiance.texture() : 0;
+    context.caustics.bindState(frame, textures, irradiance);
     if (plan.physical) {
       timedPass(context, plan, Pass::CausticsIrradiance, "postfx.caustics_irradiance",
                 [&] { context.irradiance.draw(frame, textures); });
@@ -218,7 +222,7 @@ void record(Context& context, const FrameDesc& frame, const detail::FramePlan& p
     if (plan.tile) {
       timedPass(context, plan, Pass::CausticsTileIrradiance, "postfx.caustics_tile_irradiance",
                 [&] { context.tileIrradiance.draw(frame, textures); });
-      context.caustics.bindState(frame, textures, 0, context.tileIrradiance.texture());
+      context.caustics.bindState(frame, textures, irradiance, context.tileIrradiance.texture());
     }
     if (plan.floor)
       timedPass(context, plan, Pass::Floor, "postfx.floor", [&] { context.caustics.drawFloor(); });
@@ -249,9 +253,9 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   if (r != Result::Ok) return r;
   r = detail::checkFrameMemory(context.desc, frame, textures.width, textures.height, plan, error);
   if (r != Result::Ok) return r;
-  int tileVariant = 0;  // the caustics program's TileIrradiance variant; 0: another model
+  int tileVariant = 0;  // the caustics program's tile-irradiance variant; 0: none read
   if (plan.tile) {
-    r = ensureTileIrradiance(context, frame, tileVariant, error);
+    r = ensureTileIrradiance(context, frame, plan.physical, tileVariant, error);
     if (r != Result::Ok) return r;
   }
 

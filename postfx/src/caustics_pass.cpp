@@ -95,17 +95,18 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
   return Result::Ok;
 }
 
-Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced, int& variant,
-                                       std::string& error) {
+Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced, bool physical,
+                                       int& variant, std::string& error) {
+  reduced = reduced && !physical;
   const int g = groups > 1 ? 2 : 1;
   const int mask = cascadeMask & (kTileMasks - 1);
   const int index = kTileMasks * (g - 1) + mask;
-  variant = 1 + (reduced ? kTileVariants : 0) + index;
+  variant = 1 + (physical ? 2 * kTileVariants : reduced ? kTileVariants : 0) + index;
   glkit::Program& program = tileCaustics_[variant - 1];
   if (program.id() != 0) return Result::Ok;
-  // The window model's lookup is compiled out: the two models never run together.
+  // The TileIrradiance model alone compiles the window's lookup out.
   std::string tileDefines =
-      "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n"
+      std::string(physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n") +
       "#define POSTFX_TILE_IRRADIANCE 1\n"
       "#define POSTFX_TILE_GROUPS " +
       std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
@@ -114,7 +115,7 @@ Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced
   if (!reduced)
     return buildPrograms(defines,
                          {{program,
-                           "postfx.caustics_tile",
+                           physical ? "postfx.caustics_physical_tile" : "postfx.caustics_tile",
                            {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/caustics.frag"}},
                            tileDefines}},
                          error);
@@ -249,9 +250,9 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
     glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, irradiance);
     glBindSampler(POSTFX_UNIT_IRRADIANCE, irradianceSampler_.id());
   }
-  if (tile != 0) {  // the same unit: the two models never run together
-    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, tile);
-    glBindSampler(POSTFX_UNIT_IRRADIANCE, tileSampler_.id());
+  if (tile != 0) {
+    glBindTextureUnit(POSTFX_UNIT_TILE_IRRADIANCE, tile);
+    glBindSampler(POSTFX_UNIT_TILE_IRRADIANCE, tileSampler_.id());
   }
 }
 
@@ -263,7 +264,7 @@ void CausticsPass::drawFloor() {
 }
 
 void CausticsPass::drawCaustics(int tileVariant) {
-  if (tileVariant > kTileVariants)
+  if (tileVariant > kTileVariants && tileVariant <= 2 * kTileVariants)
     drawReducedLookups(tileLookups_[tileVariant - 1 - kTileVariants]);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glUseProgram(tileVariant > 0 ? tileCaustics_[tileVariant - 1].id() : caustics_.id());

@@ -30,21 +30,23 @@ class CausticsPass {
   // message when the framebuffer is incomplete.
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                  const shared::CausticsBlock& block, std::string& error);
-  // The TileIrradiance variant of the caustics program: `groups` RGBA fetches per cascade (1 or
-  // 2) for the cascades in `cascadeMask` (bit c: cascade c), its lookups at every pixel or at
-  // half resolution (`reduced`: then a lookup program and an upsampling caustics program).
-  // Built the first time a frame needs it: a context that never uses the model never compiles
-  // it. Returns the variant's index for drawCaustics (>= 1).
-  Result ensureTileProgram(int groups, int cascadeMask, bool reduced, int& variant,
+  // The variant of the caustics program that reads the tile irradiance: `groups` RGBA fetches
+  // per cascade (1 or 2) for the cascades in `cascadeMask` (bit c: cascade c); `physical`: the
+  // WavefrontAreaRatio window, continued beyond its edge by the tile irradiance (looked up per
+  // pixel), else the TileIrradiance model alone, its lookups at every pixel or at half
+  // resolution (`reduced`: then a lookup program and an upsampling caustics program). Built the
+  // first time a frame needs it: a context that never uses the field never compiles it.
+  // Returns the variant's index for drawCaustics (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, bool reduced, bool physical, int& variant,
                            std::string& error);
   // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
-  // WavefrontAreaRatio model's texture, tile: the TileIrradiance model's (0 when not in use).
+  // WavefrontAreaRatio model's texture, tile: the tile irradiance (0 when not in use).
   void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance,
                  GLuint tile = 0);
   void drawFloor();
-  // tileVariant: 0 for the RayDeviation / WavefrontAreaRatio program, else the TileIrradiance
-  // variant ensureTileProgram returned (a reduced one draws its lookups first, then blends them
-  // in: both inside the caustics pass's timing).
+  // tileVariant: 0 for the RayDeviation program (and WavefrontAreaRatio without a tile field),
+  // else the variant ensureTileProgram returned (a reduced one draws its lookups first, then
+  // blends them in: both inside the caustics pass's timing).
   void drawCaustics(int tileVariant = 0);
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
   void finish();
@@ -60,11 +62,12 @@ class CausticsPass {
 
   CreateDesc desc_{};
   glkit::Program caustics_, floor_;
-  // TileIrradiance variants: [reduced][groups - 1][cascade mask], index
-  // 1 + 32 * reduced + 16 * (groups - 1) + mask; the reduced ones' lookups in tileLookups_.
+  // Tile-irradiance variants: [physical, reduced][groups - 1][cascade mask], index
+  // 1 + 32 * reduced + 64 * physical + 16 * (groups - 1) + mask (a physical one is never
+  // reduced); the reduced ones' lookups in tileLookups_.
   static constexpr int kTileMasks = 1 << kMaxCascades;
   static constexpr int kTileVariants = 2 * kTileMasks;
-  glkit::Program tileCaustics_[2 * kTileVariants];
+  glkit::Program tileCaustics_[3 * kTileVariants];
   glkit::Program tileLookups_[kTileVariants];
   // The floor draws through its own framebuffer with the same attachments: the switch makes a
   // software rasterizer start a new scene, so its timer queries separate the two passes.

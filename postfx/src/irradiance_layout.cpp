@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glkit/texture.h>
+
 #include "frame_constants.h"
 #include "shared_math.h"
 
@@ -40,6 +42,21 @@ IrradianceLayout irradianceLayout(const FrameDesc& frame) {
     l.gridOrigin[k] = glm::floor(start / l.cell) * l.cell;
   }
   return l;
+}
+
+int irradianceMipLevels(int resolution) {
+  return std::min(glkit::mipLevelCount(resolution), shared::IRRADIANCE_MIP_LEVELS + 1);
+}
+
+std::uint64_t irradianceBytes(int gridResolution, int depthLayers) {
+  std::uint64_t texels = 0;
+  for (int level = 0; level < irradianceMipLevels(gridResolution); ++level) {
+    const std::uint64_t side = std::max(gridResolution >> level, 1);
+    texels += side * side;
+  }
+  const std::uint64_t points =
+      std::uint64_t(gridResolution + 2) * std::uint64_t(gridResolution + 2);
+  return texels * std::uint64_t(depthLayers) * 4 + points * 2 * 16;
 }
 
 }  // namespace postfx::detail

@@ -3,6 +3,8 @@
 // double from the FrameDesc: the receiver window (camera-centred, snapped to whole texels in
 // world space so the pattern does not swim), each depth layer's surface grid (snapped to whole
 // grid cells, moved toward the sun by the flat-water drift to that depth), and the depths.
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include <postfx/postfx.h>
@@ -32,5 +34,12 @@ double irradianceLayerDepth(int k, int layers, double maxDepth);
 
 // Requires validated settings and a sun above the horizon.
 IrradianceLayout irradianceLayout(const FrameDesc& frame);
+
+// Mip levels of the irradiance layers (the base and up to shared::IRRADIANCE_MIP_LEVELS more).
+int irradianceMipLevels(int resolution);
+// GPU memory the pass allocates for `gridResolution` and `depthLayers`: the R32F layers with
+// their mip levels, and the grid points (two vec4 per point, (gridResolution + 2)^2 points).
+// The memory estimate and IrradiancePass::allocatedBytes() must agree (a test checks).
+std::uint64_t irradianceBytes(int gridResolution, int depthLayers);
 
 }  // namespace postfx::detail

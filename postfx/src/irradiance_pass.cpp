@@ -7,6 +7,7 @@
 
 #include "block_check.h"
 #include "frame_constants.h"
+#include "gl_sizes.h"
 #include "shader_library.h"
 #include "shared_math.h"
 
@@ -56,11 +57,14 @@ void IrradiancePass::ensureTexture(int resolution, int layers) {
   // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
   // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
   // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.
-  glTextureStorage3D(texture_.id(),
-                     std::min(glkit::mipLevelCount(resolution), shared::IRRADIANCE_MIP_LEVELS + 1),
-                     GL_R32F, resolution, resolution, layers);
+  glTextureStorage3D(texture_.id(), irradianceMipLevels(resolution), GL_R32F, resolution,
+                     resolution, layers);
   textureResolution_ = resolution;
   textureLayers_ = layers;
+}
+
+std::uint64_t IrradiancePass::allocatedBytes() const {
+  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.id());  // R32F
 }
 
 double IrradiancePass::pollClampCounts() {
@@ -117,10 +121,14 @@ void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
   const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
   const double texelsPerMetre = l.resolution / l.windowSize;
-  // Triangles whose refracted area is under a quarter texel go to the point draw: their area
-  // ratio exceeds (nominal beam area of a triangle, half a cell squared) / (1/4 texel).
+  // Triangles whose refracted area is under half a texel go to the point draw: their area ratio
+  // exceeds (nominal beam area of a triangle, half a cell squared) / (1/2 texel). Rasterised,
+  // such a triangle covers 0, 1 or 2 texel centres as it moves (a quarter texel was the bound
+  // before: with time running the physical model then changed 0.207 per frame against 0.168
+  // now, ocean_sample report --only stability --quick). Half a texel stays under flat water's
+  // own triangles (0.78 texel), which keep their exact rasterised ratio of 1.
   const double cellTexels = l.cell * texelsPerMetre;
-  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.25);
+  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.5);
   const GLuint compute = vertices_.id();
   glProgramUniform1i(compute, 4, water.cascadeCount);
   glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),

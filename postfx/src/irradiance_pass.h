@@ -3,7 +3,8 @@
 // refracts every surface grid point onto the receiver (into a buffer); one instanced strip
 // draw rasterises the refracted triangles, blended additively into a layer of a plugin-owned
 // GL_R32F 2D array; a point draw deposits the flux of the triangles too small to rasterise
-// without noise (under a quarter texel). Only built with Feature::PhysicalCaustics.
+// without noise (under half a texel), split over its four nearest texels by bilinear weights.
+// Only built with Feature::PhysicalCaustics.
 // Why a rasterised mesh rather than splatting photons: each triangle carries exactly the flux
 // of its piece of the beam, so the result is noise-free at any grid size and folds sum for free
 // in the blender. Why the area ratio in the fragment stage: it needs all three vertices, and
@@ -14,6 +15,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 #include <glkit/handle.h>
@@ -45,6 +47,8 @@ class IrradiancePass {
 
   GLuint texture() const { return texture_.id(); }
   const IrradianceLayout& layout() const { return layout_; }
+  // What its texture and grid-point buffer hold now, asked of GL (0 before the first frame).
+  std::uint64_t allocatedBytes() const;
 
  private:
   void ensureTexture(int resolution, int layers);

@@ -3,6 +3,7 @@
 #include <postfx/testing.h>
 
 #include "godrays_constants.h"
+#include "irradiance_layout.h"
 #include "tile_irradiance_pass.h"
 
 namespace postfx::detail {
@@ -25,21 +26,16 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
   if (passes.godRays && frame.godRays.resolution != GodRayResolution::Full)
     t.godRays = static_cast<std::uint64_t>(godRayReducedSize(width, frame.godRays.resolution)) *
                 std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) * 8;  // RGBA16F
-  if (passes.physical) {
-    // R32F layers with their mip chain (4/3), plus two vec4 per grid point ((resolution + 2)^2
-    // points).
-    const int resolution = frame.caustics.gridResolution;
-    t.irradiance = square(resolution) * 4 * std::uint64_t(frame.caustics.depthLayers) * 4 / 3 +
-                   square(resolution + 2) * 32;
-  }
+  // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
+  // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window.
+  if (passes.physical)
+    t.irradiance = irradianceBytes(frame.caustics.gridResolution, frame.caustics.depthLayers);
   if (passes.tile) {
-    // Per cascade with irradiance: RGBA16F texels of 4 layers with their mip chain (4/3), and a
-    // uint accumulator per texel and layer.
-    const TileIrradianceLayout l = tileIrradianceLayout(frame);
-    const std::uint64_t texels = square(l.resolution) * std::uint64_t(l.cascadeCount);
-    t.tile = texels * std::uint64_t(l.groups) * 8 * 4 / 3 + texels * std::uint64_t(l.layers) * 4;
-    // The half-resolution lookups: RG16F, irradiance and distance.
-    if (frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
+    t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
+    // The half-resolution lookups (the TileIrradiance model's only): RG16F, irradiance and
+    // distance.
+    if (frame.caustics.model == CausticsModel::TileIrradiance &&
+        frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
       t.tile += std::uint64_t((width + 1) / 2) * std::uint64_t((height + 1) / 2) * 4;
   }
   if (passes.objects) {

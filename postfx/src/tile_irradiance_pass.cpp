@@ -7,13 +7,17 @@
 
 #include "block_check.h"
 #include "frame_constants.h"
+#include "gl_sizes.h"
 #include "shader_library.h"
 #include "shared_math.h"
 
 namespace postfx::detail {
 
 bool tileIrradianceActive(const FrameDesc& frame) {
-  return frame.caustics.model == CausticsModel::TileIrradiance &&
+  // WavefrontAreaRatio continues its window with this field (validation guarantees that model
+  // its feature).
+  const CausticsModel model = frame.caustics.model;
+  return (model == CausticsModel::TileIrradiance || model == CausticsModel::WavefrontAreaRatio) &&
          frame.water.texture.texture != 0 && frame.sun.direction.y > 0.0;
 }
 
@@ -39,6 +43,23 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame) {
     }
   }
   return l;
+}
+
+std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l) {
+  const std::uint64_t arrayLayers = std::uint64_t(std::max(l.cascadeCount * l.groups, 1));
+  std::uint64_t texels = 0;
+  for (int level = 0; level < glkit::mipLevelCount(l.resolution); ++level) {
+    const std::uint64_t side = std::max(l.resolution >> level, 1);
+    texels += side * side;
+  }
+  const std::uint64_t accumulators = std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
+                                     std::uint64_t(std::max(l.cascadeCount, 1)) *
+                                     std::uint64_t(l.layers);
+  return texels * arrayLayers * 8 + accumulators * 4;
+}
+
+std::uint64_t TileIrradiancePass::allocatedBytes() const {
+  return textureBytes(texture_.id(), 8) + bufferBytes(accumulators_.id());  // RGBA16F
 }
 
 Result TileIrradiancePass::init(const std::string& defines, std::string& error) {

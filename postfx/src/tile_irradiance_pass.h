@@ -10,6 +10,7 @@
 // tileResolution)^2 (at least the water texture's size) refracted points per cascade.
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <string>
 
 #include <glkit/handle.h>
@@ -38,8 +39,15 @@ struct TileIrradianceLayout {
 // whose statistics the host left unknown (0). Requires validated settings.
 TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame);
 
-// Whether the frame uses the TileIrradiance model (it needs a water texture and a sun above the
-// horizon; otherwise nothing is computed and the caustics add no light).
+// GPU memory the pass allocates for layout `l`: the RGBA16F array (l.groups layers per cascade
+// with irradiance, at least one) with its full mip chain, and a uint accumulator per texel,
+// depth layer and cascade (at least one cascade). The memory estimate and
+// TileIrradiancePass::allocatedBytes() must agree (a test checks).
+std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l);
+
+// Whether the frame computes the tile irradiance: the TileIrradiance model, and the
+// WavefrontAreaRatio model beyond its window. It needs a water texture and a sun above the
+// horizon; otherwise nothing is computed (TileIrradiance then adds no light).
 bool tileIrradianceActive(const FrameDesc& frame);
 
 class TileIrradiancePass {
@@ -56,6 +64,8 @@ class TileIrradiancePass {
 
   GLuint texture() const { return texture_.id(); }
   const TileIrradianceLayout& layout() const { return layout_; }
+  // What its array and accumulators hold now, asked of GL (0 before the first frame).
+  std::uint64_t allocatedBytes() const;
 
  private:
   glkit::Program scatter_, resolve_;

@@ -5,8 +5,9 @@
 // quarter resolution, each with a fresh plugin context (fresh timers) and its own floor measured
 // in the same run, reported as rows god_rays_<n>, god_rays_half_<n> and god_rays_quarter_<n>.
 // Physical caustics (seed 004): one short run per grid resolution (64..1024), rows
-// caustics_irradiance_<n> (the extra pass) and caustics_physical_<n> (the full-screen caustics
-// pass sampling its result), with the clamp's bias on stderr.
+// caustics_irradiance_<n> (the extra pass), caustics_physical_tile_<n> (the tile pre-pass that
+// continues the window) and caustics_physical_<n> (the full-screen caustics pass sampling both),
+// with the clamp's bias on stderr.
 // Object caustics: likewise one short run per caustic-map size, ray-grid size and hit-iteration
 // count, reported as rows object_caustics_<map>_<grid>_<iterations>.
 #include <algorithm>
@@ -153,6 +154,7 @@ int runBench(const Options& options) {
           runVariant("caustics_physical_" + n, physical, [](PluginSetup&) {});
       if (!stats) return commandFailed(error);
       addRow("caustics_irradiance_" + n, *stats, postfx::Pass::CausticsIrradiance);
+      addRow("caustics_physical_tile_" + n, *stats, postfx::Pass::CausticsTileIrradiance);
       addRow("caustics_physical_" + n, *stats, postfx::Pass::Caustics);
       std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
                    100.0 * stats->clampedFluxFraction);

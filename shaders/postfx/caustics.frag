@@ -2,9 +2,11 @@
 // Seabed caustics (seed 002, section 4) added into the host's HDR target. Compile-time
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
 // POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL,
-// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the TileIrradiance variant defines
-// POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers each),
-// and POSTFX_TILE_REDUCED where the lookups ran at half resolution (tile_irradiance_reduced.frag).
+// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the variants that read the tile irradiance
+// define POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers
+// each): the TileIrradiance model (POSTFX_PHYSICAL 0; POSTFX_TILE_REDUCED where its lookups ran
+// at half resolution, tile_irradiance_reduced.frag) and the WavefrontAreaRatio window continued
+// by it (POSTFX_PHYSICAL 1, looked up per pixel).
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
@@ -75,12 +77,21 @@ void main() {
   float distance = length(viewPos);
   float logFootprint = surfaceLogFootprint(n, p, distance);
 
-#ifdef POSTFX_TILE_IRRADIANCE
+#if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_PHYSICAL
 #if POSTFX_TILE_REDUCED
   vec3 omega = vec3(upsampledTileIrradiance(pixel, distance));
 #else
   vec3 omega = vec3(tileIrradianceAt(p, depthBelow, logFootprint));
 #endif
+#elif defined(POSTFX_TILE_IRRADIANCE)
+  // The window, continued beyond its edge by the tile irradiance: the same physics (irradiance
+  // of the refracted sun, in the same units) without a window, so the fade band blends two
+  // estimates of one light rather than two looks. Outside the window only the tile is read,
+  // inside only the window (a dynamic branch: GPUs skip the other's fetches).
+  float physicalWeight = 0.0;
+  float windowLight = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
+  float farLight = physicalWeight < 1.0 ? tileIrradianceAt(p, depthBelow, logFootprint) : 1.0;
+  vec3 omega = vec3(mix(farLight, windowLight, physicalWeight));
 #else
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;
@@ -101,7 +112,7 @@ void main() {
 #if POSTFX_PHYSICAL
   omega = mix(omega, physical, physicalWeight);
 #endif
-#endif  // POSTFX_TILE_IRRADIANCE
+#endif  // the model
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   // Beer-Lambert along the refracted sun path to the receiver (causticTransmittance) and, with

@@ -4,7 +4,7 @@
 // (exact: the position is affine over the triangle, and helper invocations extrapolate the same
 // plane), in beam texels per receiver texel, the signed area's magnitude so folded triangles
 // count too. Blended ONE, ONE: overlapping folds sum.
-// Triangles smaller than a quarter texel are left to the point draw: a texel centre would catch
+// Triangles smaller than half a texel are left to the point draw: a texel centre would catch
 // one with a probability of its area and then take its whole (huge) irradiance -- right on
 // average, but noisy exactly at the caustic lines. The point deposits their flux instead.
 #include "postfx/irradiance_common.glsl"

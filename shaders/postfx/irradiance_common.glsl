@@ -5,7 +5,7 @@
 layout(binding = POSTFX_UNIT_GRID_POINTS) uniform samplerBuffer gridPoints;  // 2 texels per grid point
 layout(location = 8) uniform float maxIrradiance;
 // x: irradiance texels per side; y: area ratio above which a triangle is deposited as a point
-// (its refracted area is under a quarter texel) instead of rasterised.
+// (its refracted area is under half a texel) instead of rasterised.
 layout(location = 10) uniform vec2 raster;
 layout(location = 9) uniform int pointsPerSide;
 

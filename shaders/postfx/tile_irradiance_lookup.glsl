@@ -2,7 +2,7 @@
 // periodic irradiance at the receiver's depth, combined coarsest first. Include after
 // caustics_io.glsl, water_sampling.glsl and shared/postfx_tile_irradiance.h.
 #ifdef POSTFX_TILE_IRRADIANCE
-layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray tileIrradiance;
+layout(binding = POSTFX_UNIT_TILE_IRRADIANCE) uniform sampler2DArray tileIrradiance;
 
 // Cascade c's own irradiance where its light lands at entry coordinate `coord` (m), interpolated
 // between the depth layers around the receiver (1 above the first: flat water at the surface).

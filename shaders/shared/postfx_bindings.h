@@ -13,16 +13,21 @@
 #define POSTFX_UNIT_ALBEDO 2
 #define POSTFX_UNIT_WATER 3
 #define POSTFX_UNIT_SHADOW 4
-// The WavefrontAreaRatio or the TileIrradiance model's irradiance: the two never run together.
+// The WavefrontAreaRatio model's irradiance window.
 #define POSTFX_UNIT_IRRADIANCE 5
 // The god rays' reduced-resolution march, read by their upsample: it reuses the irradiance unit,
 // whose reader (the caustics pass) has drawn by then.
 #define POSTFX_UNIT_GODRAYS_REDUCED 5
 // The TileIrradiance lookups at half resolution, read by the caustics pass's upsample: the
-// irradiance unit again, which the reduced lookups read before.
+// window's irradiance unit, unused in that model's frames (the reduced lookups read the tile
+// field on its own unit).
 #define POSTFX_UNIT_TILE_REDUCED 5
 // The WavefrontAreaRatio pre-pass's grid points (a buffer texture).
 #define POSTFX_UNIT_GRID_POINTS 6
+// The TileIrradiance field (that model's light, and the WavefrontAreaRatio model's beyond its
+// window, so both are bound at once): it reuses the grid points' unit on its 2D-array target,
+// whose reader (the irradiance pre-pass) has drawn by then.
+#define POSTFX_UNIT_TILE_IRRADIANCE 6
 // Units [0, POSTFX_UNIT_COUNT) are the ones GlStateGuard saves and restores.
 #define POSTFX_UNIT_COUNT 7
 
@@ -56,7 +61,7 @@ SHARED_BEGIN
 // kGodRaySampleCountRange (godrays_constants.cpp checks the two agree).
 SHARED_CONST int GODRAYS_MAX_SAMPLES = 64;
 // The WavefrontAreaRatio window's outer band (fraction of its side) over which its irradiance
-// fades to the RayDeviation model's.
+// fades to the TileIrradiance field's (the RayDeviation model's without a water texture).
 SHARED_CONST float IRRADIANCE_FADE_BAND = 0.125f;
 // Mip levels above the base of the WavefrontAreaRatio irradiance layers (the lookup filters a
 // pixel's footprint); the window snaps to texels of the coarsest, and its fade is taken from a

@@ -18,7 +18,9 @@ enum class CausticsModel {
   // the water surface is refracted onto a few receiver depths and its triangles are added up
   // (folds sum) with brightness = beam area / refracted area. Needs Feature::PhysicalCaustics.
   // Covers a camera-centred square window (windowSize); outside it, and across the window's
-  // outer eighth, it fades to RayDeviation.
+  // outer eighth, it fades to the TileIrradiance field (same physics and units: no edge), which
+  // it computes too. A pixel smaller than a texel gets a smooth (cubic B-spline) reconstruction
+  // of the window, not its texel grid; a larger one the mean over its footprint.
   WavefrontAreaRatio,
   // True caustic irradiance everywhere, at about the cost of RayDeviation: every frame each
   // cascade that can focus light within maxReceiverDepth refracts its own periodic tile onto
@@ -125,11 +127,15 @@ struct CausticsSettings {
   // Surface grid vertices per side and irradiance texels per side, kGridResolutionRange. Cost grows
   // with its square; the water texture is read at the mip level of the grid spacing, so ripples
   // finer than windowSize * 1.25 / gridResolution are smoothed away, not aliased. GPU memory:
-  // about gridResolution^2 * (4 bytes * depthLayers + 32 bytes) (4 layers: 3 MB at 256, 50 MB at
-  // 1024).
+  // R32F layers, 4 bytes x depthLayers per texel with up to 4 mip levels (x 1.33), plus 32 bytes
+  // per grid point ((gridResolution + 2)^2 points); 4 layers: 0.85 MiB at 128, 3.36 MiB at 256,
+  // 13.4 MiB at 512, 53.4 MiB at 1024. The tile irradiance that continues the window (see
+  // windowSize) adds its own (tileResolution: 0.42 MiB per cascade at 128, 4 layers).
   int gridResolution = 256;
   // Side of the square receiver window around the camera (m), kWindowSizeRange. Snapped to whole
-  // texels in world space so the pattern does not swim when the camera moves.
+  // texels in world space so the pattern does not swim when the camera moves. Beyond it, faded in
+  // over its outer eighth, the light is the TileIrradiance model's (the same irradiance, periodic,
+  // without a window): that pre-pass also runs in this model's frames.
   float windowSize = 32.0f;
   // Receiver depths the irradiance is computed at, kDepthLayersRange: layer k lies
   // maxReceiverDepth * ((k + 1) / depthLayers)^2 below the level (denser near the surface,

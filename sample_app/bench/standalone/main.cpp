@@ -113,7 +113,8 @@ std::vector<Config> configurations() {
                        caustics | Feature::PhysicalCaustics,
                        physical,
                        noGodRays,
-                       {Pass::CausticsIrradiance, Pass::Caustics}});
+                       // The tile irradiance continues the window: its pre-pass runs too.
+                       {Pass::CausticsIrradiance, Pass::CausticsTileIrradiance, Pass::Caustics}});
   }
   postfx::CausticsSettings noCaustics;
   noCaustics.enabled = false;
