@@ -69,7 +69,8 @@ postfx::FrameDesc fieldFrame(const postfxtest::Scene& scene, GLuint water,
 // it ends on, integrated over the `height` above it. Returns the correlation of the shafts with
 // the seabed caustics (tile model) below them, the god rays reading the tile field (withField)
 // or seed 002's factor (withSlopes).
-void shaftSeabedCorrelation(double height, double& withField, double& withSlopes) {
+void shaftSeabedCorrelation(double height, double& withField, double& withSlopes,
+                            postfx::CausticsModel model = postfx::CausticsModel::TileIrradiance) {
   postfxtest::SceneSpec spec;
   spec.width = 96;
   spec.height = 96;
@@ -79,12 +80,15 @@ void shaftSeabedCorrelation(double height, double& withField, double& withSlopes
   spec.lookDirection = postfx::detail::refractedSunDown(glm::normalize(kSun), 1.333);
   postfxtest::Scene scene(spec);
   const GLuint water = postfxtest::makeWaterTexture(64, 3, 0.01);
-  auto caustics = postfxtest::makeContext(Feature::Caustics);
-  auto godRays = postfxtest::makeContext(Feature::GodRays);
+  const Feature physical = model == postfx::CausticsModel::WavefrontAreaRatio
+                               ? Feature::PhysicalCaustics
+                               : Feature::None;
+  auto caustics = postfxtest::makeContext(Feature::Caustics | physical);
+  auto godRays = postfxtest::makeContext(Feature::GodRays | physical);
   ASSERT_EQ(postfx::testing::setGodRaySampling(*godRays,
                                                postfx::testing::GodRaySampling::UniformAlongRay),
             Result::Ok);
-  postfx::FrameDesc frame = fieldFrame(scene, water, postfx::CausticsModel::TileIrradiance);
+  postfx::FrameDesc frame = fieldFrame(scene, water, model);
   ASSERT_NEAR(frame.water.ior, 1.333f, 1e-6f) << "the view follows the refracted sun";
   frame.godRays.enabled = false;
   const std::vector<glm::vec4> seabed = render(*caustics, scene, frame);
@@ -99,9 +103,9 @@ void shaftSeabedCorrelation(double height, double& withField, double& withSlopes
   withField = correlation(field, seabed, floor);
   withSlopes = correlation(slopes, seabed, floor);
   std::printf(
-      "god rays over %.1f m vs the seabed caustics below (correlation): tile field %.3f, seed "
-      "002 %.3f\n",
-      height, withField, withSlopes);
+      "god rays over %.1f m vs the seabed caustics below (correlation, %s model): its field "
+      "%.3f, seed 002 %.3f\n",
+      height, physical == Feature::None ? "tile" : "physical", withField, withSlopes);
   glDeleteTextures(1, &water);
 }
 
@@ -121,6 +125,14 @@ TEST_F(PostfxGodRaysFieldTest, ShaftsLineUpWithTheSeabedPattern) {
   RecordProperty("correlation_field_3m", std::to_string(field));
   RecordProperty("correlation_seed002_3m", std::to_string(slopes));
   EXPECT_GT(field, slopes + 0.15);
+}
+
+// The same with the physical (window) model, whose field the god rays read inside its window.
+TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsLineUpWithTheSeabedPattern) {
+  double field = 0.0, slopes = 0.0;
+  shaftSeabedCorrelation(0.5, field, slopes, postfx::CausticsModel::WavefrontAreaRatio);
+  EXPECT_GT(field, 0.75);
+  EXPECT_GT(field, slopes + 0.5);
 }
 
 // Flat water: the field is 1 everywhere, as seed 002's factor is, so both give the same shafts.
@@ -153,7 +165,7 @@ TEST_F(PostfxGodRaysFieldTest, FlatWaterGivesTheUnmodulatedShafts) {
   glDeleteTextures(1, &water);
 }
 
-// The pre-pass runs for god rays alone (caustics disabled) and not when neither draws.
+// The field's pre-pass runs for god rays alone (caustics disabled) and not when neither draws.
 TEST_F(PostfxGodRaysFieldTest, FieldComputedForGodRaysAloneAndLeftOutWithoutThem) {
   postfxtest::SceneSpec spec;
   spec.width = 32;
@@ -179,7 +191,18 @@ TEST_F(PostfxGodRaysFieldTest, FieldComputedForGodRaysAloneAndLeftOutWithoutThem
   }
   EXPECT_TRUE(tile.skipped) << "nothing reads the field";
   EXPECT_EQ(tile.lastMs, 0.0);
-  // A context with god rays and no caustics has the pre-pass too.
+  // The physical model's pre-pass likewise.
+  auto physical =
+      postfxtest::makeContext(Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics);
+  frame.godRays.enabled = true;
+  frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
+  for (int i = 0; i < postfx::kTimerRingDepth + 1; ++i) {
+    ASSERT_EQ(postfx::dispatch(*physical, frame), Result::Ok) << postfx::lastError(physical.get());
+    glFinish();
+  }
+  EXPECT_FALSE(postfx::stats(*physical).pass(postfx::Pass::CausticsIrradiance).skipped);
+  EXPECT_TRUE(postfx::stats(*physical).pass(postfx::Pass::CausticsTileIrradiance).skipped);
+  // A context with god rays and no caustics has the tile pre-pass too.
   auto godRaysOnly = postfxtest::makeContext(Feature::GodRays);
   EXPECT_TRUE(postfx::stats(*godRaysOnly).pass(postfx::Pass::CausticsTileIrradiance).present);
   glDeleteTextures(1, &water);
