@@ -82,7 +82,8 @@ Result buildBlocks(const Context& context, const FrameDesc& frame, const detail:
   if (plan.godRays) {
     blocks.godRays = detail::buildGodRaysBlock(
         frame, width, height, blocks.pivot,
-        context.godRaySampling == testing::GodRaySampling::UniformAlongRay);
+        context.godRaySampling == testing::GodRaySampling::UniformAlongRay,
+        context.godRayUniformPhase);
     if (!detail::allFinite(blocks.godRays))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
@@ -433,6 +434,16 @@ Result setGodRaySampling(Context& context, GodRaySampling sampling) noexcept {
   }
   context.error.clear();
   context.godRaySampling = sampling;
+  return Result::Ok;
+}
+
+Result setGodRayUniformPhase(Context& context, float phase) noexcept {
+  if (!(phase >= 0.0f && phase < 1.0f)) {
+    context.error = "setGodRayUniformPhase: phase must be in [0, 1)";
+    return Result::InvalidArgument;
+  }
+  context.error.clear();
+  context.godRayUniformPhase = phase;
   return Result::Ok;
 }
 

@@ -103,6 +103,7 @@ void main() {
   }
   int count = int(g.gridZ.w);
   float phase = g.gridOffset.w > 0.5 ? bayer4(ivec2(gl_FragCoord.xy)) : 0.5;
+  float uniformPhase = g.gridOffset.w > 0.5 ? phase : g.fade.w;
   vec3 weighted = vec3(0.0), weights = vec3(0.0);
   int taken = 0;
   if (g.gridOffset.z > 0.5) {
@@ -110,7 +111,7 @@ void main() {
     float dt = (tEnd - tStart) / float(count);
     for (int i = 0; i < GODRAYS_MAX_SAMPLES; ++i) {
       if (i >= count) break;
-      float t = tStart + (float(i) + phase) * dt;
+      float t = tStart + (float(i) + uniformPhase) * dt;
       vec3 w = dt * exp(-g.extinction.rgb * (t - tStart));
       weighted += w * sunSource(d * t, t);
       weights += w;
