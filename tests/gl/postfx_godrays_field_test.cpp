@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "frame_constants.h"
@@ -253,6 +255,57 @@ TEST_F(PostfxGodRaysFieldTest, NoLightAboveWaterOrOnSkyFiniteAndBounded) {
     }
     if (resolution == postfx::GodRayResolution::Full) EXPECT_GT(lit, spec.width * spec.height / 10);
   }
+  glDeleteTextures(1, &water);
+}
+
+// The dense march's test hook: phases outside [0, 1) are refused with a message naming the hook,
+// and the mean of frames at evenly spread phases refines the march (here 4 x 16 samples against
+// 64: the same sample points, each frame normalised by its own transmittance weights).
+TEST_F(PostfxGodRaysFieldTest, UniformPhasesAverageToTheFinerMarch) {
+  postfxtest::SceneSpec spec;
+  spec.width = 48;
+  spec.height = 27;
+  spec.lookDirection = {0.0, -0.25, -1.0};
+  postfxtest::Scene scene(spec);
+  const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
+  auto fx = postfxtest::makeContext(Feature::GodRays);
+  for (float bad : {-0.1f, 1.0f, std::numeric_limits<float>::quiet_NaN()}) {
+    EXPECT_EQ(postfx::testing::setGodRayUniformPhase(*fx, bad), Result::InvalidArgument);
+    EXPECT_NE(std::string(postfx::lastError(fx.get())).find("setGodRayUniformPhase"),
+              std::string::npos);
+  }
+  ASSERT_EQ(
+      postfx::testing::setGodRaySampling(*fx, postfx::testing::GodRaySampling::UniformAlongRay),
+      Result::Ok);
+  postfx::FrameDesc frame = fieldFrame(scene, water, postfx::CausticsModel::TileIrradiance);
+  frame.godRays.sampleCount = 64;
+  ASSERT_EQ(postfx::testing::setGodRayUniformPhase(*fx, 0.5f), Result::Ok);
+  const std::vector<glm::vec4> fine = render(*fx, scene, frame);
+  frame.godRays.sampleCount = 16;
+  std::vector<glm::dvec3> mean(fine.size(), glm::dvec3(0.0));
+  for (int k = 0; k < 4; ++k) {
+    // Sample i of phase k sits at step (4 i + k + 0.5) / 64 of the ray: the 64-sample march's.
+    ASSERT_EQ(postfx::testing::setGodRayUniformPhase(*fx, (float(k) + 0.5f) / 4.0f), Result::Ok);
+    const std::vector<glm::vec4> image = render(*fx, scene, frame);
+    for (size_t i = 0; i < image.size(); ++i) mean[i] += glm::dvec3(image[i]) / 4.0;
+  }
+  // One 16-sample frame at the middle phase, for scale.
+  ASSERT_EQ(postfx::testing::setGodRayUniformPhase(*fx, 0.5f), Result::Ok);
+  const std::vector<glm::vec4> coarse = render(*fx, scene, frame);
+  double peak = 0.0, meanError = 0.0, coarseError = 0.0, norm = 0.0;
+  for (size_t i = 0; i < fine.size(); ++i) {
+    const double f = fine[i].g;
+    peak = std::max(peak, f);
+    meanError += (mean[i].g - f) * (mean[i].g - f);
+    coarseError += (double(coarse[i].g) - f) * (double(coarse[i].g) - f);
+    norm += f * f;
+  }
+  std::printf(
+      "4 phases x 16 samples vs 64 samples: relative RMSE %.4f (one 16-sample frame %.4f)\n",
+      std::sqrt(meanError / norm), std::sqrt(coarseError / norm));
+  EXPECT_LT(meanError, 0.25 * coarseError) << "the phases must refine the march";
+  EXPECT_LT(std::sqrt(meanError / norm), 0.05);
+  EXPECT_GT(peak, 1e-3);
   glDeleteTextures(1, &water);
 }
 
