@@ -14,7 +14,7 @@ postfx_add_test(postfx_gl_tests
   SOURCES gl/postfx_scene.cpp gl/postfx_state_test.cpp gl/postfx_bad_input_test.cpp
           gl/postfx_caustics_test.cpp gl/postfx_composition_test.cpp gl/postfx_stability_test.cpp
           gl/postfx_timing_test.cpp
-          gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp
+          gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp gl/postfx_godrays_field_test.cpp
           gl/postfx_cascade_skip_test.cpp gl/postfx_caustics_lookup_test.cpp
           gl/postfx_refusal_test.cpp
   LIBS postfx gbuffer glm::glm postfx::epoxy

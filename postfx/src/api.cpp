@@ -82,7 +82,8 @@ Result buildBlocks(const Context& context, const FrameDesc& frame, const detail:
   if (plan.godRays) {
     blocks.godRays = detail::buildGodRaysBlock(
         frame, width, height, blocks.pivot,
-        context.godRaySampling == testing::GodRaySampling::UniformAlongRay);
+        context.godRaySampling == testing::GodRaySampling::UniformAlongRay,
+        context.godRayUniformPhase);
     if (!detail::allFinite(blocks.godRays))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
@@ -99,22 +100,34 @@ Result buildBlocks(const Context& context, const FrameDesc& frame, const detail:
   return Result::Ok;
 }
 
-// The TileIrradiance pre-pass, built on first use, and the caustics program's variant for this
-// frame's cascades and model (`variant`). A failure changes nothing.
-Result ensureTileIrradiance(Context& context, const FrameDesc& frame, bool physical, int& variant,
-                            std::string& error) {
+// The TileIrradiance programs of this frame's cascades, each built on first use: the pre-pass,
+// and the variants of the passes that read its field (0 for a pass that does not draw).
+struct TileVariants {
+  int caustics = 0, godRays = 0;
+};
+
+// A failure changes nothing.
+Result ensureTileIrradiance(Context& context, const FrameDesc& frame, const detail::FramePlan& plan,
+                            TileVariants& variants, std::string& error) {
   if (!context.tileIrradianceReady) {
     const Result r = context.tileIrradiance.init(detail::shaderDefines(context.desc), error);
     if (r != Result::Ok) return r;
     context.tileIrradianceReady = true;
   }
   const detail::TileIrradianceLayout layout = detail::tileIrradianceLayout(frame);
-  // The TileIrradiance model may look the field up at half resolution; the window continued by
-  // it looks it up per pixel (only in its outer band and beyond).
-  const bool reduced =
-      !physical && frame.caustics.tileLookupResolution == CausticsLookupResolution::Half;
-  return context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, reduced, physical,
-                                            variant, error);
+  if (plan.caustics) {
+    // The TileIrradiance model may look the field up at half resolution; the window continued
+    // by it looks it up per pixel (only in its outer band and beyond).
+    const bool reduced =
+        !plan.physical && frame.caustics.tileLookupResolution == CausticsLookupResolution::Half;
+    const Result r = context.caustics.ensureTileProgram(layout.groups, layout.cascadeMask, reduced,
+                                                        plan.physical, variants.caustics, error);
+    if (r != Result::Ok) return r;
+  }
+  if (plan.godRays)
+    return context.godRays.ensureTileProgram(layout.groups, layout.cascadeMask, variants.godRays,
+                                             error);
+  return Result::Ok;
 }
 
 // Our framebuffers hold the host's target only within the frame: every pass prepared lets go of
@@ -195,8 +208,8 @@ void timedPass(Context& context, const detail::FramePlan& plan, Pass pass, const
 
 // Records the planned passes into the host's target.
 void record(Context& context, const FrameDesc& frame, const detail::FramePlan& plan,
-            const detail::ValidatedTextures& textures, const FrameBlocks& blocks, int tileVariant,
-            HeldTargets& held) {
+            const detail::ValidatedTextures& textures, const FrameBlocks& blocks,
+            const TileVariants& tile, HeldTargets& held) {
   TimedFrame timedFrame(context.timers);
   if (hasFeature(context.desc.features, Feature::PhysicalCaustics)) {
     const double clamped = context.irradiance.pollClampCounts();
@@ -211,7 +224,8 @@ void record(Context& context, const FrameDesc& frame, const detail::FramePlan& p
   if (plan.fullScreen) {
     // The god rays draw under the caustics pass's state (its units, samplers and block); each
     // pre-pass draws into its own framebuffer, then that state is set again with its result.
-    // Both pre-passes run before the floor and the caustics: both sample their result.
+    // Both pre-passes run before the floor, the caustics and the god rays: all sample their
+    // result (the god rays the same field as the caustics).
     const GLuint irradiance = plan.physical ? context.irradiance.texture() : 0;
     context.caustics.bindState(frame, textures, irradiance);
     if (plan.physical) {
@@ -228,10 +242,11 @@ void record(Context& context, const FrameDesc& frame, const detail::FramePlan& p
       timedPass(context, plan, Pass::Floor, "postfx.floor", [&] { context.caustics.drawFloor(); });
     if (plan.caustics)
       timedPass(context, plan, Pass::Caustics, "postfx.caustics",
-                [&] { context.caustics.drawCaustics(tileVariant); });
+                [&] { context.caustics.drawCaustics(tile.caustics); });
     if (plan.godRays) {
-      timedPass(context, plan, Pass::GodRays, "postfx.god_rays",
-                [&] { context.godRays.draw(frame, textures.width, textures.height); });
+      timedPass(context, plan, Pass::GodRays, "postfx.god_rays", [&] {
+        context.godRays.draw(frame, textures.width, textures.height, tile.godRays);
+      });
       context.godRayPivot = blocks.pivot;
     }
     held.release();
@@ -253,9 +268,9 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   if (r != Result::Ok) return r;
   r = detail::checkFrameMemory(context.desc, frame, textures.width, textures.height, plan, error);
   if (r != Result::Ok) return r;
-  int tileVariant = 0;  // the caustics program's tile-irradiance variant; 0: none read
+  TileVariants tile;  // all 0: another model
   if (plan.tile) {
-    r = ensureTileIrradiance(context, frame, plan.physical, tileVariant, error);
+    r = ensureTileIrradiance(context, frame, plan, tile, error);
     if (r != Result::Ok) return r;
   }
 
@@ -265,7 +280,7 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   HeldTargets held(context);
   r = reserve(context, frame, plan, textures, blocks, held, error);
   if (r != Result::Ok) return r;
-  record(context, frame, plan, textures, blocks, tileVariant, held);
+  record(context, frame, plan, textures, blocks, tile, held);
   return Result::Ok;
 }
 
@@ -331,8 +346,10 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     std::array<bool, kPassCount> present{};
     present[int(Pass::Caustics)] = hasFeature(desc.features, Feature::Caustics);
     present[int(Pass::Floor)] = hasFeature(desc.features, testing::BenchmarkFloor);
-    // TileIrradiance needs no feature of its own: its pre-pass exists wherever caustics do.
-    present[int(Pass::CausticsTileIrradiance)] = hasFeature(desc.features, Feature::Caustics);
+    // TileIrradiance needs no feature of its own: its pre-pass exists wherever caustics or god
+    // rays (which read its field) do.
+    present[int(Pass::CausticsTileIrradiance)] =
+        hasFeature(desc.features, Feature::Caustics) || hasFeature(desc.features, Feature::GodRays);
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
@@ -422,6 +439,16 @@ Result setGodRaySampling(Context& context, GodRaySampling sampling) noexcept {
   }
   context.error.clear();
   context.godRaySampling = sampling;
+  return Result::Ok;
+}
+
+Result setGodRayUniformPhase(Context& context, float phase) noexcept {
+  if (!(phase >= 0.0f && phase < 1.0f)) {
+    context.error = "setGodRayUniformPhase: phase must be in [0, 1)";
+    return Result::InvalidArgument;
+  }
+  context.error.clear();
+  context.godRayUniformPhase = phase;
   return Result::Ok;
 }
 

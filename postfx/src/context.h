@@ -22,6 +22,7 @@ struct Context {
   detail::GodRaysPass godRays;
   detail::GodRayGridPivot godRayPivot;
   testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
+  float godRayUniformPhase = 0.5f;
   detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
   // Compiled the first time a frame uses the TileIrradiance model.
   detail::TileIrradiancePass tileIrradiance;

@@ -61,9 +61,12 @@ bool FramePlan::runs(Pass pass) const {
 FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   FramePlan plan;
   plan.caustics = causticsHaveWork(context, frame);
-  plan.physical = plan.caustics && physicalCausticsActive(context.desc, frame);
-  plan.tile = plan.caustics && tileIrradianceActive(frame);
   plan.godRays = godRaysHaveWork(context, frame);
+  // The model's light field serves the seabed caustics and the god rays (whose shafts take their
+  // light from it): computed when either draws, left out when neither does.
+  const bool fieldNeeded = plan.caustics || plan.godRays;
+  plan.physical = fieldNeeded && physicalCausticsActive(context.desc, frame);
+  plan.tile = fieldNeeded && tileIrradianceActive(frame);
   plan.objects = objectCausticsHaveWork(context, frame);
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
   plan.fullScreen = plan.caustics || plan.godRays || (plan.objects && plan.floor);

@@ -13,8 +13,9 @@ namespace postfx::detail {
 
 struct FramePlan {
   bool caustics = false;  // the seabed caustics pass
-  bool physical = false;  // its WavefrontAreaRatio pre-pass
-  bool tile = false;      // its TileIrradiance pre-pass
+  // The caustics model's pre-pass, for the caustics or the god rays (both read its field).
+  bool physical = false;  // WavefrontAreaRatio
+  bool tile = false;      // TileIrradiance
   bool godRays = false;
   bool objects = false;  // the object caustics
   bool floor = false;    // benchmark mode (testing::BenchmarkFloor): every timed pass drained

@@ -56,7 +56,8 @@ const glm::dvec3& GodRayGridPivot::follow(const GodRayGrid& grid, double spacing
 }
 
 shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int height,
-                                       GodRayGridPivot& pivot, bool uniformSampling) {
+                                       GodRayGridPivot& pivot, bool uniformSampling,
+                                       float uniformPhase) {
   shared::GodRaysBlock b{};
   const GodRaySettings& s = frame.godRays;
   const WaterSurface& water = frame.water;
@@ -71,7 +72,7 @@ shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int he
   b.gridOffset = glm::vec4(static_cast<float>(godRayGridPhase(glm::dot(camera, grid.x), spacing)),
                            static_cast<float>(godRayGridPhase(glm::dot(camera, grid.z), spacing)),
                            uniformSampling ? 1.0f : 0.0f, s.dither ? 1.0f : 0.0f);
-  b.fade = glm::vec4(s.surfaceFadeDistance, s.depthFadeDistance, s.maxDistance, 0.0f);
+  b.fade = glm::vec4(s.surfaceFadeDistance, s.depthFadeDistance, s.maxDistance, uniformPhase);
   const glm::dvec3 extinction = glm::dvec3(water.absorption) + glm::dvec3(water.scattering);
   b.extinction = glm::vec4(glm::vec3(extinction), 0.0f);
   // grid.y.y >= cos(critical angle) ~ 0.66 for a sun above the horizon (the pass is skipped

@@ -62,8 +62,10 @@ inline int godRayReducedSize(int size, GodRayResolution resolution) {
 
 // `width` x `height`: the target's. `pivot` follows the camera (see GodRayGridPivot); pass a
 // copy of the context's and keep it only once the frame is drawn. `uniformSampling`: the test
-// hook testing::GodRaySampling::UniformAlongRay instead of the world grid.
+// hook testing::GodRaySampling::UniformAlongRay instead of the world grid, its samples at
+// `uniformPhase` of each step (testing::setGodRayUniformPhase).
 shared::GodRaysBlock buildGodRaysBlock(const FrameDesc& frame, int width, int height,
-                                       GodRayGridPivot& pivot, bool uniformSampling = false);
+                                       GodRayGridPivot& pivot, bool uniformSampling = false,
+                                       float uniformPhase = 0.5f);
 
 }  // namespace postfx::detail

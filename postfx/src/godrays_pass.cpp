@@ -9,6 +9,7 @@
 
 namespace postfx::detail {
 Result GodRaysPass::init(const std::string& defines, std::string& error) {
+  defines_ = defines;
   const glkit::ShaderStage march{GL_FRAGMENT_SHADER, "postfx/godrays.frag"};
   const Result r = buildPrograms(
       defines,
@@ -29,6 +30,31 @@ Result GodRaysPass::init(const std::string& defines, std::string& error) {
   reducedSampler_ = glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
                                          "postfx.sampler.god_rays_reduced");
   return Result::Ok;
+}
+
+Result GodRaysPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
+                                      std::string& error) {
+  const int g = groups > 1 ? 2 : 1;
+  const int index = kTileMasks * (g - 1) + (cascadeMask & (kTileMasks - 1));
+  variant = 1 + index;
+  if (tileFull_[index].id() != 0 && tileReduced_[index].id() != 0) return Result::Ok;
+  // The window model's lookup is compiled out: the two models never run together.
+  const std::string tile =
+      "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n"
+      "#define POSTFX_TILE_IRRADIANCE 1\n#define POSTFX_TILE_GROUPS " +
+      std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " +
+      std::to_string(cascadeMask & (kTileMasks - 1)) + "\n";
+  const glkit::ShaderStage march{GL_FRAGMENT_SHADER, "postfx/godrays.frag"};
+  return buildPrograms(defines_,
+                       {{tileFull_[index],
+                         "postfx.god_rays_tile",
+                         {kFullScreenVertex, march},
+                         tile + "#define POSTFX_GODRAYS_REDUCED 0\n"},
+                        {tileReduced_[index],
+                         "postfx.god_rays_tile.reduced",
+                         {kFullScreenVertex, march},
+                         tile + "#define POSTFX_GODRAYS_REDUCED 1\n"}},
+                       error);
 }
 
 void GodRaysPass::ensureReduced(int w, int h) {
@@ -64,11 +90,13 @@ Result GodRaysPass::prepare(const FrameDesc& frame, int width, int height,
   return Result::Ok;
 }
 
-void GodRaysPass::draw(const FrameDesc& frame, int width, int height) {
+void GodRaysPass::draw(const FrameDesc& frame, int width, int height, int tileVariant) {
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_GODRAYS_BLOCK_BINDING, uniformBuffer_.id());
+  const GLuint full = tileVariant > 0 ? tileFull_[tileVariant - 1].id() : full_.id();
+  const GLuint reduced = tileVariant > 0 ? tileReduced_[tileVariant - 1].id() : reduced_.id();
   if (frame.godRays.resolution == GodRayResolution::Full) {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
-    glUseProgram(full_.id());
+    glUseProgram(full);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return;
   }
@@ -77,7 +105,7 @@ void GodRaysPass::draw(const FrameDesc& frame, int width, int height) {
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(reducedWidth_),
                      static_cast<float>(reducedHeight_));
   glDisablei(GL_BLEND, 0);
-  glUseProgram(reduced_.id());
+  glUseProgram(reduced);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   // Upsample, added into the target.
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());

@@ -12,12 +12,24 @@
 // w_i = dt_i * exp(-sigma_t * t_i). With w_i = 1 that is the seed's sum(rho_i omega_i) / D_n; the
 // weights make it an unbiased quadrature and extend the sampled part's mean over the rest of the
 // ray when sampleCount runs out before its end. L <= E * intensity * sigma_s / sigma_t: bounded.
+// Light field (omega in S): the seabed caustics' own where the frame's model has one, so that
+// the shafts line up with the pattern on the seabed below them: the TileIrradiance variant
+// (POSTFX_TILE_IRRADIANCE, built like caustics.frag's) reads the tile irradiance at the sample's
+// depth; the WavefrontAreaRatio model (POSTFX_PHYSICAL, window on) its depth layers inside the
+// window, blended to the seed-002 factor outside it exactly as the seabed is. RayDeviation keeps
+// seed 002's factor from the water slopes at each sample.
 // Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_REDUCED (write the reduced-
 // size texture: always written, alpha = the pixel's distance for the depth-aware upsample).
 #include "postfx/godrays_common.glsl"
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_godrays.h"
 #include "postfx/water_sampling.glsl"
+// Unconditional: the shader library expands each file once, where it is first named, even
+// inside a disabled #if.
+#include "shared/postfx_irradiance.h"
+#include "shared/postfx_tile_irradiance.h"
+#include "postfx/physical_irradiance_lookup.glsl"
+#include "postfx/tile_irradiance_lookup.glsl"
 
 // 4x4 ordered dither, fixed on screen and in time: no temporal noise.
 float bayer4(ivec2 p) {
@@ -39,12 +51,24 @@ vec3 sunSource(vec3 p, float t) {
   // coarser mip flattens the slopes before the nonlinear omega and brightens the mean (+10 % at
   // half resolution in the reference test); the upsample is what averages the texels.
   float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
-  vec4 cascades = selectCascades(depthBelow, logFootprint);
+#ifdef POSTFX_TILE_IRRADIANCE
+  float omega = tileIrradianceAt(p, depthBelow, logFootprint);
+#else
+  float physicalWeight = 0.0;
+#if POSTFX_PHYSICAL
+  float physical = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
+#endif
+  // Inside the physical window the slopes are not needed: no cascade is read (on GPUs).
+  vec4 cascades = physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   // Looked up where this point's light entered the water, as the caustics pass does.
   vec3 waterNormal =
       waterNormalFromSlopes(cascadeSlopes(lightEntryCoord(p), 1, logFootprint, cascades));
   float omega = causticFactorAcrossIncidence(u.towardSun.xyz, waterNormal, u.eta.g,
                                              u.reference.xyz, u.towardSun.w, u.reference.w);
+#if POSTFX_PHYSICAL
+  omega = mix(omega, physical, physicalWeight);
+#endif
+#endif
   return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);
 }
 
@@ -79,6 +103,7 @@ void main() {
   }
   int count = int(g.gridZ.w);
   float phase = g.gridOffset.w > 0.5 ? bayer4(ivec2(gl_FragCoord.xy)) : 0.5;
+  float uniformPhase = g.gridOffset.w > 0.5 ? phase : g.fade.w;
   vec3 weighted = vec3(0.0), weights = vec3(0.0);
   int taken = 0;
   if (g.gridOffset.z > 0.5) {
@@ -86,7 +111,7 @@ void main() {
     float dt = (tEnd - tStart) / float(count);
     for (int i = 0; i < GODRAYS_MAX_SAMPLES; ++i) {
       if (i >= count) break;
-      float t = tStart + (float(i) + phase) * dt;
+      float t = tStart + (float(i) + uniformPhase) * dt;
       vec3 w = dt * exp(-g.extinction.rgb * (t - tStart));
       weighted += w * sunSource(d * t, t);
       weights += w;

@@ -20,7 +20,8 @@ layout(std140, binding = POSTFX_GODRAYS_BLOCK_BINDING) uniform GodRaysBlock {
                          // w: sample count
   vec4 gridOffset;       // x, y: camera's x', z' modulo s (m, in double on the CPU); z: 1 for
                          // uniform sampling along the ray; w: 1 for the screen-fixed dither
-  vec4 fade;             // x: surface fade (m), y: depth fade (m), z: max distance (m), w: unused
+  vec4 fade;             // x: surface fade (m), y: depth fade (m), z: max distance (m), w: phase
+                         // of the uniform sampling's samples within their steps (0.5)
   vec4 extinction;       // rgb: sigma_t = absorption + scattering (1/m); w: unused
   vec4 sunPath;          // rgb: sigma_t / cos(theta_t), per metre of depth (sun path); w: unused
   vec4 lightScale;       // rgb: sun irradiance * intensity; w: unused

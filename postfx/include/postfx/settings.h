@@ -97,6 +97,10 @@ struct CausticsSettings {
   // saves nothing); the error it costs is in the report (ocean_sample report).
   float minCascadeContrast = 0.1f;
 
+  // The light field of the seabed caustics and of the god rays (GodRaySettings): with
+  // TileIrradiance and WavefrontAreaRatio the shafts take their light from the same irradiance
+  // as the seabed, so they line up with its pattern; the field's pre-pass then runs whenever
+  // either draws (god rays alone included) and is left out when neither does.
   CausticsModel model = CausticsModel::TileIrradiance;
 
   // --- TileIrradiance only (validated always) ---
@@ -178,6 +182,15 @@ inline constexpr Range<float> kGridSpacingRange{0.01f, 1e3f};       // m
 inline constexpr Range<float> kDepthFadeDistanceRange{0.0f, 1e5f};  // m
 inline constexpr Range<float> kMaxMarchDistanceRange{0.1f, 1e5f};   // m
 
+// Single scattering of the sun along each view ray under the water. The light at each sample is
+// the caustics model's field at the sample's depth (CausticsSettings::model): TileIrradiance
+// (the default) reads the tile irradiance the seabed caustics read, WavefrontAreaRatio its
+// window's depth layers and, outside the window, seed 002's factor as the seabed does there;
+// RayDeviation keeps seed 002's factor from the water slopes at each sample (shafts that do not
+// line up with the seabed's pattern). Flat water gives the unmodulated shafts with every model.
+// Seed 002's factor is at most 1, so a pixel gets at most E * intensity * sigma_s / sigma_t; an
+// irradiance field focuses (its mean is flat water's 1), so a ray inside a bright sheet can get
+// up to the field's clamp (CausticsSettings::maxIrradiance) times that.
 struct GodRaySettings {
   // Off: the pass is skipped (0 ms).
   bool enabled = true;

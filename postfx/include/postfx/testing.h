@@ -48,5 +48,10 @@ enum class GodRaySampling {
 // Sets the sampling of the context's later frames; InvalidArgument (nothing changed) for a
 // value outside the enum.
 Result setGodRaySampling(Context& context, GodRaySampling sampling) noexcept;
+// Where within each of its steps UniformAlongRay puts a sample, in [0, 1) (0.5, the middle,
+// unless set; the dither, when on, overrides it): the mean of frames at evenly spread phases is a
+// march with that many times the samples (the report's dense march of the god rays).
+// InvalidArgument (nothing changed) outside [0, 1).
+Result setGodRayUniformPhase(Context& context, float phase) noexcept;
 
 }  // namespace postfx::testing
