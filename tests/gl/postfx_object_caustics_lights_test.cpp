@@ -16,16 +16,6 @@ namespace {
 using namespace postfxtest;
 using postfx::Result;
 
-ContextPtr makeLightContext(int maxLocalLights = 1) {
-  postfx::CreateDesc desc;
-  desc.features = postfx::Feature::ObjectCaustics;
-  desc.depthConvention = static_cast<postfx::DepthConvention>(0);  // as makeContext
-  desc.maxLocalLights = maxLocalLights;
-  postfx::Context* fx = nullptr;
-  EXPECT_EQ(postfx::create(desc, fx), Result::Ok) << postfx::lastError(nullptr);
-  return ContextPtr(fx);
-}
-
 glm::dmat4 scaled(const glm::dvec3& centre, const glm::dvec3& scale) {
   glm::dmat4 m = translation(centre);
   m[0][0] = scale.x;
@@ -44,11 +34,8 @@ postfx::CasterMaterial thinGlass() {
 // Dispatches the light alone (no sun) and reads its map back.
 LightMap runLight(postfx::Context& fx, const ObjectHost& host, const postfx::CasterMesh& caster,
                   const postfx::LocalLight& light, const postfx::ObjectCausticsSettings& s) {
-  postfx::FrameDesc frame = host.frame(&caster, 1, s);
-  frame.objectCaustics.sunCaustics = false;
-  frame.objectCaustics.lights = &light;
-  frame.objectCaustics.lightCount = 1;
-  EXPECT_EQ(postfx::dispatch(fx, frame), Result::Ok) << postfx::lastError(&fx);
+  EXPECT_EQ(postfx::dispatch(fx, lightsOnlyFrame(host, &caster, 1, &light, 1, s)), Result::Ok)
+      << postfx::lastError(&fx);
   EXPECT_EQ(postfx::stats(fx).lightSkip[0], postfx::LightSkip::None);
   return LightMap(postfx::testing::lightCausticMap(fx), light.position);
 }
@@ -74,10 +61,8 @@ class PostfxObjectCausticsLightsTest : public testsupport::GlTest {};
 TEST_F(PostfxObjectCausticsLightsTest, ThinPaneGivesTheInverseSquare) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh cube = makeCubeMesh(1.0);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 128;
-  s.mapSize = 256;
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(128, 256);
   const double t = 1.0 - shared::fresnelDielectric(1.0f, 1.5f);
   const double transmitted = t * t;
   for (double d : {1.0, 2.0, 5.0, 10.0}) {
@@ -104,10 +89,8 @@ TEST_F(PostfxObjectCausticsLightsTest, ThinPaneGivesTheInverseSquare) {
 TEST_F(PostfxObjectCausticsLightsTest, SpotConeCutsTheLightWhereItSays) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh cube = makeCubeMesh(1.0);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 128;
-  s.mapSize = 256;
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(128, 256);
   const double d = 3.0;
   const glm::dvec3 position(0.0, d, 0.0), down(0.0, -1.0, 0.0);
   LightReceiverMap receivers(position, down, 40.0, 0.0, 512);
@@ -167,10 +150,8 @@ TEST_F(PostfxObjectCausticsLightsTest, SpotConeCutsTheLightWhereItSays) {
 TEST_F(PostfxObjectCausticsLightsTest, GlassSphereFocusesAtTheThickLensPosition) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh mesh = makeSphereMesh(0.25, 96, 48);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 256;
-  s.mapSize = 512;
+  auto fx = makeLightContext(1);
+  postfx::ObjectCausticsSettings s = sizedSettings(256, 512);
   s.iterations = 3;
   const double radius = 0.25, ior = 1.5, u = 2.0;
   const double f = ior * radius / (2.0 * (ior - 1.0));
@@ -218,10 +199,8 @@ TEST_F(PostfxObjectCausticsLightsTest, GlassSphereFocusesAtTheThickLensPosition)
 TEST_F(PostfxObjectCausticsLightsTest, SphereFluxMatchesFresnelAndAbsorption) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh mesh = makeSphereMesh(0.25, 128, 64);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 256;
-  s.mapSize = 512;
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(256, 512);
   const double radius = 0.25, ior = 1.5, u = 2.0;
   const glm::dvec3 absorption(0.8, 0.3, 0.05);
   postfx::CasterMaterial glass;
