@@ -178,8 +178,9 @@ TEST_F(PostfxObjectCausticsLightsCostTest, CostPerLightAgainstAFairFloorIsLinear
   const std::vector<postfx::LocalLight> lights(4, light);
   const postfx::ObjectCausticsSettings s;  // defaults: grid 256, map 512
   // The light 2 m from the centre of the sphere (R 0.5) fits its view to the sphere's box: the
-  // sphere's disk spans tan(asin(R / 2)) / (1.02 tan(atan(0.707 / 1.5))) = 0.54 of it.
-  const float disk = 0.54f;
+  // box's top corners, 1.5 m below it and 0.5 m to the side, set its half side (tan 1/3, 2 %
+  // room), and the sphere's disk spans tan(asin(R / 2)) / (1.02 / 3) = 0.76 of it.
+  const float disk = 0.76f;
   LightFloor floor(s.gridSize, s.mapSize, host.scene.target, disk);
   const int frames = 12;
   double oneLight = 0.0;
