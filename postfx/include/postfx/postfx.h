@@ -82,7 +82,7 @@ struct CreateDesc {  // fixed for the context's life
   int memoryBudgetMiB = 1024;
   // Most local lights a frame may list (ObjectCausticsFrame::lightCount), [0,
   // kMaxLocalLightsLimit] (postfx/lights.h), fixed at create(): it sizes the uniform blocks
-  // (one ~3.9 KiB slot per light) and the per-light timers. A light runs the sun's own programs
+  // (one 3.75 KiB slot per light) and the per-light timers. A light runs the sun's own programs
   // with its own block, so no shader is compiled per light and 0 (default) costs nothing. Read
   // only with Feature::ObjectCaustics.
   int maxLocalLights = 0;
