@@ -182,8 +182,8 @@ TEST_F(PostfxObjectCausticsLightsCostTest, CostPerLightAgainstAFairFloorIsLinear
   // room), and the sphere's disk spans tan(asin(R / 2)) / (1.02 / 3) = 0.76 of it.
   const float disk = 0.76f;
   LightFloor floor(s.gridSize, s.mapSize, host.scene.target, disk);
-  const int frames = 12;
-  double oneLight = 0.0;
+  const int frames = 8;
+  double oneLight = 0.0, oneLightRatio = 0.0;
   for (int count : {1, 2, 4}) {
     // A context of its own per count: a light's median counts the frames it was skipped in.
     ContextPtr fx = makeLightContext(4, postfx::testing::BenchmarkFloor);
@@ -206,19 +206,25 @@ TEST_F(PostfxObjectCausticsLightsCostTest, CostPerLightAgainstAFairFloorIsLinear
     double total = 0.0;
     for (int i = 0; i < count; ++i) total += stats.objectLight(i).medianMs;
     const double floorMedian = median(floorMs);
-    if (count == 1) oneLight = total;
+    // Per light, as a ratio to the floor timed in the same frames: what survives the load.
+    const double ratio = total / count / floorMedian;
+    if (count == 1) {
+      oneLight = total;
+      oneLightRatio = ratio;
+    }
     std::printf(
         "%d light(s): lights %.2f ms in all (%.2f per light), fair floor %.2f ms: %.2fx the "
         "floor per light; %.2fx one light's cost\n",
-        count, total, total / count, floorMedian, total / count / floorMedian, total / oneLight);
+        count, total, total / count, floorMedian, ratio, total / oneLight);
     for (int i = 0; i < count; ++i) EXPECT_GT(stats.objectLight(i).medianMs, 0.0);
     EXPECT_GT(floorMedian, 0.0);
-    // Linear: each light is its own passes over the same maps. Loose bounds: llvmpipe shares the
-    // CPU with whatever else runs (under ctest -j2, 2 and 4 lights measured 1.39x and 2.17x one
-    // light's total; alone 1.56x and 3.05x), so this only says that the cost grows with the
-    // lights and stays within linear.
-    if (count > 1) EXPECT_GT(total / oneLight, 1.2 + 0.1 * count);
-    EXPECT_LT(total / oneLight, 1.6 * count);
+    // Linear: each light costs about what one alone does, against the floor of the same frames.
+    // Loose bounds: llvmpipe shares the CPU with whatever else runs, and a load spike during
+    // one count's frames moved the lights' total from 3x to 14x one light's while the floor
+    // moved with it (per-light ratio 2.06 against 4.90 alone). Quiet runs: 0.67-0.76 for four
+    // lights against one (the first light of a frame costs more).
+    EXPECT_GT(ratio / oneLightRatio, 0.3);
+    EXPECT_LT(ratio / oneLightRatio, 3.0);
   }
 }
 
