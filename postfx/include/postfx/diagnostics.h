@@ -60,8 +60,10 @@ struct FrameStats {
   // Feature::ObjectCaustics. A light that makes no caustics is skipped: 0 ms.
   PassStats lights[kMaxLocalLightsLimit];
   const PassStats& objectLight(int i) const noexcept { return lights[i]; }
-  // Why each light was skipped in the most recent successful dispatch (None: it ran). Known at
-  // once, unlike the timings, which describe a frame a few dispatches old.
+  // Why each light was skipped in the most recent successful dispatch (None: it ran), for
+  // i < CreateDesc::maxLocalLights (a slot past lightCount reads NoCasterInReach; slots past
+  // maxLocalLights stay None). Known at once, unlike the timings, which describe a frame a few
+  // dispatches old.
   LightSkip lightSkip[kMaxLocalLightsLimit] = {};
   std::uint64_t framesDispatched = 0;  // successful dispatch() calls
   std::uint64_t framesResolved = 0;    // of those, frames whose timings have been read back
