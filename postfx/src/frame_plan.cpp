@@ -5,6 +5,7 @@
 #include "context.h"
 #include "frame_constants.h"
 #include "object_caustics_frame.h"
+#include "object_caustics_light_frame.h"
 #include "visibility.h"
 
 namespace postfx::detail {
@@ -29,13 +30,13 @@ bool godRaysHaveWork(const Context& context, const FrameDesc& frame) {
          frame.godRays.intensity > 0.0f && underwaterLit(context, frame);
 }
 
-// Casters given, sun above the horizon and some caster inside the receiver map's view: else
-// nothing can land anywhere.
+// The sun's caustics wanted, casters given, sun above the horizon and some caster inside the
+// receiver map's view: else nothing can land anywhere.
 bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
   const ObjectCausticsFrame& o = frame.objectCaustics;
   return hasFeature(context.desc.features, Feature::ObjectCaustics) && o.settings.enabled &&
-         o.casterCount > 0 && o.settings.intensity > 0.0f && frame.sun.direction.y > 0.0 &&
-         castersInReceiverView(o);
+         o.sunCaustics && o.casterCount > 0 && o.settings.intensity > 0.0f &&
+         frame.sun.direction.y > 0.0 && castersInReceiverView(o);
 }
 
 }  // namespace
@@ -68,8 +69,15 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   plan.physical = fieldNeeded && physicalCausticsActive(context.desc, frame);
   plan.tile = fieldNeeded && tileIrradianceActive(frame);
   plan.objects = objectCausticsHaveWork(context, frame);
+  if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
+    for (int i = 0; i < context.desc.maxLocalLights; ++i) {
+      ObjectLightFrame view;
+      plan.lightSkip[i] = fitLocalLightFrame(frame, i, view);
+      if (plan.lightSkip[i] == LightSkip::None) plan.lights[plan.lightCount++] = i;
+    }
+  }
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
-  plan.fullScreen = plan.caustics || plan.godRays || (plan.objects && plan.floor);
+  plan.fullScreen = plan.caustics || plan.godRays || (plan.objectMaps() && plan.floor);
   return plan;
 }
 
