@@ -1,6 +1,7 @@
 # CPU references (sample_app/reference): their own correctness on cases with known answers.
 postfx_add_test(reference_unit_tests
   SOURCES unit/reference_seabed_test.cpp unit/reference_object_caustics_test.cpp
+          unit/reference_local_light_test.cpp
   LIBS ocean_reference)
 
 # The WavefrontAreaRatio caustics model (seed 004): its own properties, and its error against

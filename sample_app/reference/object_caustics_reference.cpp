@@ -9,6 +9,8 @@
 #include <random>
 #include <thread>
 
+#include "object_caustics_optics.h"
+
 namespace ocean::reference {
 namespace {
 
@@ -31,23 +33,6 @@ glm::dvec3 roughen(const glm::dvec3& d, double alpha, std::mt19937_64& rng) {
   const glm::dvec3 a = glm::normalize(glm::cross(ref, d)), b = glm::cross(d, a);
   std::normal_distribution<double> gauss(0.0, alpha);
   return glm::normalize(d + a * std::tan(gauss(rng)) + b * std::tan(gauss(rng)));
-}
-
-double fresnel(double cosI, double eta) {
-  cosI = std::clamp(cosI, 0.0, 1.0);
-  const double sinT2 = (1.0 - cosI * cosI) / (eta * eta);
-  if (sinT2 >= 1.0) return 1.0;
-  const double cosT = std::sqrt(1.0 - sinT2);
-  const double rs = (cosI - eta * cosT) / (cosI + eta * cosT);
-  const double rp = (eta * cosI - cosT) / (eta * cosI + cosT);
-  return 0.5 * (rs * rs + rp * rp);
-}
-
-std::optional<glm::dvec3> refractRay(const glm::dvec3& i, const glm::dvec3& n, double eta) {
-  const double c = -glm::dot(n, i);
-  const double k = 1.0 - eta * eta * (1.0 - c * c);
-  if (k < 0.0) return std::nullopt;
-  return eta * i + (eta * c - std::sqrt(k)) * n;
 }
 
 std::optional<glm::dvec3> landOnPlane(const glm::dvec3& p, const glm::dvec3& d, double planeY) {
