@@ -51,7 +51,7 @@ Result validateFrame(const Context& context, const FrameDesc& frame,
   r = detail::validateFrameTextures(context.desc, frame, textures, error);
   if (r != Result::Ok) return r;
   if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
-    r = detail::validateObjectCaustics(frame, error);
+    r = detail::validateObjectCaustics(context.desc, frame, error);
     if (r != Result::Ok) return r;
   }
   return detail::checkHostDrawState(error);

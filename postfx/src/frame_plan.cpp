@@ -29,13 +29,13 @@ bool godRaysHaveWork(const Context& context, const FrameDesc& frame) {
          frame.godRays.intensity > 0.0f && underwaterLit(context, frame);
 }
 
-// Casters given, sun above the horizon and some caster inside the receiver map's view: else
-// nothing can land anywhere.
+// The sun's caustics wanted, casters given, sun above the horizon and some caster inside the
+// receiver map's view: else nothing can land anywhere.
 bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
   const ObjectCausticsFrame& o = frame.objectCaustics;
   return hasFeature(context.desc.features, Feature::ObjectCaustics) && o.settings.enabled &&
-         o.casterCount > 0 && o.settings.intensity > 0.0f && frame.sun.direction.y > 0.0 &&
-         castersInReceiverView(o);
+         o.sunCaustics && o.casterCount > 0 && o.settings.intensity > 0.0f &&
+         frame.sun.direction.y > 0.0 && castersInReceiverView(o);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "convention_checks.h"
 #include "object_caustics_frame.h"
+#include "object_caustics_light_validation.h"
 #include "validation.h"
 
 namespace postfx::detail {
@@ -139,7 +140,8 @@ Result checkCaster(int index, const CasterMesh& m, std::string& error) {
 
 }  // namespace
 
-Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
+Result validateObjectCaustics(const CreateDesc& create, const FrameDesc& frame,
+                              std::string& error) {
   const ObjectCausticsFrame& o = frame.objectCaustics;
   auto fail = [&error](std::string message) {
     error = std::move(message);
@@ -171,6 +173,8 @@ Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
   if (o.casterCount < 0 || o.casterCount > kMaxCasters)
     return fail("objectCaustics.casterCount must be in [0, " + std::to_string(kMaxCasters) +
                 "], got " + std::to_string(o.casterCount));
+  const Result lights = validateLocalLights(create, o, error);
+  if (lights != Result::Ok) return lights;
   if (o.casterCount == 0) return Result::Ok;  // nothing else is read
   if (o.casters == nullptr) return fail("objectCaustics.casters is null but casterCount > 0");
   for (int i = 0; i < o.casterCount; ++i) {
@@ -188,16 +192,23 @@ Result validateObjectCaustics(const FrameDesc& frame, std::string& error) {
           "objectCaustics.casters: the world bounds (boundsMin/boundsMax under "
           "modelToWorld) must lie within +-" +
           worldExtentText() + " m");
-  const SunShadowMap& rec = o.receivers;
-  if (!finite(rec.worldToLightClip))
-    return fail("objectCaustics.receivers.worldToLightClip is not finite");
+  if (!o.sunCaustics) return Result::Ok;  // the sun's receivers are not read
+  return checkReceivers("objectCaustics.receivers", o.receivers, error);
+}
+
+Result checkReceivers(const std::string& field, const SunShadowMap& rec, std::string& error) {
+  auto fail = [&](const std::string& message) {
+    error = field + message;
+    return Result::InvalidArgument;
+  };
+  if (!finite(rec.worldToLightClip)) return fail(".worldToLightClip is not finite");
   if (!(std::abs(glm::determinant(rec.worldToLightClip)) > 1e-300))
-    return fail("objectCaustics.receivers.worldToLightClip is not invertible");
+    return fail(".worldToLightClip is not invertible");
   if (!isDepthConvention(rec.depthConvention))
-    return fail("objectCaustics.receivers.depthConvention is not a DepthConvention");
+    return fail(".depthConvention is not a DepthConvention");
   if (!within(rec.bias, kShadowBiasRange))
-    return fail("objectCaustics.receivers.bias must be in " + rangeText(kShadowBiasRange) + " m");
-  return checkDepthTexture("objectCaustics.receivers.depth", rec.depth, error);
+    return fail(".bias must be in " + rangeText(kShadowBiasRange) + " m");
+  return checkDepthTexture((field + ".depth").c_str(), rec.depth, error);
 }
 
 }  // namespace postfx::detail

@@ -7,6 +7,10 @@
 
 namespace postfx::detail {
 
-Result validateObjectCaustics(const FrameDesc& frame, std::string& error);
+Result validateObjectCaustics(const CreateDesc& create, const FrameDesc& frame, std::string& error);
+
+// A receiver depth map (the sun's or a light's) and its projection; `field` names it in the
+// message ("objectCaustics.lights[2].receivers").
+Result checkReceivers(const std::string& field, const SunShadowMap& receivers, std::string& error);
 
 }  // namespace postfx::detail

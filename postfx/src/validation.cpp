@@ -230,6 +230,11 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
             "], got " + std::to_string(desc.maxWaterCascades);
     return Result::InvalidArgument;
   }
+  if (desc.maxLocalLights < 0 || desc.maxLocalLights > kMaxLocalLightsLimit) {
+    error = "CreateDesc.maxLocalLights must be in [0, " + std::to_string(kMaxLocalLightsLimit) +
+            "], got " + std::to_string(desc.maxLocalLights);
+    return Result::InvalidArgument;
+  }
   if (desc.memoryBudgetMiB < 1 || desc.memoryBudgetMiB > (1 << 20)) {
     error = "CreateDesc.memoryBudgetMiB must be in [1, 1048576], got " +
             std::to_string(desc.memoryBudgetMiB);

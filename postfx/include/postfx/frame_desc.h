@@ -17,6 +17,8 @@
 
 namespace postfx {
 
+struct LocalLight;  // postfx/lights.h
+
 inline constexpr int kMaxCascades = 4;
 inline constexpr Range<double> kSunLengthRange{1e-6, 1e6};            // |Sun::direction|
 inline constexpr Range<float> kIrradianceRange{0.0f, 1e9f};           // Sun::irradiance
@@ -132,9 +134,18 @@ struct ObjectCausticsFrame {
   // orthographic or perspective projection that sees where the light lands): the refracted rays
   // are intersected with it in image space and the composite adds light only where a pixel lies
   // on it (|depth difference| <= bias, window units). Cleared texels (far plane) are "no
-  // receiver". Required while casterCount > 0.
+  // receiver". Required while casterCount > 0 and sunCaustics.
   SunShadowMap receivers;
   ObjectCausticsSettings settings;
+  // Point and spot lights whose light the casters focus too (postfx/lights.h): lightCount
+  // entries, read during dispatch() only. lightCount in [0, CreateDesc::maxLocalLights]; more is
+  // refused (InvalidArgument naming objectCaustics.lightCount). Each light is traced with the
+  // same settings as the sun.
+  const LocalLight* lights = nullptr;
+  int lightCount = 0;
+  // The sun's object caustics, exactly as without lights. false: the sun is left out (its
+  // `receivers` are then neither read nor required) and only the lights make caustics.
+  bool sunCaustics = true;
 };
 
 // Who attenuates the light the plugin adds along the view ray, from the lit point (or, for god

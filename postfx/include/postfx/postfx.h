@@ -26,6 +26,7 @@
 // The library never prints, aborts or throws.
 #include <postfx/diagnostics.h>
 #include <postfx/frame_desc.h>
+#include <postfx/lights.h>
 #include <postfx/result.h>
 #include <postfx/settings.h>
 
@@ -79,6 +80,10 @@ struct CreateDesc {  // fixed for the context's life
   // default setting many times over (the object caustics' default map 512 needs 12 MiB); a
   // caustic map of 4096 needs 768 MiB, 8192 needs 3 GiB, 16384 needs 12 GiB.
   int memoryBudgetMiB = 1024;
+  // Most local lights a frame may list (ObjectCausticsFrame::lightCount), [0,
+  // kMaxLocalLightsLimit] (postfx/lights.h). A shader constant: 0 (default) compiles no light
+  // code at all. Read only with Feature::ObjectCaustics.
+  int maxLocalLights = 0;
 };
 
 struct Context;  // opaque
