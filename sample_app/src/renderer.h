@@ -80,6 +80,7 @@ class Renderer {
   void enableReceiverMap();
   // The scene's point and spot lights (at most kMaxSceneLights): lit with a shadow map each.
   void setLights(const std::vector<SceneLight>& lights);
+  const std::vector<HostLight>& lights() const { return hostLights_; }
   bool render(const FrameInput& input, std::string& error);
 
   // Blits the tone-mapped image into a host framebuffer (the window's is 0).
