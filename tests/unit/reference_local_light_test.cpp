@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "object_caustics_light_metrics.h"
 #include "object_caustics_local_light.h"
 #include "object_caustics_metrics.h"
 #include "object_caustics_optics.h"
@@ -272,6 +275,66 @@ TEST(ReferenceLocalLight, LightAtTheCentreLeavesThroughOneSurface) {
     EXPECT_NEAR(ref.fluxLeaving[c] / exact, 1.0, 1e-9) << c;
   }
   for (const glm::dvec3& v : ref.irradiance) ASSERT_TRUE(std::isfinite(v.g));
+}
+
+// The plugin's light map placed on a plane: a synthetic map of the unobstructed light (E = 1/r^2
+// facing the light, r to the floor along each texel) from a light 2 m above a floor, seen
+// through a square frustum of half-angle 35 degrees tilted 20 degrees, lands as the traced
+// direct light, and its flux is the frustum's solid angle.
+TEST(ReferenceLocalLight, LightMapOnAPlaneKeepsFluxAndTheCosineLaw) {
+  const glm::dvec3 light(0.2, 2.0, -0.1);
+  const double half = 35.0 * kPi / 180.0, tilt = 20.0 * kPi / 180.0;
+  const glm::dvec3 axis(std::sin(tilt), -std::cos(tilt), 0.0);
+  const glm::dmat4 clip = glm::perspectiveRH_ZO(2.0 * half, 1.0, 0.1, 50.0) *
+                          glm::lookAt(light, light + axis, glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 inverse = glm::inverse(clip);
+  const int size = 128;
+  std::vector<glm::dvec3> map(size_t(size) * size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / double(size) * 2.0 - 1.0;
+      const glm::dvec4 far = inverse * glm::dvec4(ndc, 1.0, 1.0);
+      const glm::dvec3 d = glm::normalize(glm::dvec3(far) / far.w - light);
+      const double r = light.y / -d.y;
+      map[size_t(y) * size + x] = glm::dvec3(1.0 / (r * r));
+    }
+  const ReceiverBins bins = floorBins(light, 0.0, 8.0, 40);  // 20 cm bins
+  // 16^2 parts a texel: a bin edge cuts a texel (2-8 cm here) within 1/16 of it.
+  const LightMapOnPlane placed = lightMapOnBins(map, size, clip, light, bins, 16);
+  const double omega = 4.0 * std::asin(std::pow(std::sin(half), 2.0));
+  const double flux = placed.fluxInBins.g + placed.fluxOutside.g;
+  // Against the direct light traced into the same bins, where the frustum covers a bin whole.
+  LocalLightSource source;
+  source.position = light;
+  const LocalCausticReference direct = traceDirectLight(source, bins, glm::dvec3(0.0), 800);
+  double worst = 0.0, sum = 0.0;
+  int compared = 0;
+  for (int j = 0; j < bins.size; ++j)
+    for (int i = 0; i < bins.size; ++i) {
+      bool inside = true;
+      for (int c = 0; c < 4; ++c) {
+        const glm::dvec3 p = binPoint(bins, glm::dvec2(i + (c & 1), j + (c >> 1)));
+        const glm::dvec4 q = clip * glm::dvec4(p, 1.0);
+        inside = inside && std::abs(q.x / q.w) < 0.98 && std::abs(q.y / q.w) < 0.98;
+      }
+      if (!inside) continue;
+      const size_t k = size_t(j) * bins.size + i;
+      const double error = placed.irradiance[k].g / direct.irradiance[k].g - 1.0;
+      worst = std::max(worst, std::abs(error));
+      sum += error;
+      ++compared;
+    }
+  std::printf(
+      "light map on a floor: flux %.6f sr (frustum %.6f), %d bins within %.3g of traced (mean "
+      "error "
+      "%+.3g)\n",
+      flux, omega, compared, worst, sum / compared);
+  EXPECT_NEAR(flux / omega, 1.0, 1e-3);
+  EXPECT_GT(compared, 100);
+  // A bin's edges cut the parts of texels (up to 8 cm / 16 on the floor at 55 degrees from the
+  // vertical) where they fall: up to +-2.5 % for a 20 cm bin, with no bias over the bins.
+  EXPECT_LT(worst, 0.03);
+  EXPECT_LT(std::abs(sum / compared), 0.002);
 }
 
 }  // namespace
