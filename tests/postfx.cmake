@@ -28,7 +28,8 @@ postfx_add_test(postfx_object_caustics_tests
           gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
           gl/postfx_object_caustics_host_test.cpp gl/postfx_hostile_state_test.cpp
           gl/postfx_object_caustics_material_test.cpp gl/postfx_object_caustics_defaults_test.cpp
-          gl/postfx_object_caustics_lights_contract_test.cpp
+          gl/postfx_object_caustics_lights_contract_test.cpp gl/postfx_object_caustics_lights_util.cpp
+          gl/postfx_object_caustics_lights_test.cpp
   LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -18,6 +18,8 @@
 #include "godrays_constants.h"
 #include "memory_estimate.h"
 #include "object_caustics_frame.h"
+#include "object_caustics_light_frame.h"
+#include "object_caustics_state.h"
 #include "object_caustics_validation.h"
 #include "validation.h"
 
@@ -64,8 +66,7 @@ struct FrameBlocks {
   // The one piece of per-frame state that shapes the image: a copy moves with this frame and is
   // kept only once the frame has been drawn, so a refused frame leaves no trace.
   detail::GodRayGridPivot pivot;
-  detail::ObjectLightFrame light;
-  shared::ObjectCausticsBlock objects{};
+  detail::ObjectCausticsViews objects;
 };
 
 // Builds and checks the blocks before any GL work.
@@ -86,15 +87,32 @@ Result buildBlocks(const Context& context, const FrameDesc& frame, const detail:
     if (!detail::allFinite(blocks.godRays))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
+  detail::ObjectCausticsViews& views = blocks.objects;
   if (plan.objects) {
-    blocks.light = detail::fitObjectLightFrame(frame);
-    blocks.objects =
-        detail::buildObjectCausticsBlock(context.desc, frame, blocks.light, width, height);
-    if (!detail::allFinite(blocks.objects) || !detail::casterMatricesFinite(frame, blocks.light))
+    views.sun = true;
+    views.sunFrame = detail::fitObjectLightFrame(frame);
+    views.sunBlock =
+        detail::buildObjectCausticsBlock(context.desc, frame, views.sunFrame, width, height);
+    if (!detail::allFinite(views.sunBlock) || !detail::casterMatricesFinite(frame, views.sunFrame))
       return refuse(error,
                     "frame: an object-caustics constant overflows the GPU's float "
                     "(objectCaustics.receivers.worldToLightClip or a caster's modelToWorld has "
                     "entries too large)");
+  }
+  for (int k = 0; k < plan.lightCount; ++k) {
+    const int i = plan.lights[static_cast<std::size_t>(k)];
+    detail::ObjectLightFrame view;
+    detail::fitLocalLightFrame(frame, i, view);
+    views.lights.push_back(view);
+    views.lightBlocks.push_back(
+        detail::buildObjectCausticsBlock(context.desc, frame, view, width, height));
+    if (!detail::allFinite(views.lightBlocks.back()) ||
+        !detail::casterMatricesFinite(frame, view)) {
+      error = "frame: an object-caustics constant of objectCaustics.lights[" + std::to_string(i) +
+              "] overflows the GPU's float (its receivers.worldToLightClip, or a caster's "
+              "modelToWorld, has entries too large)";
+      return Result::InvalidArgument;
+    }
   }
   return Result::Ok;
 }
@@ -157,7 +175,7 @@ Result reserve(Context& context, const FrameDesc& frame, const detail::FramePlan
     if (r != Result::Ok) return r;
     held.godRays = true;
   }
-  if (plan.objects) r = context.objectCaustics.prepare(frame, blocks.light, blocks.objects, error);
+  if (plan.objectMaps()) r = context.objectCaustics.prepare(frame, blocks.objects, error);
   return r;
 }
 
@@ -201,6 +219,11 @@ void record(Context& context, const FrameDesc& frame, const detail::FramePlan& p
   }
   for (int p = 0; p < kPassCount; ++p)
     if (!plan.runs(Pass(p))) context.timers.markSkipped(Pass(p));
+  for (int i = 0; i < context.desc.maxLocalLights; ++i) {
+    context.timers.setLightSkip(i, plan.lightSkip[static_cast<std::size_t>(i)]);
+    if (plan.lightSkip[static_cast<std::size_t>(i)] != LightSkip::None)
+      context.timers.markLightSkipped(i);
+  }
   if (!plan.caustics) context.caustics.clearRaw(textures.width, textures.height);
 
   if (plan.fullScreen) {
@@ -230,10 +253,25 @@ void record(Context& context, const FrameDesc& frame, const detail::FramePlan& p
     }
     held.release();
   }
-  // Timed as their own pass, after the seabed caustics and god rays.
-  if (plan.objects)
-    timedPass(context, plan, Pass::ObjectCaustics, "postfx.object_caustics",
-              [&] { context.objectCaustics.draw(frame, textures.width, textures.height); });
+  // Timed as their own passes, after the seabed caustics and god rays: the sun's, then each
+  // local light's.
+  if (plan.objectMaps()) {
+    detail::ObjectCausticsStateGuard guard;
+    context.objectCaustics.setDrawState();
+    const int w = textures.width, h = textures.height;
+    if (plan.objects)
+      timedPass(context, plan, Pass::ObjectCaustics, "postfx.object_caustics",
+                [&] { context.objectCaustics.drawSun(frame, w, h); });
+    for (int k = 0; k < plan.lightCount; ++k) {
+      DebugGroup debugGroup("postfx.object_caustics_light");
+      if (plan.floor) glFinish();
+      const int i = plan.lights[static_cast<std::size_t>(k)];
+      context.timers.beginLight(i);
+      context.objectCaustics.drawLight(frame, k, w, h);
+      context.timers.endLight(i);
+    }
+    context.objectCaustics.finishDraws();
+  }
 }
 
 Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
@@ -338,11 +376,13 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
       present[int(Pass::CausticsIrradiance)] = true;
     }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
-      r = context->objectCaustics.init(detail::shaderDefines(desc), createError);
+      r = context->objectCaustics.init(detail::shaderDefines(desc), desc.maxLocalLights,
+                                       createError);
       if (r != Result::Ok) return r;
       present[int(Pass::ObjectCaustics)] = true;
     }
-    context->timers.init(present);
+    context->timers.init(
+        present, hasFeature(desc.features, Feature::ObjectCaustics) ? desc.maxLocalLights : 0);
     out = context.release();
     return Result::Ok;
   } catch (const std::bad_alloc&) {
@@ -390,6 +430,14 @@ ObjectCausticMap objectCausticMap(const Context& context) noexcept {
 }
 
 namespace testing {
+
+LightCausticMap lightCausticMap(const Context& context) noexcept {
+  LightCausticMap map;
+  map.texture = context.objectCaustics.lightMapTexture();
+  map.size = context.objectCaustics.lightMapSize();
+  map.worldToMapClip = context.objectCaustics.lightMapClip();
+  return map;
+}
 
 GlName rawCausticTexture(const Context& context) noexcept {
   return context.caustics.rawTexture();

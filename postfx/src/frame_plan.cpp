@@ -5,6 +5,7 @@
 #include "context.h"
 #include "frame_constants.h"
 #include "object_caustics_frame.h"
+#include "object_caustics_light_frame.h"
 #include "visibility.h"
 
 namespace postfx::detail {
@@ -65,8 +66,15 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   plan.tile = plan.caustics && tileIrradianceActive(frame);
   plan.godRays = godRaysHaveWork(context, frame);
   plan.objects = objectCausticsHaveWork(context, frame);
+  if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
+    for (int i = 0; i < context.desc.maxLocalLights; ++i) {
+      ObjectLightFrame view;
+      plan.lightSkip[i] = fitLocalLightFrame(frame, i, view);
+      if (plan.lightSkip[i] == LightSkip::None) plan.lights[plan.lightCount++] = i;
+    }
+  }
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
-  plan.fullScreen = plan.caustics || plan.godRays || (plan.objects && plan.floor);
+  plan.fullScreen = plan.caustics || plan.godRays || (plan.objectMaps() && plan.floor);
   return plan;
 }
 

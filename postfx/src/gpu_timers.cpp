@@ -4,15 +4,16 @@
 
 namespace postfx::detail {
 
-void GpuTimers::init(const std::array<bool, kPassCount>& present) {
+void GpuTimers::init(const std::array<bool, kPassCount>& present, int lights) {
   stats_ = FrameStats{};
   for (int p = 0; p < kPassCount; ++p) {
     stats_.passes[p].present = present[p];
     anyPass_ = anyPass_ || present[p];
   }
+  for (int i = 0; i < lights && i < kMaxLocalLightsLimit; ++i) stats_.lights[i].present = true;
   for (auto& frame : queries_)
-    for (int p = 0; p < kPassCount; ++p) {
-      if (!present[p]) continue;
+    for (int p = 0; p < kTimerCount; ++p) {
+      if (!has(p)) continue;
       frame[p] = {glkit::createQuery(GL_TIMESTAMP), glkit::createQuery(GL_TIMESTAMP),
                   glkit::createQuery(GL_TIME_ELAPSED)};
     }
@@ -20,7 +21,7 @@ void GpuTimers::init(const std::array<bool, kPassCount>& present) {
 
 bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
   // All of a frame or none of it, so "last" always describes one frame.
-  for (int p = 0; p < kPassCount; ++p) {
+  for (int p = 0; p < kTimerCount; ++p) {
     const bool elapsed = slot.state[p] == SlotState::IssuedElapsed;
     if (!elapsed && slot.state[p] != SlotState::IssuedTimestamps) continue;
     GLuint available = GL_FALSE;
@@ -28,7 +29,7 @@ bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
                         &available);
     if (available != GL_TRUE) return false;
   }
-  for (int p = 0; p < kPassCount; ++p) {
+  for (int p = 0; p < kTimerCount; ++p) {
     if (slot.state[p] == SlotState::IssuedElapsed) {
       GLuint64 ns = 0;
       glGetQueryObjectui64v(queries_[slotIndex][p][2].id(), GL_QUERY_RESULT, &ns);
@@ -47,8 +48,8 @@ bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
   return true;
 }
 
-void GpuTimers::record(int pass, double ms, bool skipped) {
-  History& h = history_[pass];
+void GpuTimers::record(int timer, double ms, bool skipped) {
+  History& h = history_[timer];
   h.ms[h.next] = ms;
   h.next = (h.next + 1) % kTimerMedianWindow;
   h.count = std::min(h.count + 1, kTimerMedianWindow);
@@ -56,7 +57,7 @@ void GpuTimers::record(int pass, double ms, bool skipped) {
   std::sort(sorted.begin(), sorted.begin() + h.count);
   const double median = h.count % 2 == 1 ? sorted[h.count / 2]
                                          : 0.5 * (sorted[h.count / 2 - 1] + sorted[h.count / 2]);
-  PassStats& s = stats_.passes[pass];
+  PassStats& s = timerStats(timer);
   s.lastMs = ms;
   s.medianMs = median;
   s.skipped = skipped;
@@ -84,11 +85,23 @@ void GpuTimers::beginFrame() {
 }
 
 void GpuTimers::begin(Pass pass) {
-  if (!has(pass)) return;
+  beginTimer(static_cast<int>(pass));
+}
+
+void GpuTimers::end(Pass pass) {
+  endTimer(static_cast<int>(pass));
+}
+
+void GpuTimers::markSkipped(Pass pass) {
+  markTimerSkipped(static_cast<int>(pass));
+}
+
+void GpuTimers::beginTimer(int timer) {
+  if (!has(timer)) return;
   GLint hostQuery = 0;
   glGetQueryiv(GL_TIME_ELAPSED, GL_CURRENT_QUERY, &hostQuery);
   elapsedActive_ = hostQuery == 0;
-  const auto& queries = queries_[frame_ % kTimerRingDepth][static_cast<int>(pass)];
+  const auto& queries = queries_[frame_ % kTimerRingDepth][timer];
   if (elapsedActive_) {
     glBeginQuery(GL_TIME_ELAPSED, queries[2].id());
   } else {
@@ -96,22 +109,21 @@ void GpuTimers::begin(Pass pass) {
   }
 }
 
-void GpuTimers::end(Pass pass) {
-  if (!has(pass)) return;
+void GpuTimers::endTimer(int timer) {
+  if (!has(timer)) return;
   const int index = static_cast<int>(frame_ % kTimerRingDepth);
-  const int p = static_cast<int>(pass);
   if (elapsedActive_) {
     glEndQuery(GL_TIME_ELAPSED);
-    slots_[index].state[p] = SlotState::IssuedElapsed;
+    slots_[index].state[timer] = SlotState::IssuedElapsed;
   } else {
-    glQueryCounter(queries_[index][p][1].id(), GL_TIMESTAMP);
-    slots_[index].state[p] = SlotState::IssuedTimestamps;
+    glQueryCounter(queries_[index][timer][1].id(), GL_TIMESTAMP);
+    slots_[index].state[timer] = SlotState::IssuedTimestamps;
   }
 }
 
-void GpuTimers::markSkipped(Pass pass) {
-  if (!has(pass)) return;
-  slots_[frame_ % kTimerRingDepth].state[static_cast<int>(pass)] = SlotState::Skipped;
+void GpuTimers::markTimerSkipped(int timer) {
+  if (!has(timer)) return;
+  slots_[frame_ % kTimerRingDepth].state[timer] = SlotState::Skipped;
 }
 
 void GpuTimers::endFrame() {

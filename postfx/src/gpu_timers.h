@@ -18,8 +18,9 @@ namespace postfx::detail {
 
 class GpuTimers {
  public:
-  // Creates the query objects of the passes the context has (DSA, no binding changes).
-  void init(const std::array<bool, kPassCount>& present);
+  // Creates the query objects of the passes the context has, and of its first `lights` local
+  // lights (DSA, no binding changes).
+  void init(const std::array<bool, kPassCount>& present, int lights = 0);
 
   // Reads every completed frame in order, then opens a slot for this frame. Binds
   // GL_QUERY_BUFFER to 0 while reading (so results land in client memory): call under a guard.
@@ -28,6 +29,11 @@ class GpuTimers {
   void begin(Pass pass);        // timestamp before the pass's GL work
   void end(Pass pass);          // timestamp after it
   void markSkipped(Pass pass);  // the pass had nothing to do this frame: it resolves to 0 ms
+  // The same for local light i's object caustics (FrameStats::lights).
+  void beginLight(int light) { beginTimer(kPassCount + light); }
+  void endLight(int light) { endTimer(kPassCount + light); }
+  void markLightSkipped(int light) { markTimerSkipped(kPassCount + light); }
+  void setLightSkip(int light, LightSkip skip) { stats_.lightSkip[light] = skip; }
   void endFrame();
 
   const FrameStats& stats() const { return stats_; }
@@ -35,9 +41,11 @@ class GpuTimers {
   void setClampedFluxFraction(double fraction) { stats_.clampedFluxFraction = fraction; }
 
  private:
+  // The passes, then the local lights.
+  static constexpr int kTimerCount = kPassCount + kMaxLocalLightsLimit;
   enum class SlotState : std::uint8_t { Empty, IssuedTimestamps, IssuedElapsed, Skipped };
   struct Slot {
-    std::array<SlotState, kPassCount> state{};
+    std::array<SlotState, kTimerCount> state{};
     bool open = false;  // frame dispatched, timings not yet read
   };
   struct History {
@@ -46,15 +54,21 @@ class GpuTimers {
   };
 
   bool tryResolve(Slot& slot, int slotIndex);
-  void record(int pass, double ms, bool skipped);
+  void record(int timer, double ms, bool skipped);
+  void beginTimer(int timer);
+  void endTimer(int timer);
+  void markTimerSkipped(int timer);
+  PassStats& timerStats(int timer) {
+    return timer < kPassCount ? stats_.passes[timer] : stats_.lights[timer - kPassCount];
+  }
+  bool has(int timer) { return timerStats(timer).present; }
 
-  bool has(Pass pass) const { return stats_.pass(pass).present; }
   bool anyPass_ = false;
-  // Per frame and pass: timestamp begin, timestamp end, time elapsed.
-  std::array<std::array<std::array<glkit::Query, 3>, kPassCount>, kTimerRingDepth> queries_{};
+  // Per frame and timer: timestamp begin, timestamp end, time elapsed.
+  std::array<std::array<std::array<glkit::Query, 3>, kTimerCount>, kTimerRingDepth> queries_{};
   bool elapsedActive_ = false;
   std::array<Slot, kTimerRingDepth> slots_{};
-  std::array<History, kPassCount> history_{};
+  std::array<History, kTimerCount> history_{};
   std::uint64_t frame_ = 0;   // frames begun
   std::uint64_t oldest_ = 0;  // oldest frame not yet resolved or dropped
   FrameStats stats_;

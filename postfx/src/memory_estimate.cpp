@@ -39,14 +39,16 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
     const std::uint64_t texels = square(l.resolution) * std::uint64_t(l.cascadeCount);
     t.tile = texels * std::uint64_t(l.groups) * 8 * 4 / 3 + texels * std::uint64_t(l.layers) * 4;
   }
-  if (passes.objects) {
+  if (passes.objectMaps()) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
     // its flux, RGBA32F, per colour channel when dispersion may split them.
     const std::uint64_t channels = hasFeature(create.features, Feature::Dispersion) ? 3 : 1;
     t.casterMaps = square(s.gridSize) * (16 + 8 + 16 + 8 + 4 + channels * 2 * 16);
-    // Splats and the two temporal histories, RGBA32F.
-    t.causticMap = square(s.mapSize) * 16 * 3;
+    // The sun's splats and two temporal histories, and one map all the local lights share,
+    // RGBA32F.
+    t.causticMap =
+        square(s.mapSize) * 16 * ((passes.objects ? 3 : 0) + (passes.lightCount > 0 ? 1 : 0));
   }
   return t;
 }

@@ -12,16 +12,15 @@
 #include "frame_constants.h"
 
 namespace postfx::detail {
-namespace {
 
-// Light-space axes that depend on the direction only (not on the casters), so that a caster
-// moving does not rotate the map under it.
 void lightAxes(const glm::dvec3& d, glm::dvec3& right, glm::dvec3& up) {
   const glm::dvec3 reference =
       std::abs(d.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
   right = glm::normalize(glm::cross(reference, d));
   up = glm::cross(d, right);
 }
+
+namespace {
 
 glm::dvec3 corner(const glm::vec3& lo, const glm::vec3& hi, int i) {
   return glm::dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
@@ -33,16 +32,58 @@ bool underwaterCasters(const FrameDesc& frame) {
   return 0.5 * (lo.y + hi.y) < frame.water.level;
 }
 
+// Anchor-relative world -> the sun's orthographic clip over a square of half side `half`
+// (m), z in [0, 1] over the casters' depth (clip control set by the pass).
+glm::dmat4 sunClip(const ObjectLightFrame& f, double half) {
+  glm::dmat4 clip(0.0);
+  for (int i = 0; i < 3; ++i) {
+    clip[i][0] = f.right[i] / half;
+    clip[i][1] = f.up[i] / half;
+    clip[i][2] = f.direction[i] / (f.zFar - f.zNear);
+  }
+  clip[3][2] = -f.zNear / (f.zFar - f.zNear);
+  clip[3][3] = 1.0;
+  return clip;
+}
+
+// Anchor-relative world -> a local light's perspective clip along its axis, a square frustum of
+// half side `tanHalf` at unit distance, window z in [0, 1] from zNear to zFar.
+glm::dmat4 localLightClip(const ObjectLightFrame& f, double tanHalf) {
+  const glm::dvec3 eye = f.position - f.anchor;
+  glm::dmat4 view(1.0);
+  for (int i = 0; i < 3; ++i) {
+    view[i][0] = f.right[i];
+    view[i][1] = f.up[i];
+    view[i][2] = f.direction[i];
+  }
+  view[3] =
+      glm::dvec4(-glm::dot(f.right, eye), -glm::dot(f.up, eye), -glm::dot(f.direction, eye), 1.0);
+  glm::dmat4 projection(0.0);
+  projection[0][0] = projection[1][1] = 1.0 / tanHalf;
+  projection[2][2] = f.zFar / (f.zFar - f.zNear);
+  projection[3][2] = -f.zFar * f.zNear / (f.zFar - f.zNear);
+  projection[2][3] = 1.0;
+  return projection * view;
+}
+
 }  // namespace
 
-void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::dvec3& hi) {
+bool localLightUnderwater(const FrameDesc& frame, const LocalLight& light) {
+  return light.position.y <= frame.water.level;
+}
+
+glm::dvec3 casterWorldCorner(const CasterMesh& mesh, int i) {
+  return glm::dvec3(mesh.modelToWorld * glm::dvec4(corner(mesh.boundsMin, mesh.boundsMax, i), 1.0));
+}
+
+void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::dvec3& hi,
+                       std::uint64_t casters) {
   lo = glm::dvec3(std::numeric_limits<double>::max());
   hi = -lo;
   for (int c = 0; c < objects.casterCount; ++c) {
-    const CasterMesh& mesh = objects.casters[c];
+    if (!((casters >> c) & 1u)) continue;
     for (int i = 0; i < 8; ++i) {
-      const glm::dvec3 p = glm::dvec3(mesh.modelToWorld *
-                                      glm::dvec4(corner(mesh.boundsMin, mesh.boundsMax, i), 1.0));
+      const glm::dvec3 p = casterWorldCorner(objects.casters[c], i);
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
@@ -73,8 +114,13 @@ bool casterMatricesFinite(const FrameDesc& frame, const ObjectLightFrame& light)
 }
 
 bool castersInReceiverView(const ObjectCausticsFrame& objects) {
+  return castersInReceiverView(objects, objects.receivers, ~std::uint64_t(0));
+}
+
+bool castersInReceiverView(const ObjectCausticsFrame& objects, const SunShadowMap& receivers,
+                           std::uint64_t casters) {
   glm::dvec3 lo, hi;
-  casterWorldBounds(objects, lo, hi);
+  casterWorldBounds(objects, lo, hi, casters);
   // Bounds that overflow under their transform cannot be fitted: nothing sensible to draw.
   const glm::dvec3 extent = hi - lo;
   if (!(std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z)))
@@ -83,7 +129,7 @@ bool castersInReceiverView(const ObjectCausticsFrame& objects) {
   bool any = false;
   for (int i = 0; i < 8; ++i) {
     const glm::dvec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
-    const glm::dvec4 clip = objects.receivers.worldToLightClip * glm::dvec4(p, 1.0);
+    const glm::dvec4 clip = receivers.worldToLightClip * glm::dvec4(p, 1.0);
     if (!(clip.w > 0.0)) continue;
     const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
     ndcLo = glm::min(ndcLo, ndc);
@@ -134,20 +180,18 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   shared::ObjectCausticsBlock b{};
   const ObjectCausticsFrame& objects = frame.objectCaustics;
   const ObjectCausticsSettings& s = objects.settings;
-  // Anchor-relative world -> orthographic caster-map clip, z in [0, 1] (clip control set by
-  // the pass).
-  glm::dmat4 clip(0.0);
-  for (int i = 0; i < 3; ++i) {
-    clip[i][0] = f.right[i] / f.halfGrid;
-    clip[i][1] = f.up[i] / f.halfGrid;
-    clip[i][2] = f.direction[i] / (f.zFar - f.zNear);
+  const LocalLight* light = f.local() ? &objects.lights[f.light] : nullptr;
+  const SunShadowMap& receivers = light != nullptr ? light->receivers : objects.receivers;
+  if (light != nullptr) {
+    b.casterClip = glm::mat4(localLightClip(f, f.tanHalfGrid));
+    b.mapClip = glm::mat4(localLightClip(f, f.tanHalfMap));
+  } else {
+    b.casterClip = glm::mat4(sunClip(f, f.halfGrid));
+    b.mapClip = glm::mat4(sunClip(f, f.halfMap));
   }
-  clip[3][2] = -f.zNear / (f.zFar - f.zNear);
-  clip[3][3] = 1.0;
-  b.casterClip = glm::mat4(clip);
   glm::dmat4 toAnchor(1.0);
   toAnchor[3] = glm::dvec4(f.anchor, 1.0);
-  const glm::dmat4 receiverClip = objects.receivers.worldToLightClip * toAnchor;
+  const glm::dmat4 receiverClip = receivers.worldToLightClip * toAnchor;
   b.receiverClip = saturatedFloat(receiverClip);
   b.receiverClipInverse = saturatedFloat(glm::inverse(receiverClip));
   b.viewToWorld = glm::mat4(glm::mat3(viewToWorldRotation(frame.camera.view)));
@@ -156,14 +200,16 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
   b.lightRight = glm::vec4(glm::vec3(f.right), float(f.halfGrid));
   b.lightUp = glm::vec4(glm::vec3(f.up), float(f.halfMap));
   // Each ray carries the sun's flux through one grid cell; the map stores flux per texel area
-  // (both perpendicular to the light): irradiance relative to the sun's.
-  const double cell = 2.0 * f.halfGrid / s.gridSize, texel = 2.0 * f.halfMap / s.mapSize;
+  // (both perpendicular to the light): irradiance relative to the sun's. A local light's cells
+  // and texels are measured at unit distance on its view's plane (the trace adds the solid
+  // angles' cos^3 and the inverse square: localLightShare).
+  const double cell = 2.0 * (light ? f.tanHalfGrid : f.halfGrid) / s.gridSize;
+  const double texel = 2.0 * (light ? f.tanHalfMap : f.halfMap) / s.mapSize;
   b.grid = glm::vec4(float(s.gridSize), float(s.mapSize), s.splatRadius,
                      float((cell * cell) / (texel * texel)));
-  const DepthConvention conv = objects.receivers.depthConvention;
-  b.receiver =
-      glm::vec4(conv == DepthConvention::ForwardNegOneToOne ? 1.0f : 0.0f,
-                conv == DepthConvention::ReverseZ ? 0.0f : 1.0f, objects.receivers.bias, 0.0f);
+  const DepthConvention conv = receivers.depthConvention;
+  b.receiver = glm::vec4(conv == DepthConvention::ForwardNegOneToOne ? 1.0f : 0.0f,
+                         conv == DepthConvention::ReverseZ ? 0.0f : 1.0f, receivers.bias, 0.0f);
   const glm::dvec3 cameraOffset = frame.camera.position - f.anchor;
   b.cameraOffset = glm::vec4(glm::vec3(cameraOffset), float(frame.water.level - f.anchor.y));
   b.viewport = glm::vec4(1.0f / float(width), 1.0f / float(height), float(width), float(height));
@@ -171,11 +217,28 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
       gbuffer::projectionParams(frame.camera.projection, toGbuffer(create.depthConvention));
   b.projection = params.xy;
   b.depthParams = glm::vec4(params.z, f.underwater ? 1.0f : 0.0f, float(s.exitIterations));
-  b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
-  // Same water-column model as the seabed caustics: Beer-Lambert along the refracted sun.
-  const double cosT = std::max(-f.direction.y, 1e-3);
-  b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
-  b.splatScale = glm::vec4(float(1.0 / texel), kMaxRoughSplatSigma, 0.0f, 0.0f);
+  if (light != nullptr) {
+    b.lightScale = glm::vec4(light->intensity * s.intensity, 0.0f);
+    b.lightPosition = glm::vec4(glm::vec3(light->position - f.anchor), 1.0f);
+    if (light->type == LocalLightType::Spot) {
+      const double half = glm::radians(double(light->coneAngleDegrees)) * 0.5;
+      b.spotAxis = glm::vec4(glm::vec3(glm::normalize(light->direction)), 1.0f);
+      b.spotCone.x = float(half);
+      b.spotCone.y = float(half * (1.0 - double(light->coneSoftness)));
+    }
+    b.spotCone.z = localLightUnderwater(frame, *light) ? 1.0f : 0.0f;
+    b.lightWater = glm::vec4(frame.water.absorption, 0.0f);
+    // Texels per metre at the casters' distance: a rough caster's spread (casters.h) is
+    // measured there (the casters are small next to their distance from the light).
+    const double distance = std::max(glm::length(light->position - f.anchor), 1e-6);
+    b.splatScale = glm::vec4(float(1.0 / (texel * distance)), kMaxRoughSplatSigma, 0.0f, 0.0f);
+  } else {
+    b.lightScale = glm::vec4(frame.sun.irradiance * s.intensity, 0.0f);
+    // Same water-column model as the seabed caustics: Beer-Lambert along the refracted sun.
+    const double cosT = std::max(-f.direction.y, 1e-3);
+    b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
+    b.splatScale = glm::vec4(float(1.0 / texel), kMaxRoughSplatSigma, 0.0f, 0.0f);
+  }
   const bool dispersion = hasFeature(create.features, Feature::Dispersion);
   if (frame.viewExtinction == ViewExtinction::Plugin)
     b.viewExtinction = glm::vec4(frame.water.absorption + frame.water.scattering, 0.0f);
@@ -193,6 +256,12 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
     slot[2] = glm::vec4(m.tint, m.thinWalled ? 1.0f : 0.0f);
   }
   return b;
+}
+
+glm::dmat4 localLightMapClip(const ObjectLightFrame& f) {
+  glm::dmat4 fromWorld(1.0);
+  fromWorld[3] = glm::dvec4(-f.anchor, 1.0);
+  return localLightClip(f, f.tanHalfMap) * fromWorld;
 }
 
 ObjectCausticMap describeObjectCausticMap(const ObjectLightFrame& f, int mapSize) {

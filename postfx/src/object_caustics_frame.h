@@ -1,6 +1,8 @@
 #pragma once
 // The object caustics' sun view for one frame, fitted to the casters in double precision, and
 // the uniform block built from it. CPU only: shared by the pass, the skip test and the tests.
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include <postfx/postfx.h>
@@ -23,7 +25,23 @@ struct ObjectLightFrame {
   double zNear = -1.0, zFar = 1.0;  // caster depth range along `direction`, anchor-relative (m)
   bool underwater = false;          // casters below the water level: light refracted by water
   double outerIor = 1.0;            // IOR around the casters (water or air)
+  // A local light (issue 18, object_caustics_light_frame.h): a perspective view from `position`
+  // along `direction` (its axis). zNear/zFar are then distances from the light along the axis;
+  // tanHalfGrid and tanHalfMap the half sides of the grid's and the map's frusta at unit
+  // distance.
+  int light = -1;  // index into ObjectCausticsFrame::lights; -1: the sun
+  glm::dvec3 position{0.0};
+  double tanHalfGrid = 0.0, tanHalfMap = 0.0;
+  std::uint64_t casters = ~std::uint64_t(0);  // bit c: caster c is drawn (within the light's reach)
+  bool local() const { return light >= 0; }
 };
+
+// Light-space axes that depend on the direction only (not on the casters), so that a caster
+// moving does not rotate the map under it.
+void lightAxes(const glm::dvec3& direction, glm::dvec3& right, glm::dvec3& up);
+
+// A local light at or below the water level is under water (its rays start in the water).
+bool localLightUnderwater(const FrameDesc& frame, const LocalLight& light);
 
 // Fits the frame to the casters' world bounds: side quantised to 1/8 octaves and centre snapped
 // to the ray grid's cell, so the rays stay put while the casters move less than a cell.
@@ -37,17 +55,27 @@ glm::mat4 casterNormalToWorld(const CasterMesh& mesh);
 // entries past 3.4e38, or a tiny scale whose inverse is, would reach the GPU as Inf).
 bool casterMatricesFinite(const FrameDesc& frame, const ObjectLightFrame& light);
 
-// World bounds (min, max) of every caster's model bounds under its transform.
-void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::dvec3& hi);
+// World bounds (min, max) of every caster's model bounds under its transform (of those whose
+// bit is set in `casters`).
+void casterWorldBounds(const ObjectCausticsFrame& objects, glm::dvec3& lo, glm::dvec3& hi,
+                       std::uint64_t casters = ~std::uint64_t(0));
+// World position of corner i (0..7) of caster c's model bounds.
+glm::dvec3 casterWorldCorner(const CasterMesh& mesh, int i);
 
-// Whether any caster overlaps the receiver map's view (else nothing can land: skip); false
-// too when the casters' world bounds are not finite.
+// Whether any caster (with its bit set) overlaps the receiver map's view (else nothing can land:
+// skip); false too when the casters' world bounds are not finite.
 bool castersInReceiverView(const ObjectCausticsFrame& objects);
+bool castersInReceiverView(const ObjectCausticsFrame& objects, const SunShadowMap& receivers,
+                           std::uint64_t casters);
 
+// The block of the sun's view, or of a local light's (light.local()).
 shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
                                                      const FrameDesc& frame,
                                                      const ObjectLightFrame& light, int width,
                                                      int height);
+
+// World -> a local light's caustic-map clip (testing.h's lightCausticMap).
+glm::dmat4 localLightMapClip(const ObjectLightFrame& light);
 
 // The map's placement for ObjectCausticMap.
 ObjectCausticMap describeObjectCausticMap(const ObjectLightFrame& light, int mapSize);

@@ -3,6 +3,9 @@
 #include <glkit/texture.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cstring>
+
 #include "host_target.h"
 #include "object_caustics_state.h"
 #include "shader_library.h"
@@ -42,7 +45,8 @@ glkit::Texture makeTexture(GLenum format, int size, const char* name) {
 
 }  // namespace
 
-Result ObjectCausticsPass::init(const std::string& defines, std::string& error) {
+Result ObjectCausticsPass::init(const std::string& defines, int maxLocalLights,
+                                std::string& error) {
   const Result r = buildPrograms(
       defines,
       {{caster_,
@@ -69,13 +73,19 @@ Result ObjectCausticsPass::init(const std::string& defines, std::string& error) 
   glVertexArrayAttribBinding(meshVao_.id(), 0, 0);
   glVertexArrayAttribBinding(meshVao_.id(), 1, 0);
   emptyVao_ = glkit::createVertexArray("postfx.object_caustics.empty_vao");
-  uniformBuffer_ = glkit::createBuffer(sizeof(shared::ObjectCausticsBlock), nullptr,
+  GLint alignment = 256;
+  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  alignment = std::max(alignment, 1);
+  const GLintptr size = sizeof(shared::ObjectCausticsBlock);
+  blockStride_ = (size + alignment - 1) / alignment * alignment;
+  uniformBuffer_ = glkit::createBuffer(blockStride_ * (1 + maxLocalLights), nullptr,
                                        GL_DYNAMIC_STORAGE_BIT, "postfx.object_caustics.block");
   frontFbo_ = glkit::createFramebuffer("postfx.object_caustics.front");
   backFbo_ = glkit::createFramebuffer("postfx.object_caustics.back");
   splatFbo_ = glkit::createFramebuffer("postfx.object_caustics.splat");
   temporalFbo_ = glkit::createFramebuffer("postfx.object_caustics.temporal");
   compositeFbo_ = glkit::createFramebuffer("postfx.object_caustics.composite");
+  lightFbo_ = glkit::createFramebuffer("postfx.object_caustics.light_splat");
   const GLenum two[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glNamedFramebufferDrawBuffers(frontFbo_.id(), 2, two);
   glNamedFramebufferDrawBuffers(backFbo_.id(), 2, two);
@@ -127,17 +137,28 @@ void ObjectCausticsPass::ensureMap(int size) {
   historyValid_ = false;
 }
 
-Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFrame& light,
-                                   const shared::ObjectCausticsBlock& block, std::string& error) {
+void ObjectCausticsPass::ensureLightMap(int size) {
+  if (size == lightMapSize_) return;
+  lightMap_.reset();
+  lightMap_ = makeTexture(GL_RGBA32F, size, "postfx.object_caustics.light_splats");
+  glNamedFramebufferTexture(lightFbo_.id(), GL_COLOR_ATTACHMENT0, lightMap_.id(), 0);
+  lightMapSize_ = size;
+}
+
+Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectCausticsViews& views,
+                                   std::string& error) {
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
+  const shared::ObjectCausticsBlock& block = views.sun ? views.sunBlock : views.lightBlocks[0];
   dispersed_ = block.receiver.w > 0.5f;
   ensureLandings(s.gridSize, dispersed_ ? 6 : 2);
   ensureGrid(s.gridSize);
-  ensureMap(s.mapSize);
+  if (views.sun) ensureMap(s.mapSize);
+  if (!views.lights.empty()) ensureLightMap(s.mapSize);
   // Storage the driver refused (GL_OUT_OF_MEMORY) leaves a map without levels and its
   // framebuffer incomplete: found here, before any pass adds light.
-  if (glkit::storedWidth(history_[0]) != s.mapSize ||
-      glkit::storedWidth(history_[1]) != s.mapSize) {
+  if ((views.sun && (glkit::storedWidth(history_[0]) != s.mapSize ||
+                     glkit::storedWidth(history_[1]) != s.mapSize)) ||
+      (!views.lights.empty() && glkit::storedWidth(lightMap_) != s.mapSize)) {
     error = "objectCaustics: the driver could not allocate the caustic map (mapSize " +
             std::to_string(s.mapSize) + ")";
     return Result::OutOfMemory;
@@ -147,7 +168,8 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
             std::to_string(s.gridSize) + ")";
     return Result::OutOfMemory;
   }
-  for (GLuint fbo : {frontFbo_.id(), backFbo_.id(), splatFbo_.id()}) {
+  for (GLuint fbo : {frontFbo_.id(), backFbo_.id(), views.sun ? splatFbo_.id() : lightFbo_.id(),
+                     views.lights.empty() ? frontFbo_.id() : lightFbo_.id()}) {
     if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       error =
           "objectCaustics: an internal framebuffer is incomplete (could the driver not "
@@ -160,18 +182,32 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectLightFram
     glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
     return Result::GlError;
   }
-  glNamedBufferSubData(uniformBuffer_.id(), 0, sizeof(block), &block);
-  const ObjectCausticMap placement = describeObjectCausticMap(light, s.mapSize);
+  // One upload: the sun's block in slot 0, light k's in slot k + 1.
+  const std::size_t slots = 1 + views.lightBlocks.size();
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(blockStride_) * slots);
+  if (views.sun) std::memcpy(bytes.data(), &views.sunBlock, sizeof(views.sunBlock));
+  for (std::size_t k = 0; k < views.lightBlocks.size(); ++k)
+    std::memcpy(bytes.data() + (k + 1) * blockStride_, &views.lightBlocks[k],
+                sizeof(views.lightBlocks[k]));
+  glNamedBufferSubData(uniformBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes.size()), bytes.data());
+  lights_ = views.lights;
+  if (!views.sun) return Result::Ok;
+  const ObjectCausticMap placement = describeObjectCausticMap(views.sunFrame, s.mapSize);
   // The history is only meaningful in the same texel grid.
   if (!(placement.origin == placement_.origin && placement.axisU == placement_.axisU &&
         placement.axisV == placement_.axisV && placement.size == placement_.size))
     historyValid_ = false;
   placement_ = placement;
-  light_ = light;
+  light_ = views.sunFrame;
   return Result::Ok;
 }
 
-void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
+void ObjectCausticsPass::bindBlock(int slot) {
+  glBindBufferRange(GL_UNIFORM_BUFFER, POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id(),
+                    blockStride_ * slot, sizeof(shared::ObjectCausticsBlock));
+}
+
+void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame, const ObjectLightFrame& view) {
   const ObjectCausticsFrame& objects = frame.objectCaustics;
   const float size = static_cast<float>(gridSize_);
   glViewportIndexedf(0, 0.0f, 0.0f, size, size);
@@ -192,8 +228,9 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
     glDepthFunc(back ? GL_GREATER : GL_LESS);
     glProgramUniform1i(program, kBackFaces, back ? 1 : 0);
     for (int c = 0; c < objects.casterCount; ++c) {
+      if (!((view.casters >> c) & 1u)) continue;  // beyond a local light's reach
       const CasterMesh& m = objects.casters[c];
-      const glm::mat4 modelToAnchor = casterModelToAnchor(light_, m);
+      const glm::mat4 modelToAnchor = casterModelToAnchor(view, m);
       const glm::mat4 normalToWorld = casterNormalToWorld(m);
       glProgramUniformMatrix4fv(program, kModelToAnchor, 1, GL_FALSE,
                                 glm::value_ptr(modelToAnchor));
@@ -231,9 +268,9 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame) {
   glDepthMask(GL_FALSE);
 }
 
-void ObjectCausticsPass::traceRays(const FrameDesc& frame) {
+void ObjectCausticsPass::traceRays(GLuint receiverDepth) {
   const GLuint textures[] = {frontPosition_.id(), frontNormal_.id(), backPosition_.id(),
-                             backNormal_.id(), frame.objectCaustics.receivers.depth.texture};
+                             backNormal_.id(), receiverDepth};
   glBindTextures(POSTFX_OBJECT_UNIT_FRONT_POSITION, 5, textures);
   const GLuint point = pointSampler_.id(), linear = linearSampler_.id();
   const GLuint samplers[] = {point, point, point, point, linear};
@@ -247,11 +284,11 @@ void ObjectCausticsPass::traceRays(const FrameDesc& frame) {
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void ObjectCausticsPass::drawSplats() {
+void ObjectCausticsPass::drawSplats(GLuint fbo, int mapSize) {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(splatFbo_.id(), GL_COLOR, 0, zero);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, splatFbo_.id());
-  const float size = static_cast<float>(mapSize_);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+  const float size = static_cast<float>(mapSize);
   glViewportIndexedf(0, 0.0f, 0.0f, size, size);
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
@@ -292,25 +329,28 @@ void ObjectCausticsPass::filterTemporally(const FrameDesc& frame) {
   map_.texture = history_[out].id();
 }
 
-void ObjectCausticsPass::composite(const FrameDesc& frame, int width, int height) {
+void ObjectCausticsPass::composite(const FrameDesc& frame, GLuint map, GLuint receiverDepth,
+                                   int width, int height) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
-  const GLuint textures[] = {frame.depth.texture, frame.normal.texture, frame.albedo.texture,
-                             map_.texture, frame.objectCaustics.receivers.depth.texture};
+  const GLuint textures[] = {frame.depth.texture, frame.normal.texture, frame.albedo.texture, map,
+                             receiverDepth};
   glBindTextures(POSTFX_UNIT_DEPTH, 5, textures);
   const GLuint point = pointSampler_.id(), linear = linearSampler_.id();
   const GLuint samplers[] = {point, point, point, linear, point};
   glBindSamplers(POSTFX_UNIT_DEPTH, 5, samplers);
   glUseProgram(composite_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void ObjectCausticsPass::finishDraws() {
   glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
-void ObjectCausticsPass::draw(const FrameDesc& frame, int width, int height) {
-  ObjectCausticsStateGuard guard;
+void ObjectCausticsPass::setDrawState() {
   // Our own conventions for the maps: lower-left origin, depth in [0, 1], nothing clamped,
   // culled, offset or restarted (the host's winding and index streams are not ours to know).
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -332,15 +372,32 @@ void ObjectCausticsPass::draw(const FrameDesc& frame, int width, int height) {
   glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
   for (GLint i = 0; i < maxClip && i < 8; ++i)
     glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
-  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id());
+}
 
-  drawCasterMaps(frame);
-  traceRays(frame);
-  drawSplats();
+void ObjectCausticsPass::drawSun(const FrameDesc& frame, int width, int height) {
+  bindBlock(0);
+  const GLuint receiverDepth = frame.objectCaustics.receivers.depth.texture;
+  drawCasterMaps(frame, light_);
+  traceRays(receiverDepth);
+  drawSplats(splatFbo_.id(), mapSize_);
   glBindVertexArray(emptyVao_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(mapSize_), static_cast<float>(mapSize_));
   filterTemporally(frame);
-  composite(frame, width, height);
+  composite(frame, map_.texture, receiverDepth, width, height);
+}
+
+void ObjectCausticsPass::drawLight(const FrameDesc& frame, int k, int width, int height) {
+  const ObjectLightFrame& view = lights_[static_cast<std::size_t>(k)];
+  bindBlock(k + 1);
+  const GLuint receiverDepth = frame.objectCaustics.lights[view.light].receivers.depth.texture;
+  // The same caster maps, trace and splats as the sun's, through the light's perspective view
+  // (its block); no temporal filter.
+  drawCasterMaps(frame, view);
+  traceRays(receiverDepth);
+  drawSplats(lightFbo_.id(), lightMapSize_);
+  glBindVertexArray(emptyVao_.id());
+  composite(frame, lightMap_.id(), receiverDepth, width, height);
+  lightMapClip_ = localLightMapClip(view);
 }
 
 }  // namespace postfx::detail

@@ -6,6 +6,8 @@
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_object_caustics_block.h"
 
+#include "postfx/object_caustics_light.glsl"
+
 layout(location = 2) uniform int casterIndex;
 layout(location = 3) uniform int backFaces;  // 0: front map, 1: back map
 layout(location = 4) uniform int flatNormals;
@@ -19,7 +21,7 @@ layout(location = 1) out vec4 outNormal;
 void main() {
   vec3 n = flatNormals != 0 ? cross(dFdx(worldPosition), dFdy(worldPosition)) : worldNormal;
   n = safeNormalize(n);
-  vec3 l = u.lightDir.xyz;
+  vec3 l = lightRayAt(worldPosition);
   // A degenerate triangle or a zero normal: treat as normal incidence rather than NaN.
   if (dot(n, n) < 0.5) n = -l;
   // Winding and normal direction are the host's: orient by the side the map looks at.

@@ -1,6 +1,7 @@
 #version 450 core
-// Caster maps (seed 000, section III.B step 2): each caster drawn from the sun's orthographic
-// view, fitted to the casters, writing anchor-relative positions and normals.
+// Caster maps (seed 000, section III.B step 2): each caster drawn from the light's view fitted
+// to the casters (the sun's orthographic one, or a local light's perspective one), writing
+// anchor-relative positions and normals.
 #include "shared/common.h"
 #include "shared/postfx_object_caustics_block.h"
 

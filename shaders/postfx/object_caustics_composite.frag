@@ -1,13 +1,15 @@
 #version 450 core
 // Adds the caustic map's light to every host pixel lying on a receiver (seed 000, III.B last
-// step): the pixel is projected along the light into the map; pixels not on the receiver depth
-// map's surface (the casters themselves, anything between them and the sun, anything in a
-// receiver's shadow) get nothing.
+// step): the pixel is projected along the light (the sun's, or a local light's from its
+// position) into the map; pixels not on the receiver depth map's surface (the casters themselves,
+// anything between them and the light, anything in a receiver's shadow) get nothing.
 #include "shared/common.h"
 #include "shared/postfx_bindings.h"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_object_caustics_block.h"
+
+#include "postfx/object_caustics_light.glsl"
 
 layout(binding = POSTFX_UNIT_DEPTH) uniform sampler2D gbufferDepth;
 layout(binding = POSTFX_UNIT_NORMAL) uniform sampler2D gbufferNormal;
@@ -25,9 +27,13 @@ void main() {
                                        u.depthParams.xy, POSTFX_DEPTH_CONVENTION);
   vec3 p = mat3(u.viewToWorld) * viewPos + u.cameraOffset.xyz;  // anchor-relative
   vec3 n = decodeNormal(texelFetch(gbufferNormal, pixel, 0), POSTFX_NORMAL_ENCODING);
-  float nDotL = -dot(n, u.lightDir.xyz);
+  vec3 l = lightRayAt(p);
+  float nDotL = -dot(n, l);
   if (!(nDotL > 0.0)) discard;
-  vec2 uv = vec2(dot(p, u.lightRight.xyz), dot(p, u.lightUp.xyz)) / (2.0 * u.lightUp.w) + 0.5;
+  // A light under water does not light what lies above it (its rays would leave the water).
+  if (u.spotCone.z > 0.5 && p.y > u.cameraOffset.w) discard;
+  vec2 uv;
+  if (!viewUv(u.mapClip, p, uv)) discard;
   if (!(all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))))) discard;
 
   vec4 clip = u.receiverClip * vec4(p, 1.0);
@@ -40,7 +46,7 @@ void main() {
   float receiverNdc = u.receiver.x > 0.5 ? onReceiver * 2.0 - 1.0 : onReceiver;
   vec4 surface = u.receiverClipInverse * vec4(ndc.xy, receiverNdc, 1.0);
   if (!(surface.w != 0.0)) discard;
-  if (!(abs(dot(surface.xyz / surface.w - p, u.lightDir.xyz)) <= u.receiver.z)) discard;
+  if (!(abs(dot(surface.xyz / surface.w - p, l)) <= u.receiver.z)) discard;
 
   vec3 caustic = max(textureLod(causticMap, uv, 0.0).rgb, vec3(0.0));
   vec3 light = caustic * nDotL * u.lightScale.rgb;

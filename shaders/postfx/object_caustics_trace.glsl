@@ -11,6 +11,8 @@
 #include "shared/postfx_object_caustics.h"
 #include "shared/postfx_object_caustics_block.h"
 
+#include "postfx/object_caustics_light.glsl"
+
 layout(binding = POSTFX_OBJECT_UNIT_FRONT_POSITION) uniform sampler2D frontPosition;
 layout(binding = POSTFX_OBJECT_UNIT_FRONT_NORMAL) uniform sampler2D frontNormal;
 layout(binding = POSTFX_OBJECT_UNIT_BACK_POSITION) uniform sampler2D backPosition;
@@ -19,12 +21,14 @@ layout(binding = POSTFX_OBJECT_UNIT_SPLAT_RECEIVER_DEPTH) uniform sampler2D rece
 
 const float kNoBracket = 1e30;
 
-// Light-space (u, v) of p, in [0, 1] over the grid region.
+// Light-space (u, v) of p, in [0, 1] over the grid region (outside it behind a local light).
 vec2 gridUv(vec3 p) {
-  return vec2(dot(p, u.lightRight.xyz), dot(p, u.lightUp.xyz)) / (2.0 * u.lightRight.w) + 0.5;
+  vec2 uv;
+  viewUv(u.casterClip, p, uv);
+  return uv;
 }
 
-// The back surface where the sun ray through p leaves the casters: bilinear over the covered
+// The back surface where the light ray through p leaves the casters: bilinear over the covered
 // texels only (a silhouette texel must not pull positions towards 0).
 bool backSurface(vec3 p, out vec3 position, out vec3 normal) {
   int size = int(u.grid.x);
@@ -50,7 +54,7 @@ bool backSurface(vec3 p, out vec3 position, out vec3 normal) {
   return dot(normal, normal) > 0.5;
 }
 
-// The receiver point on the sun ray through p, read from the host's receiver depth map.
+// The receiver point on the light ray through p, read from the host's receiver depth map.
 bool receiverSurface(vec3 p, out vec3 position) {
   vec4 clip = u.receiverClip * vec4(p, 1.0);
   if (!(clip.w > 0.0)) return false;
@@ -112,14 +116,14 @@ bool hitBack(vec3 origin, vec3 ray, int iterations, out vec3 exitPoint, out vec3
   vec3 surface, normal;
   if (!backSurface(origin, surface, normal)) return false;
   float d = length(surface - origin), lastStep = kNoBracket;
-  float gOrigin = dot(origin - surface, u.lightDir.xyz);
+  float gOrigin = dot(origin - surface, lightRayAt(origin));
   vec4 bracket = vec4(0.0, gOrigin, kNoBracket, kNoBracket);
   vec2 previous = vec2(0.0, gOrigin);
   for (int k = 0; k < iterations; ++k) {
     vec3 probe = origin + d * ray;
     vec3 s, n;
     if (!backSurface(probe, s, n)) break;  // left the footprint: keep the estimate
-    d = nextDistance(d, dot(probe - s, u.lightDir.xyz), length(s - origin), false, bracket,
+    d = nextDistance(d, dot(probe - s, lightRayAt(probe)), length(s - origin), false, bracket,
                      lastStep, previous);
   }
   if (backSurface(origin + d * ray, surface, normal)) {
@@ -127,7 +131,7 @@ bool hitBack(vec3 origin, vec3 ray, int iterations, out vec3 exitPoint, out vec3
     exitNormal = normal;
   } else {
     exitPoint = origin + d * ray;
-    exitNormal = u.lightDir.xyz;
+    exitNormal = lightRayAt(exitPoint);
   }
   return true;
 }
@@ -135,21 +139,21 @@ bool hitBack(vec3 origin, vec3 ray, int iterations, out vec3 exitPoint, out vec3
 bool hitReceiver(vec3 origin, vec3 ray, int iterations, out vec3 hit) {
   vec3 surface;
   if (!receiverSurface(origin, surface)) return false;
-  float gOrigin = dot(origin - surface, u.lightDir.xyz);
+  float gOrigin = dot(origin - surface, lightRayAt(origin));
   float d = length(surface - origin), lastStep = kNoBracket;
   vec4 bracket = vec4(0.0, gOrigin, kNoBracket, kNoBracket);
   vec2 previous = vec2(0.0, gOrigin);
   for (int k = 0; k < iterations; ++k) {
     vec3 probe = origin + d * ray;
     if (!receiverSurface(probe, surface)) return false;  // left the receivers
-    d = nextDistance(d, dot(probe - surface, u.lightDir.xyz), length(surface - origin), true,
+    d = nextDistance(d, dot(probe - surface, lightRayAt(probe)), length(surface - origin), true,
                      bracket, lastStep, previous);
   }
   vec3 probe = origin + d * ray;
   if (!receiverSurface(probe, hit)) return false;
   // A ray that never meets the receivers (sent up and away) still gets an estimate, but its
   // probe ends farther in front of them than the ray's origin was: it moved away.
-  return dot(probe - hit, u.lightDir.xyz) >= gOrigin;
+  return dot(probe - hit, lightRayAt(probe)) >= gOrigin;
 }
 
 // The colour channel a ray carries: all three (channel 0, one ray per cell), or, when a caster
@@ -163,6 +167,32 @@ bool rayChannel(int channel, float spread, out vec3 mask, out float etaOffset) {
   mask = vec3(equal(ivec3(0, 1, 2), ivec3(channel)));
   etaOffset = float(channel - 1) * spread;  // R: -h, G: 0, B: +h (red bends least)
   return true;
+}
+
+// What a local light's ray carries relative to the sun's normalisation (u.grid.w, the ray's
+// cell over a map texel), from where it enters the caster to where it lands: the cell's solid
+// angle over that of the map texel it lands in (cos^3 off the view's axis for each), the inverse
+// square of the distance it lands at (the map holds irradiance per unit intensity, on a surface
+// facing the light), the spot's cone, and Beer-Lambert along its path under water outside the
+// caster. 0 where that is undefined (a landing at the light or beside its view).
+vec3 localLightShare(vec3 entry, vec3 exitPoint, vec3 hit) {
+  if (!localLight()) return vec3(1.0);
+  vec3 light = u.lightPosition.xyz, axis = u.lightDir.xyz;
+  vec3 toEntry = entry - light, toHit = hit - light;
+  float entryDistance = length(toEntry), hitDistance2 = dot(toHit, toHit);
+  if (!(entryDistance > 1e-9 && hitDistance2 > 1e-18)) return vec3(0.0);
+  vec3 l = toEntry / entryDistance;
+  float cosRay = dot(l, axis), cosHit = dot(toHit, axis) * inversesqrt(hitDistance2);
+  if (!(cosHit > 1e-4)) return vec3(0.0);
+  float ratio = cosRay / cosHit;
+  float cone = 1.0;
+  if (u.spotAxis.w > 0.5)
+    cone = spotConeFalloff(acos(clamp(dot(l, u.spotAxis.xyz), -1.0, 1.0)), u.spotCone.x,
+                           u.spotCone.y);
+  float level = u.cameraOffset.w;  // water level, anchor-relative
+  float wet = submergedLength(entryDistance, light.y - level, entry.y - level) +
+              submergedLength(length(hit - exitPoint), exitPoint.y - level, hit.y - level);
+  return vec3(cone * ratio * ratio * ratio / hitDistance2) * exp(-u.lightWater.rgb * wet);
 }
 
 // One ray through a grid cell: where it lands (map texels), the flux it carries there and the
@@ -184,7 +214,7 @@ bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out f
   vec3 channelMask;
   float etaOffset;
   if (!rayChannel(channel, reflective ? 0.0 : material.z, channelMask, etaOffset)) return false;
-  vec3 l = u.lightDir.xyz;
+  vec3 l = lightRayAt(front.xyz);
   vec3 n0 = texelFetch(frontNormal, cell, 0).xyz;  // faces the light
   float cosI = clamp(-dot(l, n0), 0.0, 1.0);
   int iterations = int(u.lightDir.w);
@@ -223,9 +253,9 @@ bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out f
     origin = exitPoint;
   }
   vec3 hit;
-  if (!hitReceiver(origin, ray, iterations, hit)) return false;
-  vec2 uv = vec2(dot(hit, u.lightRight.xyz), dot(hit, u.lightUp.xyz)) / (2.0 * u.lightUp.w) + 0.5;
-  rayFlux = flux * channelMask * u.grid.w;
+  vec2 uv;
+  if (!hitReceiver(origin, ray, iterations, hit) || !viewUv(u.mapClip, hit, uv)) return false;
+  rayFlux = flux * channelMask * u.grid.w * localLightShare(front.xyz, origin, hit);
   centre = uv * u.grid.y;
   // Roughness: the ray's light spreads over a cone of angular deviation alpha, as wide on the
   // receiver as alpha times the distance travelled (casters.h, CasterMaterial::roughness).

@@ -72,6 +72,22 @@ SHARED_FN float splatSpriteSize(float sigma) {
   return 2.0f * ceil(3.0f * sigma) + 1.0f;
 }
 
+// A spot light's cone: 1 within the inner half-angle, 0 from the outer one on, a smoothstep in
+// between (angles in radians from the spot's axis; inner == outer is a hard edge).
+SHARED_FN float spotConeFalloff(float angle, float outer, float inner) {
+  if (!(angle < outer)) return 0.0f;
+  if (angle <= inner) return 1.0f;
+  float t = (outer - angle) / (outer - inner);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// How much of a straight segment of the given length lies under the water, its ends at heights
+// ya and yb relative to the water level (negative: under water).
+SHARED_FN float submergedLength(float length, float ya, float yb) {
+  float below = max(-ya, 0.0f) + max(-yb, 0.0f);
+  return length * min(below / max(abs(ya - yb), 1e-30f), 1.0f);
+}
+
 SHARED_END
 
 #endif

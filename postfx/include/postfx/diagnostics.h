@@ -4,6 +4,8 @@
 // kTimerRingDepth frames deep) and the message of the last failed call.
 #include <cstdint>
 
+#include <postfx/lights.h>
+
 namespace postfx {
 
 struct Context;
@@ -33,9 +35,34 @@ struct PassStats {
   std::uint32_t samples = 0;  // resolved frames in the median window (skipped ones count as 0 ms)
 };
 
+// Why a local light (ObjectCausticsFrame::lights) made no object caustics in a frame.
+enum class LightSkip : std::uint8_t {
+  None,             // it ran
+  NoCasterInReach,  // not listed, range or intensity 0, the pass disabled, or no caster within
+                    // its range, inside its cone and in its receiver map's view
+  InsideCaster,     // the light lies inside a caster's bounding box (no view from it sees
+                    // that caster's outside)
+  // The light and the casters it reaches lie on opposite sides of the water level: a local
+  // light's rays refracted at the water surface are not modelled (the sun's are).
+  AcrossWaterSurface,
+  // The casters in reach span more than kMaxLightViewDegrees around the light (one perspective
+  // view per light cannot hold them; the light is too close to them or among them).
+  CastersAround,
+};
+// The widest view (full apex angle, degrees) a local light's caster maps are drawn with.
+inline constexpr double kMaxLightViewDegrees = 160.0;
+
 struct FrameStats {
   PassStats passes[kPassCount];  // indexed by Pass: passes[int(Pass::GodRays)], or pass() below
   const PassStats& pass(Pass p) const noexcept { return passes[static_cast<int>(p)]; }
+  // Each local light's object caustics (ObjectCausticsFrame::lights[i]), timed on their own:
+  // Pass::ObjectCaustics times the sun's alone. present for i < CreateDesc::maxLocalLights with
+  // Feature::ObjectCaustics. A light that makes no caustics is skipped: 0 ms.
+  PassStats lights[kMaxLocalLightsLimit];
+  const PassStats& objectLight(int i) const noexcept { return lights[i]; }
+  // Why each light was skipped in the most recent successful dispatch (None: it ran). Known at
+  // once, unlike the timings, which describe a frame a few dispatches old.
+  LightSkip lightSkip[kMaxLocalLightsLimit] = {};
   std::uint64_t framesDispatched = 0;  // successful dispatch() calls
   std::uint64_t framesResolved = 0;    // of those, frames whose timings have been read back
   std::uint64_t framesDropped = 0;     // frames whose queries were still pending when the ring

@@ -36,6 +36,21 @@ struct CausticIrradianceInfo {
 };
 CausticIrradianceInfo causticIrradiance(const Context& context) noexcept;
 
+// With Feature::ObjectCaustics: the caustic map of the last local light the last dispatch drew
+// (one map serves every light in turn). A plugin-owned GL_RGBA32F GL_TEXTURE_2D of size^2 texels
+// in the light's perspective view; rgb = the caustic irradiance per unit of the light's
+// intensity (1/m^2; multiply by LocalLight::intensity * settings.intensity for the host's
+// units) on a surface facing the light, where the light lands after the casters: cone,
+// Fresnel, transmission, absorption and the inverse square included, before albedo and N.L. A
+// world point p maps to texel ((c.xy / c.w) * 0.5 + 0.5) * size, c = worldToMapClip * (p, 1).
+// texture is 0 before the first light is drawn.
+struct LightCausticMap {
+  GlName texture = 0;
+  int size = 0;
+  glm::dmat4 worldToMapClip{1.0};
+};
+LightCausticMap lightCausticMap(const Context& context) noexcept;
+
 // How the god-ray march places its samples along each view ray.
 enum class GodRaySampling {
   // Seed 002 section 4 (what every context does): where the ray crosses the planes of a

@@ -1,0 +1,58 @@
+#pragma once
+// Set-up and measurements of the local lights' object-caustics GL tests: a receiver depth map
+// seen from a light (perspective), the light's caustic map read back, and what lands on a plane.
+#include <epoxy/gl.h>
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include <postfx/postfx.h>
+#include <postfx/testing.h>
+
+namespace postfxtest {
+
+// The plane y = planeY (within +-planeHalf in x and z; 0: unbounded) seen from a light at
+// `position` looking along `axis`, perspective over a square of half-angle halfDegrees:
+// GL_DEPTH_COMPONENT32F, ForwardZeroToOne. Deleted with the object.
+class LightReceiverMap {
+ public:
+  LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis, double halfDegrees,
+                   double planeY, int size, double planeHalf = 0.0);
+  ~LightReceiverMap();
+  LightReceiverMap(const LightReceiverMap&) = delete;
+  LightReceiverMap& operator=(const LightReceiverMap&) = delete;
+  postfx::SunShadowMap desc() const;
+
+  GLuint depth = 0;
+  glm::dmat4 worldToLightClip{1.0};
+};
+
+// A light's caustic map read back (testing::lightCausticMap), with what it takes to place its
+// texels in the world.
+struct LightMap {
+  LightMap(const postfx::testing::LightCausticMap& map, const glm::dvec3& lightPosition);
+  // Unit direction from the light through texel coordinates (x, y) (continuous, texel centres
+  // at i + 0.5).
+  glm::dvec3 direction(double x, double y) const;
+  // Where that direction meets the plane y = planeY.
+  glm::dvec3 onPlane(double x, double y, double planeY) const;
+  // Flux (per unit intensity, the map's units x m^2) landing on the plane y = planeY:
+  // sum of E * r^2 * the texel's solid angle.
+  glm::dvec3 fluxOnPlane(double planeY) const;
+  // Flux-weighted centroid and RMS distance from it (m) on the plane, green channel.
+  void spotOnPlane(double planeY, glm::dvec3& centroid, double& rmsRadius) const;
+  // Largest green value and its texel.
+  double peak(int& x, int& y) const;
+  bool allFinite() const;
+
+  std::vector<glm::dvec3> value;
+  int size = 0;
+  glm::dmat4 clipInverse{1.0};
+  glm::dvec3 light{0.0};
+};
+
+// A point/spot light with its receivers.
+postfx::LocalLight makeLight(postfx::LocalLightType type, const glm::dvec3& position,
+                             const glm::dvec3& direction, const postfx::SunShadowMap& receivers);
+
+}  // namespace postfxtest
