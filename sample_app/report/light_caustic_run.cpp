@@ -12,6 +12,47 @@
 
 namespace ocean::report {
 
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+LightCausticScene pointLightBallLens(bool underWater, int binCount) {
+  LightCausticScene scene;
+  const double radius = 0.25, s = 2.0;
+  const double ior = underWater ? 1.5 / scene.waterIor : 1.5;
+  const double f = ior * radius / (2.0 * (ior - 1.0));
+  const double image = 1.0 / (1.0 / f - 1.0 / s);
+  const double tilt = 30.0 * kPi / 180.0;
+  const glm::dvec3 axis(std::sin(tilt), -std::cos(tilt), 0.0);
+  scene.sphere.centre = glm::dvec3(0.0) - axis * (0.98 * image);
+  scene.sphere.radius = radius;
+  scene.sphere.ior = ior;
+  scene.sphere.absorption = {0.2, 1.0, 3.0};
+  scene.light.position = scene.sphere.centre - axis * s;
+  scene.underWater = underWater;
+  scene.binCentre = glm::dvec3(0.0);
+  scene.binSide = underWater ? 1.2 : 0.3;
+  scene.binCount = binCount;
+  return scene;
+}
+
+LightCausticScene spotConeCut(double softness, int binCount) {
+  LightCausticScene scene;
+  scene.sphere.centre = {0.0, 0.6, 0.0};
+  scene.sphere.radius = 0.25;
+  scene.sphere.ior = 1.5;
+  scene.light.position = {0.0, 2.6, 0.0};
+  scene.light.spot = true;
+  const double tilt = 10.0 * kPi / 180.0;
+  scene.light.direction = {std::sin(tilt), -std::cos(tilt), 0.0};
+  scene.light.coneAngleDegrees = 20.0;
+  scene.light.coneSoftness = softness;
+  scene.binCentre = {0.0, 0.0, 0.0};
+  scene.binSide = 0.8;
+  scene.binCount = binCount;
+  return scene;
+}
+
 reference::ReceiverBins sceneBins(const LightCausticScene& scene) {
   // Top-down view: view x = world x, view y = -world z, pixel row 0 at the bottom (most +z).
   reference::ReceiverBins bins;
@@ -92,6 +133,27 @@ bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCaustic
   frame.objectCaustics.lightCount = 1;
 
   const ReportTarget target(n, n);
+  if (timedFrames <= 0) {  // the image alone: one dispatch, no floor, no timing
+    postfx::Context* context = nullptr;
+    if (postfx::create(create, context) != postfx::Result::Ok) {
+      error = std::string("postfx: ") + postfx::lastError(nullptr);
+      return false;
+    }
+    frame.target = {target.texture(), GL_RGBA32F};
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(target.texture(), 0, GL_RGBA, GL_FLOAT, zero);
+    const bool ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
+    if (!ok) error = std::string("postfx: ") + postfx::lastError(context);
+    out.skip = postfx::stats(*context).lightSkip[0];
+    postfx::destroy(context);
+    if (!ok) return false;
+    std::vector<glm::vec4> image(size_t(n) * n);
+    glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT,
+                      GLsizei(image.size() * sizeof(glm::vec4)), image.data());
+    out.irradiance.resize(image.size());
+    for (size_t i = 0; i < image.size(); ++i) out.irradiance[i] = glm::dvec3(glm::vec3(image[i]));
+    return true;
+  }
   PassRun run;
   if (!runPass(create, frame, postfx::Pass::ObjectCaustics, target, timedFrames, run, error))
     return false;

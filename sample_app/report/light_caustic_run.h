@@ -30,6 +30,18 @@ struct LightCausticScene {
   int binCount = 256;
 };
 
+// The ball lens of the seeds: R = 0.25 m, IOR 1.5, tinted glass (absorption 0.2, 1, 3 per m),
+// lit by a point light 2 m from its centre, 30 degrees off the vertical; the floor cuts the
+// axis just short of the paraxial image (f = n R / (2 (n - 1)) from the centre, 1/s + 1/s' =
+// 1/f: s' = 0.4615 m in air), inside the axial caustic, where the light peaks on the axis at the
+// origin. Under water: relative IOR 1.5 / 1.333 (s' = 6.5 m: the floor, at 0.98 of it, catches
+// a wide spot), the water absorbing along both legs. `binCount` pixels over the spot.
+LightCausticScene pointLightBallLens(bool underWater, int binCount = 300);
+// A spot 2 m above the same ball (clear glass, centre 0.6 m above the floor), its 20 degree cone
+// tilted 10 degrees off the centre: the edge runs through the middle of the ball's 7.2 degree
+// disc and cuts half the caustic away; `softness` fades it.
+LightCausticScene spotConeCut(double softness, int binCount = 256);
+
 // The floor's bins of `scene`, pixel (i, j) of the target = bin (i, j).
 reference::ReceiverBins sceneBins(const LightCausticScene& scene);
 
@@ -39,8 +51,8 @@ struct LightCausticRun {
   postfx::LightSkip skip = postfx::LightSkip::None;
 };
 
-// Dispatches `scene` with `settings` (timedFrames + warm-up, then once into a cleared target).
-// False with a message when the plugin refuses the frame.
+// Dispatches `scene` with `settings` (timedFrames + warm-up, then once into a cleared target;
+// timedFrames 0: once, untimed). False with a message when the plugin refuses the frame.
 bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
                      int timedFrames, LightCausticRun& out, std::string& error);
 

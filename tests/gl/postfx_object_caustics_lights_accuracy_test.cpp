@@ -21,8 +21,6 @@ namespace ref = ocean::reference;
 using ocean::report::LightCausticRun;
 using ocean::report::LightCausticScene;
 
-constexpr double kPi = 3.14159265358979323846;
-
 class PostfxObjectCausticsLightsAccuracyTest : public testsupport::GlTest {};
 
 struct Comparison {
@@ -30,22 +28,19 @@ struct Comparison {
   glm::dvec3 fluxError{0.0};   // relative, per channel, over the bins
   double centroidError = 0.0;  // m, between the flux-weighted centroids
   glm::dvec3 gpuFlux{0.0}, refFlux{0.0};
-  double ms = 0.0, floorMs = 0.0;
 };
 
 Comparison compare(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
                    int rays, const char* name) {
   LightCausticRun run;
   std::string error;
-  EXPECT_TRUE(ocean::report::runLightCaustic(scene, settings, 1, run, error)) << error;
+  EXPECT_TRUE(ocean::report::runLightCaustic(scene, settings, 0, run, error)) << error;
   EXPECT_EQ(run.skip, postfx::LightSkip::None) << name;
   const ref::ReceiverBins bins = ocean::report::sceneBins(scene);
   const glm::dvec3 water = scene.underWater ? scene.waterAbsorption : glm::dvec3(0.0);
   const ref::LocalCausticReference traced =
       ref::traceSphereFromLight(scene.sphere, scene.light, bins, water, rays);
   Comparison c;
-  c.ms = run.medianMs;
-  c.floorMs = run.floorMs;
   if (run.irradiance.empty()) return c;
   bool finite = true;
   for (const glm::dvec3& v : run.irradiance)
@@ -64,38 +59,12 @@ Comparison compare(const LightCausticScene& scene, const postfx::ObjectCausticsS
   std::printf(
       "%s: flux GPU (%.5f %.5f %.5f) traced (%.5f %.5f %.5f) per unit intensity, error "
       "(%+.2f%% %+.2f%% %+.2f%%); focus GPU (%.4f, %.4f, %.4f) traced (%.4f, %.4f, %.4f), %.2f "
-      "mm apart; centroids %.2f mm apart; light %.3f ms, floor %.3f ms\n",
+      "mm apart; centroids %.2f mm apart\n",
       name, c.gpuFlux.r, c.gpuFlux.g, c.gpuFlux.b, c.refFlux.r, c.refFlux.g, c.refFlux.b,
       100.0 * c.fluxError.r, 100.0 * c.fluxError.g, 100.0 * c.fluxError.b, gpuFocus.x, gpuFocus.y,
       gpuFocus.z, refFocus.x, refFocus.y, refFocus.z, 1000.0 * c.focusError,
-      1000.0 * c.centroidError, c.ms, c.floorMs);
+      1000.0 * c.centroidError);
   return c;
-}
-
-// The ball lens of the seeds: R = 0.25 m, IOR 1.5, tinted glass (absorption 0.2, 1, 3 per m),
-// lit by a point light 2 m from its centre, 30 degrees off the vertical; the floor cuts the
-// axis just short of the paraxial image (f = n R / (2 (n - 1)) from the centre, 1/s + 1/s' =
-// 1/f: s' = 0.4615 m), inside the axial caustic, where the light peaks on the axis.
-LightCausticScene ballLensScene(double ior, bool underWater) {
-  LightCausticScene scene;
-  const double radius = 0.25, s = 2.0;
-  const double f = ior * radius / (2.0 * (ior - 1.0));
-  const double image = 1.0 / (1.0 / f - 1.0 / s);
-  const double tilt = 30.0 * kPi / 180.0;
-  const glm::dvec3 axis(std::sin(tilt), -std::cos(tilt), 0.0);
-  // Under water the glass bends by n / n_water: a longer focus; the floor keeps its place
-  // relative to it.
-  const double toFloor = 0.98 * image;
-  scene.sphere.centre = glm::dvec3(0.0) - axis * toFloor;
-  scene.sphere.radius = radius;
-  scene.sphere.ior = ior;
-  scene.sphere.absorption = {0.2, 1.0, 3.0};
-  scene.light.position = scene.sphere.centre - axis * s;
-  scene.underWater = underWater;
-  scene.binCentre = glm::dvec3(0.0);
-  scene.binSide = underWater ? 1.2 : 0.3;
-  scene.binCount = 300;
-  return scene;
 }
 
 postfx::ObjectCausticsSettings fineSettings() {
@@ -105,8 +74,10 @@ postfx::ObjectCausticsSettings fineSettings() {
   return s;
 }
 
+// The ball lens lit by a point light 2 m away (ocean::report::pointLightBallLens): the traced
+// light peaks where the axis meets the floor.
 TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracingInAir) {
-  const LightCausticScene scene = ballLensScene(1.5, false);
+  const LightCausticScene scene = ocean::report::pointLightBallLens(false);
   const Comparison c = compare(scene, fineSettings(), 1500, "point light 2 m, air");
   const double radius = scene.sphere.radius;
   const double toFocus = glm::length(scene.light.position - scene.binCentre);
@@ -119,7 +90,7 @@ TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracin
 
 TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracingUnderWater) {
   // The same ball under water: relative IOR 1.5 / 1.333, the water absorbing along both legs.
-  LightCausticScene scene = ballLensScene(1.5 / 1.333, true);
+  const LightCausticScene scene = ocean::report::pointLightBallLens(true);
   const Comparison c = compare(scene, fineSettings(), 1500, "point light 2 m, under water");
   EXPECT_LT(c.focusError, 0.02 * scene.sphere.radius);
   for (int ch = 0; ch < 3; ++ch) EXPECT_LT(std::abs(c.fluxError[ch]), 0.05) << "channel " << ch;
@@ -155,23 +126,10 @@ TEST_F(PostfxObjectCausticsLightsAccuracyTest, InverseSquareOverOneToTenMetres) 
 }
 
 TEST_F(PostfxObjectCausticsLightsAccuracyTest, SpotConeEdgeCutsTheCausticWhereTracingDoes) {
-  // A spot 2 m above the ball, its 20 degree cone tilted 10 degrees off the centre: the hard
-  // edge runs through the middle of the ball's 7.2 degree disc, so half the caustic is cut.
-  // Where the cut lies moves the caustic's flux and centroid; softness 0.5 moves the cut.
+  // ocean::report::spotConeCut: the cone's edge cuts the ball's caustic in half. Where the cut
+  // lies moves the caustic's flux and centroid; softness 0.5 moves the cut.
   for (double softness : {0.0, 0.5}) {
-    LightCausticScene scene;
-    scene.sphere.centre = {0.0, 0.6, 0.0};
-    scene.sphere.radius = 0.25;
-    scene.sphere.ior = 1.5;
-    scene.light.position = {0.0, 2.6, 0.0};
-    scene.light.spot = true;
-    const double tilt = 10.0 * kPi / 180.0;
-    scene.light.direction = {std::sin(tilt), -std::cos(tilt), 0.0};
-    scene.light.coneAngleDegrees = 20.0;
-    scene.light.coneSoftness = softness;
-    scene.binCentre = {0.0, 0.0, 0.0};
-    scene.binSide = 0.8;
-    scene.binCount = 256;
+    const LightCausticScene scene = ocean::report::spotConeCut(softness);
     char name[64];
     std::snprintf(name, sizeof(name), "spot cone edge, softness %.1f", softness);
     const Comparison c = compare(scene, fineSettings(), 1200, name);
