@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <object_caustics_scene.h>
 
@@ -64,8 +65,12 @@ reference::ReceiverBins sceneBins(const LightCausticScene& scene) {
   return bins;
 }
 
-bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
-                     int timedFrames, LightCausticRun& out, std::string& error) {
+namespace {
+
+// The host of both: `sun` lights the sphere with the sun alone (from the sphere toward the
+// light), otherwise with the light alone.
+bool runOnHost(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
+               int timedFrames, bool sun, LightCausticRun& out, std::string& error) {
   const int n = scene.binCount;
   // 60 degree vertical field of view: the square image spans binSide at this height.
   const double height = 0.5 * scene.binSide / std::tan(glm::radians(30.0));
@@ -131,6 +136,15 @@ bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCaustic
   frame.objectCaustics.sunCaustics = false;
   frame.objectCaustics.lights = &light;
   frame.objectCaustics.lightCount = 1;
+  const glm::dvec3 towardSun = glm::normalize(source.position - scene.sphere.centre);
+  std::optional<reference::ReceiverMap> sunReceivers;
+  if (sun) {
+    sunReceivers.emplace(towardSun, scene.binCentre, scene.binSide, scene.planeY, 1024);
+    frame.sun.direction = towardSun;
+    frame.objectCaustics.sunCaustics = true;
+    frame.objectCaustics.receivers = sunReceivers->desc();
+    frame.objectCaustics.lightCount = 0;
+  }
 
   const ReportTarget target(n, n);
   if (timedFrames <= 0) {  // the image alone: one dispatch, no floor, no timing
@@ -157,12 +171,28 @@ bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCaustic
   PassRun run;
   if (!runPass(create, frame, postfx::Pass::ObjectCaustics, target, timedFrames, run, error))
     return false;
-  out.medianMs = run.stats.objectLight(0).medianMs;
+  out.medianMs = sun ? run.medianMs : run.stats.objectLight(0).medianMs;
   out.floorMs = run.floorMs;
   out.skip = run.stats.lightSkip[0];
   out.irradiance.resize(size_t(n) * n);
   for (size_t i = 0; i < out.irradiance.size(); ++i)
     out.irradiance[i] = glm::dvec3(glm::vec3(run.image[i]));
+  return true;
+}
+
+}  // namespace
+
+bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
+                     int timedFrames, LightCausticRun& out, std::string& error) {
+  return runOnHost(scene, settings, timedFrames, false, out, error);
+}
+
+bool timeSunCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
+                    int timedFrames, double& ms, double& floorMs, std::string& error) {
+  LightCausticRun run;
+  if (!runOnHost(scene, settings, std::max(timedFrames, 1), true, run, error)) return false;
+  ms = run.medianMs;
+  floorMs = run.floorMs;
   return true;
 }
 

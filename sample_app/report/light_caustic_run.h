@@ -56,4 +56,10 @@ struct LightCausticRun {
 bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
                      int timedFrames, LightCausticRun& out, std::string& error);
 
+// The sun's object caustics of the same sphere on the same host and settings, the sun shining
+// from the sphere toward the light (its receivers: the floor seen along it), for the cost of a
+// light against the sun's: the median time of Pass::ObjectCaustics and of the floor.
+bool timeSunCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
+                    int timedFrames, double& ms, double& floorMs, std::string& error);
+
 }  // namespace ocean::report

@@ -144,6 +144,17 @@ bool measureLightRows(const ObjectCausticReportSettings& settings, int timedFram
                   100.0 * glm::length(gpuFocus - refFocus) / scene.sphere.radius,
                   100.0 * (gpuFlux / fine.fluxInBins.g - 1.0));
     row.note = text;
+    if (&c == &cases[0]) {
+      // What the sun costs on the same host and settings, timed right after the light.
+      double sunMs = 0.0, sunFloorMs = 0.0;
+      if (!timeSunCaustic(scene, postfx::ObjectCausticsSettings{}, timedFrames, sunMs, sunFloorMs,
+                          error))
+        return false;
+      char sun[96];
+      std::snprintf(sun, sizeof(sun), "; the sun on this host %.3g ms (light / sun %.2f)", sunMs,
+                    run.medianMs / sunMs);
+      row.note += sun;
+    }
     rows.push_back(row);
     char noise[96];
     std::snprintf(noise, sizeof(noise), "%s%s %s %.2g", noises.empty() ? "" : ", ", c.light,
