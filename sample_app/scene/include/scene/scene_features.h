@@ -39,10 +39,10 @@ inline constexpr glm::dvec2 kArchShadowXZ{-9.0, 6.0};  // sand right under the a
 // Glass sphere (radius 0.5 m) suspended kGlassSphereHeightAboveSand above the sand: for
 // water -> glass (relative IOR 1.5 / 1.33) its paraxial focus is about 2.2 m from the centre,
 // so the focused caustic lands near the sand below it.
-inline constexpr glm::dvec2 kGlassSphereXZ{0.0, 0.0};
-inline constexpr double kGlassSphereHeightAboveSand = 1.8;  // centre above sand
-inline constexpr glm::dvec2 kMetalRingXZ{2.5, 1.5};         // lying flat on the sand
-inline constexpr glm::dvec2 kGlassBottleXZ{-2.0, 2.0};      // standing on the sand
+inline constexpr glm::dvec2 kGlassSphereXZ{1.0, 7.0};
+inline constexpr double kGlassSphereHeightAboveSand = 1.0;  // centre above sand
+inline constexpr glm::dvec2 kMetalRingXZ{2.7, 8.6};         // lying flat on the sand
+inline constexpr glm::dvec2 kGlassBottleXZ{-0.8, 8.4};      // standing on the sand
 inline constexpr glm::dvec2 kAmphoraXZ{-5.0, 2.5};          // on its side, half buried
 
 }  // namespace ocean_scene::features
