@@ -218,6 +218,31 @@ LocalCausticReference traceSphereFromLight(const SphereCaster& sphere,
   return traceCap(light, axis, cosMax, bins, absorption, raysPerSide, seed, depart);
 }
 
+LocalCausticReference traceRingFromLight(const RingCaster& ring, const LocalLightSource& light,
+                                         const ReceiverBins& bins, const glm::dvec3& absorption,
+                                         int raysPerSide, unsigned seed) {
+  const glm::dvec3 centre = ring.base + glm::dvec3(0.0, 0.5 * ring.height, 0.0);
+  const double radius = std::hypot(ring.outer, 0.5 * ring.height) * 1.01;
+  const glm::dvec3 toCentre = centre - light.position;
+  const double distance = glm::length(toCentre);
+  if (!(light.position.y > ring.base.y + ring.height) || !(distance > radius)) {
+    LocalCausticReference none;
+    none.size = bins.size;
+    none.irradiance.assign(size_t(bins.size) * bins.size, glm::dvec3(0.0));
+    return none;
+  }
+  const double ratio = radius / distance;
+  const DepartFn depart = [&](const glm::dvec3& dir) -> std::optional<Departure> {
+    if (!(dir.y < 0.0)) return std::nullopt;
+    const std::optional<RingReflection> hit = reflectOffRing(ring, light.position, dir);
+    if (!hit) return std::nullopt;
+    const double leg1 = glm::length(hit->point - light.position);
+    return Departure{hit->point, hit->direction, hit->reflectance * glm::exp(-absorption * leg1)};
+  };
+  return traceCap(light, toCentre / distance, std::sqrt(1.0 - ratio * ratio), bins, absorption,
+                  raysPerSide, seed, depart);
+}
+
 LocalCausticReference traceDirectLight(const LocalLightSource& light, const ReceiverBins& bins,
                                        const glm::dvec3& absorption, int raysPerSide,
                                        unsigned seed) {

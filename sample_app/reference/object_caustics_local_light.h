@@ -85,6 +85,14 @@ LocalCausticReference traceSphereFromLight(const SphereCaster& sphere,
                                            const glm::dvec3& mediumAbsorption, int raysPerSide,
                                            unsigned seed = 0);
 
+// The same for the metal ring's one specular bounce (Schlick reflectance), for a light above the
+// ring's top (reflectOffRing's rays come down into it): rays over the cap of the ring's bounding
+// sphere; nothing (an empty result) for a light at or below the top.
+LocalCausticReference traceRingFromLight(const RingCaster& ring, const LocalLightSource& light,
+                                         const ReceiverBins& bins,
+                                         const glm::dvec3& mediumAbsorption, int raysPerSide,
+                                         unsigned seed = 0);
+
 // The light's direct irradiance on the plane of `bins` with nothing in the way (the same
 // sampling and binning, rays over the cone that holds the bins' corners): the ground truth of
 // the inverse-square law, the cone's edge and the medium's absorption.

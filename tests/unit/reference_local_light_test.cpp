@@ -337,4 +337,39 @@ TEST(ReferenceLocalLight, LightMapOnAPlaneKeepsFluxAndTheCosineLaw) {
   EXPECT_LT(std::abs(sum / compared), 0.002);
 }
 
+// The ring's reflection from a point light far away is the sun's: E d^2 from a light 1e4 m off
+// along the sun's direction carries the flux the sun's reference (irradiance 1) does.
+TEST(ReferenceLocalLight, RingLitFromAfarReflectsWhatTheSunDoes) {
+  RingCaster ring;
+  ring.base = {0.1, 0.0, -0.2};
+  ring.f0 = {0.9, 0.8, 0.6};
+  const double zenith = 60.0 * kPi / 180.0;
+  const glm::dvec3 towardSun(std::sin(zenith), std::cos(zenith), 0.0);
+  // The sun's reference bins perpendicular to it; only the total flux is compared.
+  postfx::ObjectCausticMap map;
+  map.size = 64;
+  const glm::dvec3 u = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), -towardSun));
+  map.axisU = u * 8.0;
+  map.axisV = glm::cross(-towardSun, u) * 8.0;
+  map.direction = -towardSun;
+  map.origin = ring.base - 0.5 * (map.axisU + map.axisV);
+  const CausticReference sun = traceRingReference(ring, towardSun, -0.5, map, 1200);
+  LocalLightSource light;
+  const double d = 1e4;
+  light.position = ring.base + glm::dvec3(0.0, 0.5 * ring.height, 0.0) + towardSun * d;
+  const ReceiverBins floor = floorBins(ring.base, -0.5, 8.0, 64);
+  const LocalCausticReference far = traceRingFromLight(ring, light, floor, glm::dvec3(0.0), 1200);
+  const glm::dvec3 sunFlux = sun.fluxInMap + sun.fluxOutside;
+  const glm::dvec3 lightFlux = (far.fluxInBins + far.fluxOutside) * (d * d);
+  std::printf(
+      "ring: reflected flux, sun (%.5f %.5f %.5f) m^2, light 1e4 m off x d^2 (%.5f %.5f "
+      "%.5f)\n",
+      sunFlux.r, sunFlux.g, sunFlux.b, lightFlux.r, lightFlux.g, lightFlux.b);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(lightFlux[c] / sunFlux[c], 1.0, 0.005) << c;
+  // Below the ring's top the light is refused: nothing traced.
+  light.position.y = 0.1;
+  EXPECT_EQ(traceRingFromLight(ring, light, floor, glm::dvec3(0.0), 10).fluxLeaving,
+            glm::dvec3(0.0));
+}
+
 }  // namespace
