@@ -94,11 +94,13 @@ LightSkip fitLocalLightFrame(const FrameDesc& frame, int index, ObjectLightFrame
             half, angleBetween(axis, glm::normalize(casterWorldCorner(objects.casters[c], k) - p)));
   // A spot narrower than the casters' cone: its own cone is the view (the rays outside it
   // carry no light).
+  bool coneView = false;
   if (light.type == LocalLightType::Spot) {
     const double coneHalf = glm::radians(double(light.coneAngleDegrees)) * 0.5;
     if (coneHalf < half) {
       axis = glm::normalize(light.direction);
       half = coneHalf;
+      coneView = true;
     }
   }
   if (!(half <= glm::radians(kMaxLightViewDegrees) * 0.5)) return LightSkip::CastersAround;
@@ -109,8 +111,22 @@ LightSkip fitLocalLightFrame(const FrameDesc& frame, int index, ObjectLightFrame
   lightAxes(axis, f.right, f.up);
   f.casters = mask;
   f.anchor = centre;
-  // 2% room so that silhouettes are not cut by the view's edge (as the sun's).
-  f.tanHalfGrid = std::tan(std::max(half, 1e-6)) * 1.02;
+  // The square view's half side: the cone's, or (casters' view) the tightest square around
+  // the corners' directions, which the cone's circle would leave a fifth of the grid wider
+  // than. 2% room so that silhouettes are not cut by the view's edge (as the sun's).
+  double tanHalf = std::tan(std::max(half, 1e-6));
+  if (!coneView) {
+    tanHalf = 1e-6;
+    for (int c = 0; c < objects.casterCount; ++c)
+      if ((mask >> c) & 1u)
+        for (int k = 0; k < 8; ++k) {
+          const glm::dvec3 q = casterWorldCorner(objects.casters[c], k) - p;
+          tanHalf = std::max(tanHalf,
+                             std::max(std::abs(glm::dot(q, f.right)), std::abs(glm::dot(q, f.up))) /
+                                 glm::dot(q, axis));
+        }
+  }
+  f.tanHalfGrid = tanHalf * 1.02;
   f.tanHalfMap = std::min(f.tanHalfGrid * double(s.footprintScale), std::tan(0.49 * kPi));
   double zNear = std::numeric_limits<double>::max(), zFar = 0.0;
   for (int c = 0; c < objects.casterCount; ++c)

@@ -168,9 +168,12 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectCausticsV
             std::to_string(s.gridSize) + ")";
     return Result::OutOfMemory;
   }
-  for (GLuint fbo : {frontFbo_.id(), backFbo_.id(), views.sun ? splatFbo_.id() : lightFbo_.id(),
-                     views.lights.empty() ? frontFbo_.id() : lightFbo_.id()}) {
-    if (glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+  // The caster maps always; the sun's splat map and the lights' when this frame draws them.
+  const GLuint splatFbo = views.sun ? splatFbo_.id() : 0;
+  const GLuint lightFbo = views.lights.empty() ? 0 : lightFbo_.id();
+  for (GLuint fbo : {frontFbo_.id(), backFbo_.id(), splatFbo, lightFbo}) {
+    if (fbo != 0 &&
+        glCheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       error =
           "objectCaustics: an internal framebuffer is incomplete (could the driver not "
           "allocate the maps? mapSize " +

@@ -13,22 +13,12 @@
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
 #include "postfx_host_state.h"
-#include "postfx_object_caustics_util.h"
+#include "postfx_object_caustics_lights_util.h"
 
 namespace {
 
 using namespace postfxtest;
 using postfx::Result;
-
-ContextPtr makeLightContext(int maxLocalLights) {
-  postfx::CreateDesc desc;
-  desc.features = postfx::Feature::ObjectCaustics;
-  desc.depthConvention = static_cast<postfx::DepthConvention>(0);  // as makeContext
-  desc.maxLocalLights = maxLocalLights;
-  postfx::Context* fx = nullptr;
-  EXPECT_EQ(postfx::create(desc, fx), Result::Ok) << postfx::lastError(nullptr);
-  return ContextPtr(fx);
-}
 
 class PostfxObjectCausticsLightsContractTest : public testsupport::GlTest {
  protected:

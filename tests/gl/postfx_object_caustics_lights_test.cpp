@@ -16,16 +16,6 @@ namespace {
 using namespace postfxtest;
 using postfx::Result;
 
-ContextPtr makeLightContext(int maxLocalLights = 1) {
-  postfx::CreateDesc desc;
-  desc.features = postfx::Feature::ObjectCaustics;
-  desc.depthConvention = static_cast<postfx::DepthConvention>(0);  // as makeContext
-  desc.maxLocalLights = maxLocalLights;
-  postfx::Context* fx = nullptr;
-  EXPECT_EQ(postfx::create(desc, fx), Result::Ok) << postfx::lastError(nullptr);
-  return ContextPtr(fx);
-}
-
 glm::dmat4 scaled(const glm::dvec3& centre, const glm::dvec3& scale) {
   glm::dmat4 m = translation(centre);
   m[0][0] = scale.x;
@@ -44,11 +34,8 @@ postfx::CasterMaterial thinGlass() {
 // Dispatches the light alone (no sun) and reads its map back.
 LightMap runLight(postfx::Context& fx, const ObjectHost& host, const postfx::CasterMesh& caster,
                   const postfx::LocalLight& light, const postfx::ObjectCausticsSettings& s) {
-  postfx::FrameDesc frame = host.frame(&caster, 1, s);
-  frame.objectCaustics.sunCaustics = false;
-  frame.objectCaustics.lights = &light;
-  frame.objectCaustics.lightCount = 1;
-  EXPECT_EQ(postfx::dispatch(fx, frame), Result::Ok) << postfx::lastError(&fx);
+  EXPECT_EQ(postfx::dispatch(fx, lightsOnlyFrame(host, &caster, 1, &light, 1, s)), Result::Ok)
+      << postfx::lastError(&fx);
   EXPECT_EQ(postfx::stats(fx).lightSkip[0], postfx::LightSkip::None);
   return LightMap(postfx::testing::lightCausticMap(fx), light.position);
 }
@@ -74,10 +61,8 @@ class PostfxObjectCausticsLightsTest : public testsupport::GlTest {};
 TEST_F(PostfxObjectCausticsLightsTest, ThinPaneGivesTheInverseSquare) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh cube = makeCubeMesh(1.0);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 128;
-  s.mapSize = 256;
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(128, 256);
   const double t = 1.0 - shared::fresnelDielectric(1.0f, 1.5f);
   const double transmitted = t * t;
   for (double d : {1.0, 2.0, 5.0, 10.0}) {
@@ -98,16 +83,52 @@ TEST_F(PostfxObjectCausticsLightsTest, ThinPaneGivesTheInverseSquare) {
   }
 }
 
+// Under water the same pane's light is absorbed along the whole path, light to pane and pane to
+// receiver (Beer-Lambert, the water's absorption per channel), and the pane's Fresnel loss is
+// that of glass against water.
+TEST_F(PostfxObjectCausticsLightsTest, UnderWaterTheLightIsAbsorbedAlongItsPath) {
+  ObjectHost host(sunAt(20.0, 0.0));
+  const GlMesh cube = makeCubeMesh(1.0);
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(128, 256);
+  for (double d : {2.0, 5.0}) {
+    SCOPED_TRACE(d);
+    const glm::dvec3 position(0.0, d, 0.0), down(0.0, -1.0, 0.0);
+    LightReceiverMap receivers(position, down, 40.0, 0.0, 512);
+    postfx::LocalLight light =
+        makeLight(postfx::LocalLightType::Spot, position, down, receivers.desc());
+    light.coneAngleDegrees = 30.0f;
+    const postfx::CasterMesh pane =
+        cube.caster(scaled({0.0, 0.5 * d, 0.0}, {0.4 * d, 0.002 * d, 0.4 * d}), thinGlass());
+    postfx::FrameDesc frame = lightsOnlyFrame(host, &pane, 1, &light, 1, s);
+    frame.water.level = d + 1.0;  // everything under water
+    ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
+    ASSERT_EQ(postfx::stats(*fx).lightSkip[0], postfx::LightSkip::None);
+    const LightMap map(postfx::testing::lightCausticMap(*fx), position);
+    const double t = 1.0 - shared::fresnelDielectric(1.0f, 1.5f / frame.water.ior);
+    const glm::dvec3 expected = t * t * glm::exp(-glm::dvec3(frame.water.absorption) * d);
+    double measured[3] = {};
+    const int c = map.size / 2;
+    for (int y = c - 2; y < c + 2; ++y)
+      for (int x = c - 2; x < c + 2; ++x)
+        for (int ch = 0; ch < 3; ++ch)
+          measured[ch] += map.value[size_t(y) * map.size + x][ch] / 16.0;
+    for (int ch = 0; ch < 3; ++ch) {
+      std::printf("D %.0f m, channel %d: E * D^2 / I = %.5f, expected %.5f\n", d, ch,
+                  measured[ch] * d * d, expected[ch]);
+      EXPECT_NEAR(measured[ch] * d * d / expected[ch], 1.0, 0.01) << ch;
+    }
+  }
+}
+
 // A spot's cone cuts the light where its angles say: with a hard edge the irradiance halves at
 // the outer half-angle, with softness s at the middle of the fade ((1 - s/2) of it); nothing
 // lands beyond the edge (past the splat's reach).
 TEST_F(PostfxObjectCausticsLightsTest, SpotConeCutsTheLightWhereItSays) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh cube = makeCubeMesh(1.0);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 128;
-  s.mapSize = 256;
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(128, 256);
   const double d = 3.0;
   const glm::dvec3 position(0.0, d, 0.0), down(0.0, -1.0, 0.0);
   LightReceiverMap receivers(position, down, 40.0, 0.0, 512);
@@ -167,10 +188,8 @@ TEST_F(PostfxObjectCausticsLightsTest, SpotConeCutsTheLightWhereItSays) {
 TEST_F(PostfxObjectCausticsLightsTest, GlassSphereFocusesAtTheThickLensPosition) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh mesh = makeSphereMesh(0.25, 96, 48);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 256;
-  s.mapSize = 512;
+  auto fx = makeLightContext(1);
+  postfx::ObjectCausticsSettings s = sizedSettings(256, 512);
   s.iterations = 3;
   const double radius = 0.25, ior = 1.5, u = 2.0;
   const double f = ior * radius / (2.0 * (ior - 1.0));
@@ -218,10 +237,8 @@ TEST_F(PostfxObjectCausticsLightsTest, GlassSphereFocusesAtTheThickLensPosition)
 TEST_F(PostfxObjectCausticsLightsTest, SphereFluxMatchesFresnelAndAbsorption) {
   ObjectHost host(sunAt(20.0, 0.0));
   const GlMesh mesh = makeSphereMesh(0.25, 128, 64);
-  auto fx = makeLightContext();
-  postfx::ObjectCausticsSettings s;
-  s.gridSize = 256;
-  s.mapSize = 512;
+  auto fx = makeLightContext(1);
+  const postfx::ObjectCausticsSettings s = sizedSettings(256, 512);
   const double radius = 0.25, ior = 1.5, u = 2.0;
   const glm::dvec3 absorption(0.8, 0.3, 0.05);
   postfx::CasterMaterial glass;

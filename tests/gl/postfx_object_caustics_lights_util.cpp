@@ -131,6 +131,40 @@ bool LightMap::allFinite() const {
   return true;
 }
 
+ContextPtr makeLightContext(int maxLocalLights, postfx::Feature extra) {
+  postfx::CreateDesc desc;
+  desc.features = postfx::Feature::ObjectCaustics | extra;
+  desc.depthConvention = static_cast<postfx::DepthConvention>(0);  // as makeContext
+  desc.maxLocalLights = maxLocalLights;
+  postfx::Context* fx = nullptr;
+  EXPECT_EQ(postfx::create(desc, fx), postfx::Result::Ok) << postfx::lastError(nullptr);
+  return ContextPtr(fx);
+}
+
+postfx::ObjectCausticsSettings sizedSettings(int gridSize, int mapSize) {
+  postfx::ObjectCausticsSettings s;
+  s.gridSize = gridSize;
+  s.mapSize = mapSize;
+  return s;
+}
+
+postfx::FrameDesc lightsOnlyFrame(const ObjectHost& host, const postfx::CasterMesh* casters,
+                                  int casterCount, const postfx::LocalLight* lights, int lightCount,
+                                  const postfx::ObjectCausticsSettings& settings) {
+  postfx::FrameDesc frame = host.frame(casters, casterCount, settings);
+  frame.objectCaustics.sunCaustics = false;
+  frame.objectCaustics.lights = lights;
+  frame.objectCaustics.lightCount = lightCount;
+  return frame;
+}
+
+bool finiteTarget(const ObjectHost& host) {
+  for (const glm::vec4& v :
+       readRgba(host.scene.target, host.scene.spec().width, host.scene.spec().height))
+    if (!std::isfinite(v.r) || !std::isfinite(v.g) || !std::isfinite(v.b)) return false;
+  return true;
+}
+
 postfx::LocalLight makeLight(postfx::LocalLightType type, const glm::dvec3& position,
                              const glm::dvec3& direction, const postfx::SunShadowMap& receivers) {
   postfx::LocalLight light;

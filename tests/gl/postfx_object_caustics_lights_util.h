@@ -9,6 +9,8 @@
 #include <postfx/postfx.h>
 #include <postfx/testing.h>
 
+#include "postfx_object_caustics_util.h"
+
 namespace postfxtest {
 
 // The plane y = planeY (within +-planeHalf in x and z; 0: unbounded) seen from a light at
@@ -50,6 +52,20 @@ struct LightMap {
   glm::dmat4 clipInverse{1.0};
   glm::dvec3 light{0.0};
 };
+
+// A context with Feature::ObjectCaustics (and `extra`) for up to maxLocalLights lights.
+ContextPtr makeLightContext(int maxLocalLights, postfx::Feature extra = postfx::Feature::None);
+
+// Object-caustics settings with the given ray grid and map sizes (small: fast tests).
+postfx::ObjectCausticsSettings sizedSettings(int gridSize, int mapSize);
+
+// The host's frame with the lights given and the sun left out (sunCaustics false).
+postfx::FrameDesc lightsOnlyFrame(const ObjectHost& host, const postfx::CasterMesh* casters,
+                                  int casterCount, const postfx::LocalLight* lights, int lightCount,
+                                  const postfx::ObjectCausticsSettings& settings);
+
+// Whether every value of the host's target is finite.
+bool finiteTarget(const ObjectHost& host);
 
 // A point/spot light with its receivers.
 postfx::LocalLight makeLight(postfx::LocalLightType type, const glm::dvec3& position,

@@ -19,11 +19,31 @@
 //   * It hands, per light, a receiver depth map rendered from the light WITHOUT the casters
 //     (LocalLight::receivers): the surfaces the refracted and reflected rays land on.
 //
+// How a light is drawn. The casters within its range and cone are drawn from the light, in one
+// perspective view fitted to the cone around their bounding boxes' corners (a spot's own cone
+// when that is narrower), at most kMaxLightViewDegrees wide (postfx/diagnostics.h); the same
+// ray grid (settings.gridSize) is traced through them as for the sun, each ray carrying the
+// intensity times its cell's solid angle, the cone's falloff, Fresnel, transmission, tint and
+// absorption, and splatted into a map in the light's view (settings.mapSize) that holds
+// irradiance (inverse square included); then composited onto the pixels that lie on the light's
+// receivers and face it. No temporal filter (settings.temporalFilter is the sun's).
+//
+// What is not modelled, and reported in FrameStats::lightSkip rather than drawn wrong:
+//   * a light inside a caster's bounding box (LightSkip::InsideCaster);
+//   * a light on the other side of the water level from the casters it reaches, e.g. a lamp
+//     above the water shining down into it (LightSkip::AcrossWaterSurface): its rays would be
+//     refracted at the surface, which one centre of projection cannot hold. Place such a light
+//     under the water (or at its level: a light at the level counts as under water);
+//   * casters spread more than kMaxLightViewDegrees around the light (LightSkip::CastersAround).
+// A light under the water lights no receiver above the water level.
+//
 // Cost. The number of lights a frame may list is bounded by CreateDesc::maxLocalLights, fixed at
-// create() (a shader constant; 0, the default, costs nothing). Per frame, a light that can reach
-// no caster (range 0, intensity 0, every caster beyond its range or outside its cone) costs
-// nothing and allocates nothing; each light that does costs about what the sun's object caustics
-// cost (its own caster maps, trace, splat and composite over the same gridSize and mapSize).
+// create(). Per frame, a light that reaches no caster (range 0, intensity 0, every caster beyond
+// its range or outside its cone or its receiver map) costs 0 ms and allocates nothing; each
+// light that does costs about what the sun's object caustics cost at the same gridSize and
+// mapSize (its own caster maps, trace, splat and composite, drawn after the sun's and timed on
+// its own: stats().objectLight(i)), so the cost is linear in the lights that reach a caster.
+// All lights share one caustic map (mapSize^2 x 16 bytes), allocated when the first one runs.
 #include <cstdint>
 
 #include <glm/glm.hpp>

@@ -81,8 +81,10 @@ struct CreateDesc {  // fixed for the context's life
   // caustic map of 4096 needs 768 MiB, 8192 needs 3 GiB, 16384 needs 12 GiB.
   int memoryBudgetMiB = 1024;
   // Most local lights a frame may list (ObjectCausticsFrame::lightCount), [0,
-  // kMaxLocalLightsLimit] (postfx/lights.h). A shader constant: 0 (default) compiles no light
-  // code at all. Read only with Feature::ObjectCaustics.
+  // kMaxLocalLightsLimit] (postfx/lights.h), fixed at create(): it sizes the uniform blocks
+  // (one ~3.9 KiB slot per light) and the per-light timers. A light runs the sun's own programs
+  // with its own block, so no shader is compiled per light and 0 (default) costs nothing. Read
+  // only with Feature::ObjectCaustics.
   int maxLocalLights = 0;
 };
 
@@ -98,9 +100,10 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // the water level) is skipped and reports 0 ms. With Feature::GodRays the god-ray pass (timed as
 // "god_rays"; at half resolution the march and the upsample together) runs after the caustics,
 // skipped on the same conditions with godRays.enabled. With Feature::ObjectCaustics the object
-// caustics (postfx/casters.h; timed as "object_caustics") run last, skipped (0 ms) with no
-// caster, objectCaustics.settings.enabled off, the sun at/below the horizon, or no caster inside
-// the receiver map's view.
+// caustics (postfx/casters.h; the sun's timed as "object_caustics") run last, skipped (0 ms)
+// with no caster, objectCaustics.settings.enabled off, objectCaustics.sunCaustics off, the sun
+// at/below the horizon, or no caster inside the receiver map's view; then each local light
+// (postfx/lights.h) that reaches a caster, timed in stats().objectLight(i).
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
 // Deletes the context's GL objects (current GL context required; without one they are leaked
