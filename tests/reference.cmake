@@ -1,6 +1,7 @@
 # CPU references (sample_app/reference): their own correctness on cases with known answers.
 postfx_add_test(reference_unit_tests
   SOURCES unit/reference_seabed_test.cpp unit/reference_object_caustics_test.cpp
+          unit/reference_local_light_test.cpp
   LIBS ocean_reference)
 
 # The WavefrontAreaRatio caustics model (seed 004): its own properties, its window as the
@@ -61,3 +62,10 @@ postfx_add_test(report_plot_tests
 postfx_add_test(postfx_shadow_bias_tests GL
   SOURCES gl/postfx_shadow_bias_test.cpp
   LIBS ocean_report glm::glm postfx::epoxy)
+
+# Point and spot lights' object caustics (issue 18) against the exact CPU ray tracing of the same
+# glass sphere, through the report's host (light_caustic_run.h): focus, flux in air and under
+# water, inverse square over 1-10 m, a spot cone's edge.
+postfx_add_test(postfx_object_caustics_lights_accuracy_tests GL
+  SOURCES gl/postfx_object_caustics_lights_accuracy_test.cpp
+  LIBS ocean_report ocean_reference glm::glm postfx::epoxy)

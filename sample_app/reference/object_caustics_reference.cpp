@@ -9,6 +9,8 @@
 #include <random>
 #include <thread>
 
+#include "object_caustics_optics.h"
+
 namespace ocean::reference {
 namespace {
 
@@ -31,23 +33,6 @@ glm::dvec3 roughen(const glm::dvec3& d, double alpha, std::mt19937_64& rng) {
   const glm::dvec3 a = glm::normalize(glm::cross(ref, d)), b = glm::cross(d, a);
   std::normal_distribution<double> gauss(0.0, alpha);
   return glm::normalize(d + a * std::tan(gauss(rng)) + b * std::tan(gauss(rng)));
-}
-
-double fresnel(double cosI, double eta) {
-  cosI = std::clamp(cosI, 0.0, 1.0);
-  const double sinT2 = (1.0 - cosI * cosI) / (eta * eta);
-  if (sinT2 >= 1.0) return 1.0;
-  const double cosT = std::sqrt(1.0 - sinT2);
-  const double rs = (cosI - eta * cosT) / (cosI + eta * cosT);
-  const double rp = (eta * cosI - cosT) / (eta * cosI + cosT);
-  return 0.5 * (rs * rs + rp * rp);
-}
-
-std::optional<glm::dvec3> refractRay(const glm::dvec3& i, const glm::dvec3& n, double eta) {
-  const double c = -glm::dot(n, i);
-  const double k = 1.0 - eta * eta * (1.0 - c * c);
-  if (k < 0.0) return std::nullopt;
-  return eta * i + (eta * c - std::sqrt(k)) * n;
 }
 
 std::optional<glm::dvec3> landOnPlane(const glm::dvec3& p, const glm::dvec3& d, double planeY) {
@@ -182,50 +167,56 @@ CausticReference traceSphereReference(const SphereCaster& s, const glm::dvec3& t
   return sum;
 }
 
+std::optional<RingReflection> reflectOffRing(const RingCaster& r, const glm::dvec3& o,
+                                             const glm::dvec3& d) {
+  const double top = r.base.y + r.height, bottom = r.base.y;
+  auto radial = [&r](const glm::dvec3& p) { return glm::dvec2(p.x - r.base.x, p.z - r.base.z); };
+  // Roots of |radial(o + t d)| = radius.
+  auto cylinder = [&](double radius, double& t0, double& t1) {
+    const glm::dvec2 q = radial(o), e(d.x, d.z);
+    const double a = glm::dot(e, e), b = glm::dot(q, e), c = glm::dot(q, q) - radius * radius;
+    const double disc = b * b - a * c;
+    if (a < 1e-18 || disc <= 0.0) return false;
+    t0 = (-b - std::sqrt(disc)) / a;
+    t1 = (-b + std::sqrt(disc)) / a;
+    return true;
+  };
+  const double tTop = (top - o.y) / d.y;
+  const double rTop = glm::length(radial(o + d * tTop));
+  glm::dvec3 p, n;
+  if (rTop <= r.inner) {  // through the opening: the far inner wall, or the floor inside
+    double t0, t1;
+    if (!cylinder(r.inner, t0, t1)) return std::nullopt;
+    p = o + d * t1;
+    if (p.y < bottom) return std::nullopt;
+    const glm::dvec2 q = radial(p) / r.inner;
+    n = glm::dvec3(-q.x, 0.0, -q.y);
+  } else if (rTop <= r.outer) {  // top annulus
+    p = o + d * tTop;
+    n = glm::dvec3(0.0, 1.0, 0.0);
+  } else {  // beside the top: the outer wall, if the ray meets it below the top
+    double t0, t1;
+    if (!cylinder(r.outer, t0, t1) || t0 < tTop) return std::nullopt;
+    p = o + d * t0;
+    if (p.y < bottom) return std::nullopt;
+    const glm::dvec2 q = radial(p) / r.outer;
+    n = glm::dvec3(q.x, 0.0, q.y);
+  }
+  const double cosI = -glm::dot(d, n);
+  const double m = 1.0 - std::clamp(cosI, 0.0, 1.0);
+  return RingReflection{p, d + 2.0 * cosI * n,
+                        r.f0 + (glm::dvec3(1.0) - r.f0) * (m * m * m * m * m)};
+}
+
 CausticReference traceRingReference(const RingCaster& r, const glm::dvec3& towardSun, double planeY,
                                     const postfx::ObjectCausticMap& map, int raysPerSide) {
   const TraceFn fn = [&r, planeY](const glm::dvec3& o, const glm::dvec3& d,
                                   std::mt19937_64&) -> std::optional<Landing> {
-    const double top = r.base.y + r.height, bottom = r.base.y;
-    auto radial = [&r](const glm::dvec3& p) { return glm::dvec2(p.x - r.base.x, p.z - r.base.z); };
-    // Roots of |radial(o + t d)| = radius.
-    auto cylinder = [&](double radius, double& t0, double& t1) {
-      const glm::dvec2 q = radial(o), e(d.x, d.z);
-      const double a = glm::dot(e, e), b = glm::dot(q, e), c = glm::dot(q, q) - radius * radius;
-      const double disc = b * b - a * c;
-      if (a < 1e-18 || disc <= 0.0) return false;
-      t0 = (-b - std::sqrt(disc)) / a;
-      t1 = (-b + std::sqrt(disc)) / a;
-      return true;
-    };
-    const double tTop = (top - o.y) / d.y;
-    const double rTop = glm::length(radial(o + d * tTop));
-    glm::dvec3 p, n;
-    if (rTop <= r.inner) {  // through the opening: the far inner wall, or the floor inside
-      double t0, t1;
-      if (!cylinder(r.inner, t0, t1)) return std::nullopt;
-      p = o + d * t1;
-      if (p.y < bottom) return std::nullopt;
-      const glm::dvec2 q = radial(p) / r.inner;
-      n = glm::dvec3(-q.x, 0.0, -q.y);
-    } else if (rTop <= r.outer) {  // top annulus
-      p = o + d * tTop;
-      n = glm::dvec3(0.0, 1.0, 0.0);
-    } else {  // beside the top: the outer wall, if the ray meets it below the top
-      double t0, t1;
-      if (!cylinder(r.outer, t0, t1) || t0 < tTop) return std::nullopt;
-      p = o + d * t0;
-      if (p.y < bottom) return std::nullopt;
-      const glm::dvec2 q = radial(p) / r.outer;
-      n = glm::dvec3(q.x, 0.0, q.y);
-    }
-    const double cosI = -glm::dot(d, n);
-    const glm::dvec3 reflected = d + 2.0 * cosI * n;
-    const double m = 1.0 - std::clamp(cosI, 0.0, 1.0);
-    const glm::dvec3 f = r.f0 + (glm::dvec3(1.0) - r.f0) * (m * m * m * m * m);
-    const std::optional<glm::dvec3> hit = landOnPlane(p, reflected, planeY);
-    if (!hit) return Landing{p, glm::dvec3(0.0)};
-    return Landing{*hit, f};
+    const std::optional<RingReflection> hit = reflectOffRing(r, o, d);
+    if (!hit) return std::nullopt;
+    const std::optional<glm::dvec3> landed = landOnPlane(hit->point, hit->direction, planeY);
+    if (!landed) return Landing{hit->point, glm::dvec3(0.0)};
+    return Landing{*landed, hit->reflectance};
   };
   const glm::dvec3 centre = r.base + glm::dvec3(0.0, 0.5 * r.height, 0.0);
   return trace(fn, centre, std::hypot(r.outer, 0.5 * r.height) * 1.01, towardSun, map, raysPerSide,

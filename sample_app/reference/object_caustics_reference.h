@@ -5,6 +5,7 @@
 // binned into the plugin's caustic-map texel grid. Deterministic: stratified rays with a fixed
 // seed, rows split over 2 threads.
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include <postfx/postfx.h>
@@ -52,6 +53,15 @@ CausticReference traceSphereReference(const SphereCaster& sphere, const glm::dve
 CausticReference traceRingReference(const RingCaster& ring, const glm::dvec3& towardSun,
                                     double planeY, const postfx::ObjectCausticMap& map,
                                     int raysPerSide);
+
+// One specular bounce off the ring for a ray coming down from above its top (`dir` unit, with
+// dir.y < 0): where it reflects, its reflected direction (unit) and the Schlick reflectance.
+// Nothing when the ray misses the ring.
+struct RingReflection {
+  glm::dvec3 point, direction, reflectance;
+};
+std::optional<RingReflection> reflectOffRing(const RingCaster& ring, const glm::dvec3& origin,
+                                             const glm::dvec3& dir);
 
 // The glass sphere over a plane that the accuracy test and the report measure: R = 1 m, IOR 1.5,
 // tinted (absorption 0.02, 0.1, 0.3 per m), its bottom 0.4 m above the plane y = 0, the sun 25

@@ -168,4 +168,43 @@ postfx::SunShadowMap ReceiverMap::desc() const {
   return s;
 }
 
+LightReceiverMap::LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis,
+                                   double fovDegrees, double planeY, int sizeIn, double far)
+    : size(sizeIn) {
+  const glm::dvec3 a = glm::normalize(axis);
+  const glm::dvec3 up = std::abs(a.y) > 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+  worldToLightClip = glm::perspectiveRH_ZO(glm::radians(fovDegrees), 1.0, 0.05, far) *
+                     glm::lookAtRH(position, position + a, up);
+  const glm::dmat4 inverse = glm::inverse(worldToLightClip);
+  std::vector<float> texels(static_cast<size_t>(size) * size, 1.0f);
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double nx = (x + 0.5) / size * 2.0 - 1.0, ny = (y + 0.5) / size * 2.0 - 1.0;
+      const glm::dvec4 b = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
+      const glm::dvec3 d = glm::dvec3(b) / b.w - position;
+      if (std::abs(d.y) < 1e-12) continue;
+      const double t = (planeY - position.y) / d.y;
+      if (t <= 0.0 || t > 1.0) continue;
+      const glm::dvec4 clip = worldToLightClip * glm::dvec4(position + d * t, 1.0);
+      texels[static_cast<size_t>(y) * size + x] = static_cast<float>(clip.z / clip.w);
+    }
+  }
+  glCreateTextures(GL_TEXTURE_2D, 1, &depth);
+  glTextureStorage2D(depth, 1, GL_DEPTH_COMPONENT32F, size, size);
+  glTextureSubImage2D(depth, 0, 0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
+}
+
+LightReceiverMap::~LightReceiverMap() {
+  glDeleteTextures(1, &depth);
+}
+
+postfx::SunShadowMap LightReceiverMap::desc() const {
+  postfx::SunShadowMap s;
+  s.depth = {depth, GL_DEPTH_COMPONENT32F};
+  s.worldToLightClip = worldToLightClip;
+  s.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  s.bias = 0.05f;  // m along the light
+  return s;
+}
+
 }  // namespace ocean::reference

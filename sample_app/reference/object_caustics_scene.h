@@ -58,4 +58,23 @@ class ReceiverMap {
   int size = 0;
 };
 
+// Receiver depth map of the plane y = planeY seen from a point or spot light at `position`:
+// perspective along unit `axis` over a square of full angle `fovDegrees`, near 0.05 m, far
+// `far` m, forward [0, 1] depth (DepthConvention::ForwardZeroToOne), GL_DEPTH_COMPONENT32F,
+// computed in double. Texels whose ray misses the plane stay at the far plane.
+class LightReceiverMap {
+ public:
+  LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis, double fovDegrees,
+                   double planeY, int size, double far = 100.0);
+  ~LightReceiverMap();
+  LightReceiverMap(const LightReceiverMap&) = delete;
+  LightReceiverMap& operator=(const LightReceiverMap&) = delete;
+
+  postfx::SunShadowMap desc() const;
+
+  GLuint depth = 0;
+  glm::dmat4 worldToLightClip{1.0};
+  int size = 0;
+};
+
 }  // namespace ocean::reference

@@ -38,14 +38,21 @@ struct ObjectCausticReportSettings {
   int focusRaysPerSide = 1200;      // per row, into the GPU map, for focus and flux
   int binCount = 80;                // per side of the bin grid...
   double binSide = 3.2;             // ...covering this many metres around the sphere's axis
+  // The point- and spot-light rows (light_caustic_run.h's scenes, every setting at its
+  // default): rays per side of the reference (per seed, two seeds), and the block of pixels
+  // averaged into one compared bin.
+  int lightReferenceRaysPerSide = 1500;
+  int lightBinBlock = 4;
 };
 
 // The full sweep (map 256/512/1024; grid 64/128/256/512; iterations 1/3/5; splat 0.5/1/2 at
 // map 1024) or the quick one; both end with the default settings in air and under water.
 ObjectCausticReportSettings objectCausticSweep(bool quick);
 
-// `target`: the report's timing target (its size is the G-buffer's). Appends rows; `note` gets
-// the scene and the reference's convergence. Progress on stderr.
+// `target`: the report's timing target (its size is the G-buffer's). Appends rows (the sun's,
+// then the point and spot lights': the ball lens lit by a point light 2 m away in air and under
+// water, a spot's cone edge cutting its caustic hard and soft); `note` gets the scenes and the
+// reference's convergence. Progress on stderr.
 bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReportSettings& settings,
                            std::vector<Row>& rows, std::string& note, std::string& error);
 

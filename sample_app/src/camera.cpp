@@ -4,6 +4,9 @@
 
 #include <array>
 
+#include <scene/scene_features.h>
+#include <scene/seabed.h>
+
 namespace ocean {
 
 glm::dvec3 Camera::forward() const {
@@ -41,7 +44,7 @@ namespace {
 Preset makePreset(std::string_view name, std::string_view description, glm::dvec3 position,
                   double yawDegrees, double pitchDegrees, double sunElevationDegrees,
                   double sunAzimuthDegrees) {
-  Preset preset{name, description, {}, {}};
+  Preset preset{name, description, {}, {}, {}};
   preset.camera.position = position;
   preset.camera.yaw = glm::radians(yawDegrees);
   preset.camera.pitch = glm::radians(pitchDegrees);
@@ -50,8 +53,40 @@ Preset makePreset(std::string_view name, std::string_view description, glm::dvec
   return preset;
 }
 
-const std::array<Preset, 4>& presets() {
-  static const std::array<Preset, 4> all = {
+// A night dive: a diver's torch above and behind the glass sphere, shining
+// through it onto the sand, the camera beside them. The sun is below the horizon (no sunlight,
+// no sun caustics): the torch carries the scene, over the sky's faint ambient.
+Preset torchPreset() {
+  const glm::dvec2 xz = ocean_scene::features::kGlassSphereXZ;
+  const double sand = ocean_scene::seabedHeight(xz.x, xz.y);
+  const glm::dvec3 sphere(xz.x, sand + ocean_scene::features::kGlassSphereHeightAboveSand, xz.y);
+  Preset preset =
+      makePreset("torch",
+                 "underwater at night, a diver's torch shining through the glass sphere "
+                 "onto the sand",
+                 sphere + glm::dvec3(3.6, 0.9, 4.2), 0.0, 0.0, -12.0, 40.0);
+  preset.camera.fovY = glm::radians(55.0);
+  SceneLight torch;
+  torch.type = SceneLight::Type::Spot;
+  torch.position = sphere + glm::dvec3(-1.5, 2.2, -1.1);  // 2.9 m from the centre
+  // Through the sphere's centre: its caustic lands in the middle of its shadow on the sand.
+  torch.direction = glm::normalize(sphere - torch.position);
+  torch.intensity = glm::vec3(150.0f, 140.0f, 120.0f);  // a warm LED: 18 at 2.9 m
+  torch.coneAngleDegrees = 55.0f;
+  torch.coneSoftness = 0.35f;
+  torch.range = 20.0;
+  preset.lights.push_back(torch);
+  // Look between the sphere and its shadow on the sand, where the beam meets it.
+  const double toSand = (sphere.y - sand) / -torch.direction.y;
+  const glm::dvec3 target = sphere + torch.direction * (0.6 * toSand);
+  const glm::dvec3 view = glm::normalize(target - preset.camera.position);
+  preset.camera.pitch = std::asin(view.y);
+  preset.camera.yaw = std::atan2(-view.x, -view.z);
+  return preset;
+}
+
+const std::array<Preset, 5>& presets() {
+  static const std::array<Preset, 5> all = {
       makePreset("seabed", "underwater, looking down at the seabed, pillar and arch",
                  {2.0, -4.5, 14.0}, 8.0, -22.0, 62.0, 200.0),
       makePreset("sunward", "underwater, looking up toward the sun through Snell's window",
@@ -60,6 +95,7 @@ const std::array<Preset, 4>& presets() {
                  48.0, 150.0),
       makePreset("waterline", "camera 3 cm above the mean water plane, half in, half out",
                  {0.0, 0.03, 16.0}, 5.0, -4.0, 40.0, 170.0),
+      torchPreset(),
   };
   return all;
 }

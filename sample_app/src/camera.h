@@ -5,6 +5,9 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "scene_light.h"
 
 namespace ocean {
 
@@ -33,6 +36,7 @@ struct Preset {
   std::string_view description;
   Camera camera;
   Sun sun;
+  std::vector<SceneLight> lights;  // point and spot lights (--light adds to them)
 };
 
 // Returns false when the name is unknown; `known` lists the valid names for the message.

@@ -19,6 +19,7 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--height",
                                               "--time",
                                               "--model",
+                                              "--light",
                                               "--water-resolution",
                                               "--no-caustics",
                                               "--no-god-rays",
@@ -37,10 +38,20 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
 
 constexpr std::string_view kSceneFooter = R"(
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
-the sun), above (above the water looking down), waterline (camera 3 cm above the water).
+the sun), above (above the water looking down), waterline (camera 3 cm above the water), torch
+(underwater at night, a diver's torch shining through the glass sphere onto the sand).
 --camera-position and --camera-look-at replace the preset's camera (either alone keeps the
 other from the preset); the look-at point is centred in the image and must not be straight
 above or below the camera. --sun-azimuth/--sun-elevation replace the preset's sun.
+
+--light point:X,Y,Z:I[:RANGE] or spot:X,Y,Z:DX,DY,DZ:I:CONE[:SOFTNESS[:RANGE]] adds a light to
+the preset's (at most 4 in all): position in metres, the spot's axis (any length), intensity I
+or R,G,B (the irradiance it gives at 1 m facing it, in the sample's HDR units: the sun's is ~3),
+the spot's full cone angle in degrees (0, 180), the share of its half-angle faded at the edge
+[0, 1] (default 0.3) and the range in metres [0, 1e6] (default 20: farther casters make no
+caustics from it). The sample lights the scene with it (inverse square, the cone, water's
+extinction, a shadow map from the light) and the plugin adds its caustics through glass and
+metal.
 
 caustics models: tile (default; true caustic irradiance, computed each frame per water cascade
 over its periodic tile at a few depths, each cascade's light moved by the coarser ones'

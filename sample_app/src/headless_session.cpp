@@ -25,6 +25,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
   settings.waterResolution = options.waterResolution;
   session.renderer = Renderer::create(settings, scene, error);
   if (!session.renderer) return false;
+  session.renderer->setLights(session.preset.lights);
   session.plugin = PluginSetup::create(*session.renderer, options, benchmarkFloor, error);
   return session.plugin != nullptr;
 }

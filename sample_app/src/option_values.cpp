@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "caustics_model_names.h"
+#include "light_spec.h"
 
 namespace ocean {
 namespace {
@@ -99,7 +100,8 @@ std::string causticsModelList() {
 }
 
 const std::array kValueOptions{
-    ValueOption{"--preset", "NAME", "seabed, sunward, above or waterline (default seabed)", false,
+    ValueOption{"--preset", "NAME", "seabed, sunward, above, waterline or torch (default seabed)",
+                false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.preset = text;  // checked against the presets when the scene is built
                   return true;
@@ -121,6 +123,20 @@ const std::array kValueOptions{
                 "a glTF (.glb/.gltf) added as glass or metal casters (repeatable)", true,
                 [](std::string_view text, Options& o, std::string&) {
                   o.models.emplace_back(text);  // the file and its placement: model_spec.cpp
+                  return true;
+                }},
+    ValueOption{"--light", "TYPE:...",
+                "a point or spot light (repeatable, at most 4 with the preset's): "
+                "point:X,Y,Z:I[:RANGE] or spot:X,Y,Z:DX,DY,DZ:I:CONE[:SOFTNESS[:RANGE]]",
+                true,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (int(o.lights.size()) == kMaxSceneLights) {
+                    error = "--light: at most " + std::to_string(kMaxSceneLights) + " lights";
+                    return false;
+                  }
+                  SceneLight light;
+                  if (!parseLightSpec(text, light, error)) return false;
+                  o.lights.push_back(light);
                   return true;
                 }},
     ValueOption{"--water-resolution", "N", "FFT texels per cascade side, 16..512 (default 256)",

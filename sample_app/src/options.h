@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene_light.h"
+
 namespace ocean {
 
 enum class Command { Help, Render, View, Bench, Report, Reference, Compare };
@@ -17,6 +19,7 @@ struct Options {
   int width = 1280, height = 720;
   double timeSeconds = 0.0;
   std::vector<std::string> models;  // extra .glb files placed in the scene
+  std::vector<SceneLight> lights;   // --light: added to the preset's lights
   std::string out = "ocean.png";
   // bench: measured frames after warm-up; render: frames of the image sequence (1: one image);
   // view: frames drawn before it quits (0: until the window is closed)

@@ -30,6 +30,8 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   if (options.objectCaustics) {
     desc.features = desc.features | postfx::Feature::ObjectCaustics;
     renderer.enableReceiverMap();
+    // Exactly the scene's lights: the bound is a shader constant, 0 compiles no light code.
+    desc.maxLocalLights = int(renderer.lights().size());
   }
   desc.depthConvention = postfx::DepthConvention::ReverseZ;
   desc.normalEncoding = postfx::NormalEncoding::Octahedral;
@@ -132,6 +134,28 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.objectCaustics.receivers.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
   desc.objectCaustics.receivers.bias = 0.2f;  // m along the light (was 0.0005 of a 400 m range)
   desc.objectCaustics.settings = objectCaustics_;
+  // Point and spot lights: each with its receiver map, drawn from the light like the sun's.
+  lights_.clear();
+  for (const HostLight& host : frame.lights) {
+    if (host.receiverMap == 0) break;  // no object caustics
+    const SceneLight& l = host.light;
+    postfx::LocalLight light;
+    light.type = l.type == SceneLight::Type::Spot ? postfx::LocalLightType::Spot
+                                                  : postfx::LocalLightType::Point;
+    light.position = l.position;
+    light.direction = l.direction;
+    light.intensity = l.intensity;
+    light.range = l.range;
+    light.coneAngleDegrees = l.coneAngleDegrees;
+    light.coneSoftness = l.coneSoftness;
+    light.receivers.depth = {host.receiverMap, GL_DEPTH_COMPONENT32F};
+    light.receivers.worldToLightClip = host.worldToClip;
+    light.receivers.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+    light.receivers.bias = 0.2f;  // m along the light, as the sun's receivers
+    lights_.push_back(light);
+  }
+  desc.objectCaustics.lights = lights_.data();
+  desc.objectCaustics.lightCount = int(lights_.size());
   lastFrame_ = desc;
   if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(context_);

@@ -44,6 +44,7 @@ class PluginSetup {
   postfx::GodRaySettings godRays_;
   postfx::ObjectCausticsSettings objectCaustics_;
   std::vector<postfx::CasterMesh> casters_;  // rebuilt each frame, kept for its capacity
+  std::vector<postfx::LocalLight> lights_;   // likewise
 };
 
 }  // namespace ocean

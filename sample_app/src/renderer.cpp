@@ -8,6 +8,7 @@
 #include <glkit/texture.h>
 
 #include "shared/sample_frame.h"
+#include "shared/sample_lights.h"
 #include "shared/sample_optics.h"
 
 namespace ocean_sample {
@@ -52,6 +53,8 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
 
   if (!build(geometry_, "sample/geometry.vert", "sample/geometry.frag", "sample.geometry", error) ||
       !build(shadow_, "sample/shadow.vert", "sample/depth_only.frag", "sample.shadow", error) ||
+      !build(lightShadow_, "sample/light_shadow.vert", "sample/depth_only.frag",
+             "sample.light_shadow", error) ||
       !build(lighting_, "sample/fullscreen.vert", "sample/lighting.frag", "sample.lighting",
              error) ||
       !build(composite_, "sample/fullscreen.vert", "sample/composite.frag", "sample.fog", error) ||
@@ -66,6 +69,8 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
 
   frameUniforms_ = glkit::createBuffer(sizeof(shared::SampleFrame), nullptr, GL_DYNAMIC_STORAGE_BIT,
                                        "sample.frame_constants");
+  lightUniforms_ = glkit::createBuffer(sizeof(shared::SampleLights), nullptr,
+                                       GL_DYNAMIC_STORAGE_BIT, "sample.light_constants");
   emptyVao_ = glkit::createVertexArray({});
 
   fogged_ = glkit::createTexture2D(GL_RGBA16F, settings_.width, settings_.height, GL_NEAREST,
@@ -90,6 +95,68 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
 
 void Renderer::enableReceiverMap() {
   if (receiverMap_.texture() == 0) receiverMap_.create(settings_.shadowMapSize);
+  for (size_t i = 0; i < lightMaps_.size(); ++i) {
+    LightDepthMaps& maps = *lightMaps_[i];
+    if (maps.receivers.texture() == 0) maps.receivers.create(settings_.lightMapSize);
+    hostLights_[i].receiverMap = maps.receivers.texture();
+  }
+}
+
+void Renderer::setLights(const std::vector<SceneLight>& lights) {
+  lightMaps_.clear();
+  hostLights_.clear();
+  for (size_t i = 0; i < lights.size() && i < size_t(kMaxSceneLights); ++i) {
+    auto maps = std::make_unique<LightDepthMaps>();
+    maps->light = lights[i];
+    maps->worldToClip = lightWorldToClip(lights[i], maps->fovY);
+    maps->shadow.create(settings_.lightMapSize);
+    if (receiverMap_.texture() != 0) maps->receivers.create(settings_.lightMapSize);
+    hostLights_.push_back({maps->light, maps->worldToClip, maps->receivers.texture()});
+    lightMaps_.push_back(std::move(maps));
+  }
+}
+
+void Renderer::updateLightConstants(const glm::dvec3& eye) {
+  shared::SampleLights block{};
+  block.lightCount = glm::vec4(float(lightMaps_.size()), 0.0f, 0.0f, 0.0f);
+  for (size_t i = 0; i < lightMaps_.size(); ++i) {
+    const LightDepthMaps& maps = *lightMaps_[i];
+    const SceneLight& light = maps.light;
+    const bool spot = light.type == SceneLight::Type::Spot;
+    block.lightViewProjection[i] = ShadowMap::relativeTo(maps.worldToClip, eye);
+    block.lightPosition[i] = glm::vec4(glm::vec3(light.position - eye), spot ? 1.0f : 0.0f);
+    block.lightAxis[i] = glm::vec4(glm::vec3(glm::normalize(light.direction)), 0.0f);
+    block.lightIntensity[i] = glm::vec4(light.intensity, float(light.position.y - optics_.level));
+    const double half = glm::radians(0.5 * double(light.coneAngleDegrees));
+    const double texelPerMetre = 2.0 * std::tan(0.5 * maps.fovY) / maps.shadow.size();
+    block.lightCone[i] = glm::vec4(float(half), float(half * (1.0 - double(light.coneSoftness))),
+                                   float(texelPerMetre), 0.0f);
+  }
+  glNamedBufferSubData(lightUniforms_.id(), 0, sizeof(block), &block);
+}
+
+void Renderer::drawLightMaps(const glm::dvec3& eye) {
+  if (lightMaps_.empty()) return;
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.light_shadow");
+  glUseProgram(lightShadow_.id());
+  const GLint matrix = glGetUniformLocation(lightShadow_.id(), "lightViewProjection");
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  for (const std::unique_ptr<LightDepthMaps>& maps : lightMaps_) {
+    const glm::mat4 relative = ShadowMap::relativeTo(maps->worldToClip, eye);
+    glUniformMatrix4fv(matrix, 1, GL_FALSE, glm::value_ptr(relative));
+    glViewport(0, 0, maps->shadow.size(), maps->shadow.size());
+    glBindFramebuffer(GL_FRAMEBUFFER, maps->shadow.framebuffer());
+    glClear(GL_DEPTH_BUFFER_BIT);
+    scene_.draw(lightShadow_.id(), eye);
+    if (maps->receivers.texture() != 0) {
+      glBindFramebuffer(GL_FRAMEBUFFER, maps->receivers.framebuffer());
+      glClear(GL_DEPTH_BUFFER_BIT);
+      scene_.draw(lightShadow_.id(), eye, GpuScene::DrawSet::NonCasters);
+    }
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glPopDebugGroup();
 }
 
 glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
@@ -171,6 +238,8 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
   glPopDebugGroup();
+  updateLightConstants(eye);
+  drawLightMaps(eye);
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.geometry");
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.geometryFramebuffer());
@@ -192,7 +261,16 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   const GLuint lightingInputs[] = {targets_.depth(), targets_.normal(), targets_.albedo(),
                                    shadowMap_.texture()};
   glBindTextures(0, 4, lightingInputs);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 1, lightUniforms_.id());
+  // Every unit of the lights' shadow array holds a depth texture, the sun's where unused.
+  GLuint lightShadows[kMaxSceneLights];
+  for (int i = 0; i < kMaxSceneLights; ++i)
+    lightShadows[i] = size_t(i) < lightMaps_.size() ? lightMaps_[size_t(i)]->shadow.texture()
+                                                    : shadowMap_.texture();
+  glBindTextures(4, kMaxSceneLights, lightShadows);
   drawFullscreen(emptyVao_.id());
+  glBindTextures(4, kMaxSceneLights, nullptr);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 1, 0);
   glPopDebugGroup();
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.fog");
@@ -216,7 +294,8 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
                           shadowWorldToClip_,
                           projection,
                           receiverMap_.texture(),
-                          scene_.casters()};
+                          scene_.casters(),
+                          hostLights_};
     if (!plugin_(frame, error)) return false;
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
   }

@@ -18,6 +18,7 @@
 
 #include "camera.h"
 #include "gpu_scene.h"
+#include "light_shadow_maps.h"
 #include "shadow_map.h"
 #include "water_grid.h"
 
@@ -27,6 +28,7 @@ struct RenderSettings {
   int width = 1280, height = 720;  // pixels
   int waterResolution = 256;       // FFT texels per cascade side (power of two, 8..512)
   int shadowMapSize = 2048;        // texels per side
+  int lightMapSize = 1024;         // texels per side of each point/spot light's depth maps
   double shadowRadius = 40.0;      // metres around the camera the shadow map covers
   float exposure = 1.0f;
 };
@@ -35,6 +37,14 @@ struct FrameInput {
   Camera camera;
   Sun sun;
   double timeSeconds = 0.0;
+};
+
+// A point or spot light as the plugin sees it: the light, and its receiver map (the view from
+// the light without the caustic casters; 0 without enableReceiverMap()).
+struct HostLight {
+  SceneLight light;
+  glm::dmat4 worldToClip{1.0};  // of its depth maps: world -> light clip, forward [0,1] depth
+  GLuint receiverMap = 0;
 };
 
 // What a plugin pass sees of the host's frame (the host owns all of it).
@@ -51,6 +61,7 @@ struct HostFrame {
   // the receivers of the plugin's object caustics; 0 otherwise.
   GLuint receiverMap;
   const std::vector<CasterInstance>& casters;
+  const std::vector<HostLight>& lights;
 };
 // Called after lighting and fog, before the water surface; returns false with a message to fail
 // the frame.
@@ -67,6 +78,9 @@ class Renderer {
   const PluginPass& pluginPass() const { return plugin_; }
   // Also render the receiver map each frame (for the plugin's object caustics).
   void enableReceiverMap();
+  // The scene's point and spot lights (at most kMaxSceneLights): lit with a shadow map each.
+  void setLights(const std::vector<SceneLight>& lights);
+  const std::vector<HostLight>& lights() const { return hostLights_; }
   bool render(const FrameInput& input, std::string& error);
 
   // Blits the tone-mapped image into a host framebuffer (the window's is 0).
@@ -85,6 +99,8 @@ class Renderer {
   bool initialise(const ocean_scene::Model& scene, std::string& error);
   // Uploads the frame constants; returns the camera projection it derived them from.
   glm::dmat4 updateFrameConstants(const FrameInput& input);
+  void updateLightConstants(const glm::dvec3& eye);
+  void drawLightMaps(const glm::dvec3& eye);
 
   RenderSettings settings_;
   postfx::water::Optics optics_;
@@ -93,9 +109,11 @@ class Renderer {
   GpuScene scene_;
   ShadowMap shadowMap_;
   ShadowMap receiverMap_;  // created by enableReceiverMap()
+  std::vector<std::unique_ptr<LightDepthMaps>> lightMaps_;
+  std::vector<HostLight> hostLights_;
   WaterGrid waterGrid_;
-  glkit::Program geometry_, shadow_, lighting_, composite_, water_, tonemap_;
-  glkit::Buffer frameUniforms_;
+  glkit::Program geometry_, shadow_, lightShadow_, lighting_, composite_, water_, tonemap_;
+  glkit::Buffer frameUniforms_, lightUniforms_;
   glkit::VertexArray emptyVao_;
   glkit::Texture fogged_;  // RGBA16F: the frame after fog, plus the water surface
   glkit::Framebuffer foggedFbo_;

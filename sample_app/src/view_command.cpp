@@ -190,6 +190,8 @@ int runView(const Options& options) {
     settings.height = options.height;
     settings.waterResolution = options.waterResolution;
     auto renderer = Renderer::create(settings, scene, error);
+    // The start preset's lights (with --light) stay when keys switch presets.
+    if (renderer) renderer->setLights(state.preset.lights);
     auto plugin = renderer
                       ? PluginSetup::create(*renderer, options, /*benchmarkFloor=*/false, error)
                       : nullptr;

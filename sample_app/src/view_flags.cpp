@@ -22,6 +22,12 @@ bool resolveView(const Options& options, Preset& preset, std::string& error) {
     error = "unknown preset '" + options.preset + "' (known: " + known + ")";
     return false;
   }
+  if (preset.lights.size() + options.lights.size() > size_t(kMaxSceneLights)) {
+    error = "--light: the preset has " + std::to_string(preset.lights.size()) +
+            " light(s); with --light at most " + std::to_string(kMaxSceneLights) + " in all";
+    return false;
+  }
+  preset.lights.insert(preset.lights.end(), options.lights.begin(), options.lights.end());
   Camera& camera = preset.camera;
   if (options.cameraPosition) camera.position = *options.cameraPosition;
   if (options.cameraLookAt &&

@@ -25,7 +25,9 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     std::vector<float> radiance;
   };
 
-  Frame render(const char* presetName, double time, bool objectCaustics = true) {
+  // lights: the preset's point and spot lights (the torch's), or none.
+  Frame render(const char* presetName, double time, bool objectCaustics = true,
+               bool lights = true) {
     ocean::Preset preset;
     std::string known, error;
     EXPECT_TRUE(ocean::findPreset(presetName, preset, known));
@@ -37,6 +39,7 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     auto renderer = ocean::Renderer::create(settings, sampletest::defaultScene(), error);
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
+    if (lights) renderer->setLights(preset.lights);
     ocean::Options options;
     options.objectCaustics = objectCaustics;
     auto plugin = ocean::PluginSetup::create(*renderer, options, false, error);
@@ -84,6 +87,47 @@ TEST_P(SampleRender, ObjectCausticsOnlyAddLight) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, SampleRender,
-                         ::testing::Values("seabed", "sunward", "above", "waterline"));
+                         ::testing::Values("seabed", "sunward", "above", "waterline", "torch"));
+
+class SampleTorch : public SampleRender {};
+
+// Issue 18: the torch preset's spot light lights the sand itself (the renderer's own direct
+// light, shadowed) and the plugin adds the glass sphere's caustic of it only inside the
+// sphere's shadow: where the added light is bright, the torch's direct light is gone.
+TEST_F(SampleTorch, CausticLiesInsideTheSphereShadow) {
+  const Frame on = render("torch", 0.0, true);
+  const Frame off = render("torch", 0.0, false);
+  const Frame dark = render("torch", 0.0, false, false);
+  ASSERT_EQ(on.radiance.size(), off.radiance.size());
+  ASSERT_EQ(dark.radiance.size(), off.radiance.size());
+  const size_t pixels = on.radiance.size() / 4;
+  std::vector<double> caustic(pixels), direct(pixels);
+  double causticPeak = 0.0, directPeak = 0.0, lowest = 0.0;
+  for (size_t i = 0; i < pixels; ++i) {
+    caustic[i] = double(on.radiance[4 * i + 1]) - double(off.radiance[4 * i + 1]);
+    direct[i] = double(off.radiance[4 * i + 1]) - double(dark.radiance[4 * i + 1]);
+    causticPeak = std::max(causticPeak, caustic[i]);
+    directPeak = std::max(directPeak, direct[i]);
+    lowest = std::min(lowest, caustic[i]);
+  }
+  // The sphere's focus, far brighter than the brass ring's reflection (which lands in the
+  // torch's direct light, as a reflection does).
+  double directThere = 0.0;
+  size_t focus = 0;
+  for (size_t i = 0; i < pixels; ++i) {
+    if (caustic[i] < 0.25 * causticPeak) continue;
+    directThere = std::max(directThere, direct[i]);
+    ++focus;
+  }
+  std::printf(
+      "torch: direct light peak %.4f, caustic peak %.4f over %zu pixels (>= 1/4 of it), "
+      "where the direct light is at most %.4f\n",
+      directPeak, causticPeak, focus, directThere);
+  EXPECT_GT(directPeak, 0.0);
+  EXPECT_GT(causticPeak, 0.5 * directPeak);  // a focus: brighter than the light it refills
+  EXPECT_GT(focus, 4u);
+  EXPECT_LT(directThere, 0.05 * directPeak);
+  EXPECT_GE(lowest, -1e-5);
+}
 
 }  // namespace

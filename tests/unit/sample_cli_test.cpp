@@ -259,6 +259,40 @@ TEST_F(SampleCli, CameraAndSunValuesAreChecked) {
   EXPECT_FALSE(fs::exists(dir_ / "seq_0000.png"));
 }
 
+// Issue 18: --light is checked field by field before any GL work, naming the field.
+TEST_F(SampleCli, LightValuesAreChecked) {
+  expectRejected("--light lamp:0,-5,0:10", "the type must be point or spot");
+  expectRejected("--light point:0,-5:10", "the position must be X,Y,Z");
+  expectRejected("--light point:nan,-5,0:10", "the position");
+  expectRejected("--light point:0,-5,0:-1", "the intensity must be I or R,G,B");
+  expectRejected("--light point:0,-5,0:1,2", "the intensity");
+  expectRejected("--light point:0,-5,0:10:-2", "the range must be in [0, 1e6]");
+  expectRejected("--light point:0,-5,0", "expected point:X,Y,Z:I[:RANGE]");
+  expectRejected("--light spot:0,-5,0:0,0,0:10:40", "the direction must be DX,DY,DZ, not all 0");
+  expectRejected("--light spot:0,-5,0:0,-1,0:10:0", "the cone angle must be in (0, 180)");
+  expectRejected("--light spot:0,-5,0:0,-1,0:10:180", "the cone angle");
+  expectRejected("--light spot:0,-5,0:0,-1,0:10:40:1.5", "the cone softness must be in [0, 1]");
+  expectRejected("--light spot:0,-5,0:0,-1,0:10:40:0.2:inf", "the range");
+  std::string five;
+  for (int i = 0; i < 5; ++i) five += " --light point:0,-5,0:10";
+  expectRejected(five, "at most 4 lights");
+  std::string four;
+  for (int i = 0; i < 4; ++i) four += " --light point:0,-5,0:10";
+  expectRejected("--preset torch" + four, "at most 4 in all");
+}
+
+TEST_F(SampleCli, RenderWithLightsWritesAnImage) {
+  const fs::path out = dir_ / "torch.png";
+  const RunResult result = runSample(
+      "render --width 64 --height 36 --water-resolution 16 --preset torch --light "
+      "point:1,-8,1:20 --light spot:0,-6,3:0,-1,-1:50:30:0:5 --out " +
+          out.string(),
+      dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  EXPECT_TRUE(result.stderrText.empty()) << result.stderrText;
+  EXPECT_TRUE(fs::exists(out));
+}
+
 // Parse errors exit 2 (as before CLI11), failures of the command itself 1; one line each.
 TEST_F(SampleCli, ExitCodesAndOneLineErrors) {
   RunResult result = runSample("render --width", dir_);
