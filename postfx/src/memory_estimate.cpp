@@ -34,7 +34,7 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
     t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
     // The half-resolution lookups (the TileIrradiance model's only): RG16F, irradiance and
     // distance.
-    if (frame.caustics.model == CausticsModel::TileIrradiance &&
+    if (passes.caustics && frame.caustics.model == CausticsModel::TileIrradiance &&
         frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
       t.tile += std::uint64_t((width + 1) / 2) * std::uint64_t((height + 1) / 2) * 4;
   }
