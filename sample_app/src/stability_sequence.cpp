@@ -64,6 +64,9 @@ postfx::FrameDesc passFrameDesc(const postfx::FrameDesc& host, StabilityPass pas
   if (pass == StabilityPass::PhysicalCaustics)
     frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
   frame.godRays.enabled = pass == StabilityPass::GodRays;
+  // The god rays' dense reference (reference::renderGodRayReference) marches seed 002's factor:
+  // the RayDeviation model's god rays (the other models' read their irradiance field).
+  if (pass == StabilityPass::GodRays) frame.caustics.model = postfx::CausticsModel::RayDeviation;
   frame.objectCaustics.settings.enabled = isObjectCaustics(pass);
   frame.objectCaustics.settings.temporalFilter = pass == StabilityPass::FilteredObjectCaustics;
   if (!isObjectCaustics(pass)) frame.objectCaustics.casterCount = 0;
