@@ -25,7 +25,13 @@ std::string number(double value);
 // The range as a message prints it, "[0, 1e6]".
 template <typename T>
 std::string rangeText(Range<T> r) {
-  return "[" + number(double(r.min)) + ", " + number(double(r.max)) + "]";
+  // Appended, not "[" + string: GCC 12 warns falsely (-Wrestrict) on that operator+.
+  std::string text = "[";
+  text += number(double(r.min));
+  text += ", ";
+  text += number(double(r.max));
+  text += "]";
+  return text;
 }
 // Whether the value (every component of a vector) lies in the range; NaN never does.
 template <typename T>

@@ -159,7 +159,7 @@ TEST_F(PostfxGodRaysFieldTest, FlatWaterGivesTheUnmodulatedShafts) {
       peak = std::max(peak, double(unmodulated[i].g));
       for (int c = 0; c < 3; ++c)
         // RGBA16F irradiance: ~11 bits.
-        ASSERT_NEAR(field[i][c], unmodulated[i][c], 2e-3 * unmodulated[i][c] + 1e-7)
+        ASSERT_NEAR(field[i][c], unmodulated[i][c], 2e-3f * unmodulated[i][c] + 1e-7f)
             << "pixel " << i << " channel " << c;
     }
     EXPECT_GT(peak, 1e-3) << "the test must see god rays";
@@ -253,7 +253,9 @@ TEST_F(PostfxGodRaysFieldTest, NoLightAboveWaterOrOnSkyFiniteAndBounded) {
         }
       }
     }
-    if (resolution == postfx::GodRayResolution::Full) EXPECT_GT(lit, spec.width * spec.height / 10);
+    if (resolution == postfx::GodRayResolution::Full) {
+      EXPECT_GT(lit, spec.width * spec.height / 10);
+    }
   }
   glDeleteTextures(1, &water);
 }

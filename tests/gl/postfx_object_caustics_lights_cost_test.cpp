@@ -192,8 +192,8 @@ TEST_F(PostfxObjectCausticsLightsCostTest, CostPerLightAgainstAFairFloorIsLinear
     std::vector<double> floorMs, lightMs;
     // The light's view of the sphere, as the floor's caster clip (its size, not its math,
     // sets the floor's cost).
-    const glm::mat4 clip =
-        glm::mat4(glm::scale(glm::dmat4(1.0), glm::dvec3(disk / 0.5, disk / 0.5, 0.1)));
+    const glm::mat4 clip = glm::mat4(
+        glm::scale(glm::dmat4(1.0), glm::dvec3(double(disk) / 0.5, double(disk) / 0.5, 0.1)));
     for (int f = 0; f < frames; ++f) {
       ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
       floorMs.push_back(floor.run(mesh, clip, host.scene.spec().width, host.scene.spec().height));

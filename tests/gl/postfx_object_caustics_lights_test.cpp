@@ -63,7 +63,7 @@ TEST_F(PostfxObjectCausticsLightsTest, ThinPaneGivesTheInverseSquare) {
   const GlMesh cube = makeCubeMesh(1.0);
   auto fx = makeLightContext(1);
   const postfx::ObjectCausticsSettings s = sizedSettings(128, 256);
-  const double t = 1.0 - shared::fresnelDielectric(1.0f, 1.5f);
+  const double t = 1.0 - double(shared::fresnelDielectric(1.0f, 1.5f));
   const double transmitted = t * t;
   for (double d : {1.0, 2.0, 5.0, 10.0}) {
     SCOPED_TRACE(d);
@@ -105,7 +105,7 @@ TEST_F(PostfxObjectCausticsLightsTest, UnderWaterTheLightIsAbsorbedAlongItsPath)
     ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
     ASSERT_EQ(postfx::stats(*fx).lightSkip[0], postfx::LightSkip::None);
     const LightMap map(postfx::testing::lightCausticMap(*fx), position);
-    const double t = 1.0 - shared::fresnelDielectric(1.0f, 1.5f / frame.water.ior);
+    const double t = 1.0 - double(shared::fresnelDielectric(1.0f, 1.5f / frame.water.ior));
     const glm::dvec3 expected = t * t * glm::exp(-glm::dvec3(frame.water.absorption) * d);
     double measured[3] = {};
     const int c = map.size / 2;
@@ -146,7 +146,7 @@ TEST_F(PostfxObjectCausticsLightsTest, SpotConeCutsTheLightWhereItSays) {
     // Along the centre row, outward on both sides: where the irradiance falls through half of
     // the axis value (interpolated), as an angle from the axis.
     const int c = map.size / 2;
-    const double expected = 15.0 * (1.0 - 0.5 * softness);
+    const double expected = 15.0 * (1.0 - 0.5 * double(softness));
     for (int side : {-1, 1}) {
       double edgeAngle = -1.0;
       for (int i = 0; i < c - 1; ++i) {
@@ -161,7 +161,7 @@ TEST_F(PostfxObjectCausticsLightsTest, SpotConeCutsTheLightWhereItSays) {
         }
       }
       std::printf("softness %.1f, side %+d: half irradiance at %.3f deg (expected %.3f)\n",
-                  softness, side, edgeAngle, expected);
+                  double(softness), side, edgeAngle, expected);
       EXPECT_NEAR(edgeAngle, expected, 0.02 * expected);
     }
     // Nothing beyond the outer edge and the splats' reach: the sprite's corner, 3 sigma along
@@ -262,7 +262,7 @@ TEST_F(PostfxObjectCausticsLightsTest, SphereFluxMatchesFresnelAndAbsorption) {
     const double sinI = std::min(u * std::sin(alpha) / radius, 1.0);
     const double cosI = std::sqrt(1.0 - sinI * sinI);
     const double sinT = sinI / ior, cosT = std::sqrt(1.0 - sinT * sinT);
-    const double t = 1.0 - shared::fresnelDielectric(float(cosI), float(ior));
+    const double t = 1.0 - double(shared::fresnelDielectric(float(cosI), float(ior)));
     const glm::dvec3 kept = t * t * glm::exp(-absorption * (2.0 * radius * cosT));
     expected += kept * (2.0 * kPi * std::sin(alpha) * alphaMax / steps);
   }

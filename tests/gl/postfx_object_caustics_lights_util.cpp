@@ -29,8 +29,9 @@ LightReceiverMap::LightReceiverMap(const glm::dvec3& position, const glm::dvec3&
       const glm::dvec3 hit = position + d * t;
       if (planeHalf > 0.0 && (std::abs(hit.x) > planeHalf || std::abs(hit.z) > planeHalf)) continue;
       const glm::dvec4 clip = worldToLightClip * glm::dvec4(hit, 1.0);
-      const double depth = clip.z / clip.w;
-      if (depth >= 0.0 && depth < 1.0) texels[static_cast<size_t>(y) * size + x] = float(depth);
+      const double windowDepth = clip.z / clip.w;
+      if (windowDepth >= 0.0 && windowDepth < 1.0)
+        texels[static_cast<size_t>(y) * size + x] = float(windowDepth);
     }
   }
   glCreateTextures(GL_TEXTURE_2D, 1, &depth);
