@@ -142,7 +142,9 @@ Result ensureTileIrradiance(Context& context, const FrameDesc& frame, const deta
                                                         plan.physical, variants.caustics, error);
     if (r != Result::Ok) return r;
   }
-  if (plan.godRays)
+  // The WavefrontAreaRatio model's god rays read its window (and seed 002's factor beyond it):
+  // the tile field runs in its frames only to continue the seabed's window.
+  if (plan.godRays && !plan.physical)
     return context.godRays.ensureTileProgram(layout.groups, layout.cascadeMask, variants.godRays,
                                              error);
   return Result::Ok;

@@ -64,6 +64,21 @@ bool denseFieldMarch(const postfx::CreateDesc& create, postfx::FrameDesc frame,
   return ok;
 }
 
+// One report row: a god-ray march's time and its error against the dense march.
+Row godRayRow(const char* method, int samples, const PassRun& run,
+              const std::vector<double>& dense) {
+  const ErrorStats stats = compareWithReference(flatten(run.image), dense);
+  Row row;
+  row.pass = "god_rays";
+  row.method = method;
+  row.setting = std::to_string(samples) + " samples";
+  row.medianMs = run.medianMs;
+  row.floorMs = run.floorMs;
+  row.relativeRmse = stats.relativeRmse;
+  row.correlation = stats.correlation;
+  return row;
+}
+
 // Rows for the god rays of the TileIrradiance model (their light the seabed caustics' field),
 // against that model's dense march.
 bool measureFieldGodRays(const postfx::CreateDesc& create, postfx::FrameDesc frame,
@@ -104,16 +119,7 @@ bool measureFieldGodRays(const postfx::CreateDesc& create, postfx::FrameDesc fra
       PassRun run;
       if (!runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames, run, error))
         return false;
-      const ErrorStats stats = compareWithReference(flatten(run.image), dense);
-      Row row;
-      row.pass = "god_rays";
-      row.method = variant.method;
-      row.setting = std::to_string(samples) + " samples";
-      row.medianMs = run.medianMs;
-      row.floorMs = run.floorMs;
-      row.relativeRmse = stats.relativeRmse;
-      row.correlation = stats.correlation;
-      rows.push_back(row);
+      rows.push_back(godRayRow(variant.method, samples, run, dense));
     }
   }
   return true;
@@ -181,16 +187,7 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
       if (!runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames, run, error,
                    variant.sampling))
         return false;
-      const ErrorStats stats = compareWithReference(flatten(run.image), dense);
-      Row row;
-      row.pass = "god_rays";
-      row.method = variant.method;
-      row.setting = std::to_string(samples) + " samples";
-      row.medianMs = run.medianMs;
-      row.floorMs = run.floorMs;
-      row.relativeRmse = stats.relativeRmse;
-      row.correlation = stats.correlation;
-      rows.push_back(row);
+      rows.push_back(godRayRow(variant.method, samples, run, dense));
     }
   }
   return measureFieldGodRays(create, frame, target, settings, rows, note, error);
