@@ -169,11 +169,12 @@ postfx::SunShadowMap ReceiverMap::desc() const {
 }
 
 LightReceiverMap::LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis,
-                                   double fovDegrees, double planeY, int sizeIn, double far)
+                                   double fovDegrees, double planeY, int sizeIn, double far,
+                                   double near, double planeHalf)
     : size(sizeIn) {
   const glm::dvec3 a = glm::normalize(axis);
   const glm::dvec3 up = std::abs(a.y) > 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
-  worldToLightClip = glm::perspectiveRH_ZO(glm::radians(fovDegrees), 1.0, 0.05, far) *
+  worldToLightClip = glm::perspectiveRH_ZO(glm::radians(fovDegrees), 1.0, near, far) *
                      glm::lookAtRH(position, position + a, up);
   const glm::dmat4 inverse = glm::inverse(worldToLightClip);
   std::vector<float> texels(static_cast<size_t>(size) * size, 1.0f);
@@ -184,9 +185,13 @@ LightReceiverMap::LightReceiverMap(const glm::dvec3& position, const glm::dvec3&
       const glm::dvec3 d = glm::dvec3(b) / b.w - position;
       if (std::abs(d.y) < 1e-12) continue;
       const double t = (planeY - position.y) / d.y;
-      if (t <= 0.0 || t > 1.0) continue;
-      const glm::dvec4 clip = worldToLightClip * glm::dvec4(position + d * t, 1.0);
-      texels[static_cast<size_t>(y) * size + x] = static_cast<float>(clip.z / clip.w);
+      if (t <= 0.0 || t > 1.0) continue;  // behind the light or past the far plane
+      const glm::dvec3 hit = position + d * t;
+      if (planeHalf > 0.0 && (std::abs(hit.x) > planeHalf || std::abs(hit.z) > planeHalf)) continue;
+      const glm::dvec4 clip = worldToLightClip * glm::dvec4(hit, 1.0);
+      const double windowDepth = clip.z / clip.w;
+      if (windowDepth >= 0.0)  // not nearer than the near plane
+        texels[static_cast<size_t>(y) * size + x] = static_cast<float>(windowDepth);
     }
   }
   glCreateTextures(GL_TEXTURE_2D, 1, &depth);

@@ -58,14 +58,16 @@ class ReceiverMap {
   int size = 0;
 };
 
-// Receiver depth map of the plane y = planeY seen from a point or spot light at `position`:
-// perspective along unit `axis` over a square of full angle `fovDegrees`, near 0.05 m, far
-// `far` m, forward [0, 1] depth (DepthConvention::ForwardZeroToOne), GL_DEPTH_COMPONENT32F,
-// computed in double. Texels whose ray misses the plane stay at the far plane.
+// Receiver depth map of the plane y = planeY (within +-planeHalf in x and z; 0: unbounded) seen
+// from a point or spot light at `position`: perspective along unit `axis` over a square of full
+// angle `fovDegrees`, near `near` m, far `far` m, forward [0, 1] depth
+// (DepthConvention::ForwardZeroToOne), GL_DEPTH_COMPONENT32F, computed in double. Texels whose
+// ray misses the plane between the near and far planes stay at the far plane.
 class LightReceiverMap {
  public:
   LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis, double fovDegrees,
-                   double planeY, int size, double far = 100.0);
+                   double planeY, int size, double far = 100.0, double near = 0.05,
+                   double planeHalf = 0.0);
   ~LightReceiverMap();
   LightReceiverMap(const LightReceiverMap&) = delete;
   LightReceiverMap& operator=(const LightReceiverMap&) = delete;

@@ -6,52 +6,6 @@
 
 namespace postfxtest {
 
-LightReceiverMap::LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis,
-                                   double halfDegrees, double planeY, int size, double planeHalf) {
-  const glm::dvec3 a = glm::normalize(axis);
-  const glm::dvec3 up = std::abs(a.y) > 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
-  const double farPlane = 1e4 + 10.0 * std::abs(position.y - planeY);
-  const double nearPlane = 1e-3;
-  const glm::dmat4 view = glm::lookAtRH(position, position + a, up);
-  const glm::dmat4 projection =
-      glm::perspectiveRH_ZO(glm::radians(2.0 * halfDegrees), 1.0, nearPlane, farPlane);
-  worldToLightClip = projection * view;
-  const glm::dmat4 inverse = glm::inverse(worldToLightClip);
-  std::vector<float> texels(static_cast<size_t>(size) * size, 1.0f);
-  for (int y = 0; y < size; ++y) {
-    for (int x = 0; x < size; ++x) {
-      const double nx = (x + 0.5) / size * 2.0 - 1.0, ny = (y + 0.5) / size * 2.0 - 1.0;
-      glm::dvec4 far = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
-      const glm::dvec3 d = glm::normalize(glm::dvec3(far) / far.w - position);
-      if (!(std::abs(d.y) > 1e-12)) continue;
-      const double t = (planeY - position.y) / d.y;
-      if (!(t > nearPlane)) continue;
-      const glm::dvec3 hit = position + d * t;
-      if (planeHalf > 0.0 && (std::abs(hit.x) > planeHalf || std::abs(hit.z) > planeHalf)) continue;
-      const glm::dvec4 clip = worldToLightClip * glm::dvec4(hit, 1.0);
-      const double windowDepth = clip.z / clip.w;
-      if (windowDepth >= 0.0 && windowDepth < 1.0)
-        texels[static_cast<size_t>(y) * size + x] = float(windowDepth);
-    }
-  }
-  glCreateTextures(GL_TEXTURE_2D, 1, &depth);
-  glTextureStorage2D(depth, 1, GL_DEPTH_COMPONENT32F, size, size);
-  glTextureSubImage2D(depth, 0, 0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
-}
-
-LightReceiverMap::~LightReceiverMap() {
-  glDeleteTextures(1, &depth);
-}
-
-postfx::SunShadowMap LightReceiverMap::desc() const {
-  postfx::SunShadowMap s;
-  s.depth = {depth, GL_DEPTH_COMPONENT32F};
-  s.worldToLightClip = worldToLightClip;
-  s.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
-  s.bias = 0.05f;
-  return s;
-}
-
 LightMap::LightMap(const postfx::testing::LightCausticMap& map, const glm::dvec3& lightPosition)
     : size(map.size), clipInverse(glm::inverse(map.worldToMapClip)), light(lightPosition) {
   const size_t texels = size_t(size) * size_t(size);

@@ -3,8 +3,11 @@
 // seen from a light (perspective), the light's caustic map read back, and what lands on a plane.
 #include <epoxy/gl.h>
 
+#include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
+
+#include <object_caustics_scene.h>
 
 #include <postfx/postfx.h>
 #include <postfx/testing.h>
@@ -13,20 +16,16 @@
 
 namespace postfxtest {
 
-// The plane y = planeY (within +-planeHalf in x and z; 0: unbounded) seen from a light at
-// `position` looking along `axis`, perspective over a square of half-angle halfDegrees:
-// GL_DEPTH_COMPONENT32F, ForwardZeroToOne. Deleted with the object.
-class LightReceiverMap {
+// The reference's receiver map of the plane y = planeY (within +-planeHalf in x and z; 0:
+// unbounded) seen from a light at `position` looking along `axis`, over a square of half-angle
+// halfDegrees, its depth range wide enough for any of these tests' planes (near 1 mm).
+class LightReceiverMap : public ocean::reference::LightReceiverMap {
  public:
   LightReceiverMap(const glm::dvec3& position, const glm::dvec3& axis, double halfDegrees,
-                   double planeY, int size, double planeHalf = 0.0);
-  ~LightReceiverMap();
-  LightReceiverMap(const LightReceiverMap&) = delete;
-  LightReceiverMap& operator=(const LightReceiverMap&) = delete;
-  postfx::SunShadowMap desc() const;
-
-  GLuint depth = 0;
-  glm::dmat4 worldToLightClip{1.0};
+                   double planeY, int texels, double planeHalf = 0.0)
+      : ocean::reference::LightReceiverMap(position, axis, 2.0 * halfDegrees, planeY, texels,
+                                           1e4 + 10.0 * std::abs(position.y - planeY), 1e-3,
+                                           planeHalf) {}
 };
 
 // A light's caustic map read back (testing::lightCausticMap), with what it takes to place its
