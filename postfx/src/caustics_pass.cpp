@@ -9,6 +9,7 @@
 #include <glkit/texture.h>
 
 #include "shader_library.h"
+#include "tile_irradiance_pass.h"
 
 // bindState binds the G-buffer's three samplers in one call.
 static_assert(POSTFX_UNIT_NORMAL == POSTFX_UNIT_DEPTH + 1 &&
@@ -104,12 +105,7 @@ Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced
   variant = 1 + (physical ? 2 * kTileVariants : reduced ? kTileVariants : 0) + index;
   glkit::Program& program = tileCaustics_[variant - 1];
   if (program.id() != 0) return Result::Ok;
-  // The TileIrradiance model alone compiles the window's lookup out.
-  std::string tileDefines =
-      std::string(physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n") +
-      "#define POSTFX_TILE_IRRADIANCE 1\n"
-      "#define POSTFX_TILE_GROUPS " +
-      std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " + std::to_string(mask) + "\n";
+  std::string tileDefines = tileVariantDefines(g, mask, physical);
   tileDefines += reduced ? "#define POSTFX_TILE_REDUCED 1\n" : "#define POSTFX_TILE_REDUCED 0\n";
   const std::string defines = shaderDefines(desc_);
   if (!reduced)

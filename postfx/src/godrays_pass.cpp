@@ -4,6 +4,7 @@
 
 #include "godrays_constants.h"
 #include "host_target.h"
+#include "tile_irradiance_pass.h"
 
 #include "shader_library.h"
 
@@ -38,12 +39,8 @@ Result GodRaysPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
   const int index = kTileMasks * (g - 1) + (cascadeMask & (kTileMasks - 1));
   variant = 1 + index;
   if (tileFull_[index].id() != 0 && tileReduced_[index].id() != 0) return Result::Ok;
-  // The window model's lookup is compiled out: the two models never run together.
-  const std::string tile =
-      "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n"
-      "#define POSTFX_TILE_IRRADIANCE 1\n#define POSTFX_TILE_GROUPS " +
-      std::to_string(g) + "\n#define POSTFX_TILE_CASCADES " +
-      std::to_string(cascadeMask & (kTileMasks - 1)) + "\n";
+  // The TileIrradiance model's god rays only: a physical frame's read its window.
+  const std::string tile = tileVariantDefines(g, cascadeMask & (kTileMasks - 1), false);
   const glkit::ShaderStage march{GL_FRAGMENT_SHADER, "postfx/godrays.frag"};
   return buildPrograms(defines_,
                        {{tileFull_[index],

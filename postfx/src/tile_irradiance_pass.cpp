@@ -13,6 +13,16 @@
 
 namespace postfx::detail {
 
+std::string tileVariantDefines(int groups, int cascadeMask, bool physical) {
+  std::string d = physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n";
+  d += "#define POSTFX_TILE_IRRADIANCE 1\n#define POSTFX_TILE_GROUPS ";
+  d += std::to_string(groups);
+  d += "\n#define POSTFX_TILE_CASCADES ";
+  d += std::to_string(cascadeMask);
+  d += "\n";
+  return d;
+}
+
 bool tileIrradianceActive(const FrameDesc& frame) {
   // WavefrontAreaRatio continues its window with this field (validation guarantees that model
   // its feature).

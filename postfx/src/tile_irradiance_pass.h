@@ -45,6 +45,12 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame);
 // TileIrradiancePass::allocatedBytes() must agree (a test checks).
 std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l);
 
+// The #defines of a program variant that reads the tile irradiance (caustics or god rays):
+// `groups` RGBA fetches per cascade (1 or 2), the cascades in `cascadeMask` (bit c: cascade c),
+// and, unless `physical` (the WavefrontAreaRatio window continued by the field), the window's
+// lookup compiled out.
+std::string tileVariantDefines(int groups, int cascadeMask, bool physical);
+
 // Whether the frame computes the tile irradiance: the TileIrradiance model, and the
 // WavefrontAreaRatio model beyond its window. It needs a water texture and a sun above the
 // horizon; otherwise nothing is computed (TileIrradiance then adds no light).
