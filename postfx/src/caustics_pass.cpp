@@ -135,7 +135,7 @@ void CausticsPass::ensureReduced(int width, int height) {
   if (reducedTexture_ && reducedWidth_ == w && reducedHeight_ == h) return;
   reducedTexture_.reset();  // the old size goes first: never two of them allocated at once
   reducedTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.tile_lookups");
-  glTextureStorage2D(reducedTexture_.id(), 1, GL_RG16F, w, h);
+  glTextureStorage2D(reducedTexture_.id(), 1, GL_R32UI, w, h);  // two halves
   reducedWidth_ = w;
   reducedHeight_ = h;
   if (!reducedFramebuffer_)

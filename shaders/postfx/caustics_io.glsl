@@ -18,6 +18,7 @@ layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
 layout(binding = POSTFX_UNIT_SHADOW) uniform sampler2DShadow sunShadowMap;
 #endif
 
+#ifndef POSTFX_LOOKUP_TARGET  // tile_irradiance_reduced.frag writes its own target
 layout(location = 0) out vec4 outLight;  // blended ONE, ONE into the host's HDR target
 #if POSTFX_RAW_OUTPUT
 layout(location = 1) out float outRaw;   // not blended
@@ -33,6 +34,7 @@ void emitNothing() {
   discard;
 #endif
 }
+#endif  // POSTFX_LOOKUP_TARGET
 
 // log2 of the metres a pixel covers on the surface at camera-relative p (normal n, `distance`
 // from the camera), widened where the surface is seen at a grazing angle, plus the water

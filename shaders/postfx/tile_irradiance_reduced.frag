@@ -6,6 +6,7 @@
 // the second cascade's coordinate depending on the first's); the light they give varies on the
 // scale of the caustic network, several pixels wide, which a bilinear upsample keeps.
 // Compile-time switches: those of caustics.frag's TileIrradiance variant.
+#define POSTFX_LOOKUP_TARGET 1
 #include "postfx/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "shared/postfx_caustics.h"
@@ -14,6 +15,10 @@
 #include "shared/postfx_tile_irradiance.h"
 #include "postfx/tile_irradiance_lookup.glsl"
 #include "postfx/tile_irradiance_upsample.glsl"
+
+// Irradiance and distance as two halves of one texel: the upsample gathers a pixel's four
+// texels, both values, with one fetch.
+layout(location = 0) out uint outLookup;
 
 void main() {
   ivec2 pixel = min(ivec2(gl_FragCoord.xy) * 2, ivec2(u.viewport.zw) - 1);
@@ -33,5 +38,5 @@ void main() {
       e = tileIrradianceAt(p, depthBelow, surfaceLogFootprint(n, p, distance) + 1.0);
     }
   }
-  outLight = vec4(e, distance, 0.0, 0.0);
+  outLookup = packHalf2x16(vec2(e, distance));
 }
