@@ -183,7 +183,7 @@ const std::array kValueOptions{
                   error = "--caustics-lookup must be full or half" + got(text);
                   return false;
                 }},
-    ValueOption{"--god-rays-resolution", "RES", "full, half (default) or quarter", false,
+    ValueOption{"--god-rays-resolution", "RES", "full, half or quarter (default)", false,
                 [](std::string_view text, Options& o, std::string& error) {
                   const std::array<std::pair<std::string_view, int>, 3> names{
                       {{"full", 1}, {"half", 2}, {"quarter", 4}}};
