@@ -57,7 +57,9 @@ postfx::FrameDesc passFrameDesc(const postfx::FrameDesc& host, StabilityPass pas
   postfx::FrameDesc frame = host;
   frame.target = {target, GL_RGBA32F};
   frame.caustics.enabled = isCaustics(pass);
-  if (pass == StabilityPass::TileCaustics)
+  // Settings are validated whether or not their pass runs: a host on the physical model would
+  // otherwise ask the other passes' contexts (created without Feature::PhysicalCaustics) for it.
+  if (pass == StabilityPass::TileCaustics || !isCaustics(pass))
     frame.caustics.model = postfx::CausticsModel::TileIrradiance;
   if (pass == StabilityPass::RayDeviationCaustics)
     frame.caustics.model = postfx::CausticsModel::RayDeviation;

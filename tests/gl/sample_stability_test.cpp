@@ -49,7 +49,7 @@ TEST(AddedLightChange, KnownAnswers) {
 // The seabed preset (sand, rock, the glass sphere and bottle in view) at a test's size.
 class StabilityFixture : public testsupport::GlTest {
  protected:
-  void makeHost(int width, int height) {
+  void makeHost(int width, int height, const ocean::Options& options = {}) {
     ocean::Preset preset;
     std::string known, error;
     ASSERT_TRUE(ocean::findPreset("seabed", preset, known));
@@ -60,7 +60,7 @@ class StabilityFixture : public testsupport::GlTest {
     settings.shadowMapSize = 512;
     renderer_ = ocean::Renderer::create(settings, sampletest::defaultScene(), error);
     ASSERT_TRUE(renderer_) << error;
-    plugin_ = ocean::PluginSetup::create(*renderer_, ocean::Options{}, false, error);
+    plugin_ = ocean::PluginSetup::create(*renderer_, options, false, error);
     ASSERT_TRUE(plugin_) << error;
     host_ = std::make_unique<ocean::StabilityHost>(ocean::StabilityHost{
         *renderer_, *plugin_, sampletest::defaultScene(), {preset.camera, preset.sun, 12.5}});
@@ -152,6 +152,22 @@ INSTANTIATE_TEST_SUITE_P(EveryPass, PassStability,
                                            StabilityPass::ObjectCaustics,
                                            StabilityPass::FilteredObjectCaustics),
                          passTestName);
+
+// Each pass is isolated from the host's own frame, whose settings are validated even for passes
+// that do not run: a host on the physical model must not hand that model to the other passes'
+// contexts, created without Feature::PhysicalCaustics (the report's stability section aborted).
+TEST_F(StabilityFixture, EveryPassRunsWhateverTheHostsCausticsModel) {
+  ocean::Options options;
+  options.physicalCaustics = true;
+  makeHost(64, 36, options);
+  if (HasFatalFailure()) return;
+  for (const StabilityPass pass :
+       {StabilityPass::TileCaustics, StabilityPass::RayDeviationCaustics,
+        StabilityPass::PhysicalCaustics, StabilityPass::GodRays, StabilityPass::ObjectCaustics,
+        StabilityPass::FilteredObjectCaustics})
+    EXPECT_GT(passChange(pass, ocean::stillMotion(), 2).meanLight, 0.0)
+        << ocean::stabilityPassName(pass);
+}
 
 class ReferenceStability : public StabilityFixture {};
 
