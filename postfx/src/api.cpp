@@ -142,11 +142,11 @@ Result ensureTileIrradiance(Context& context, const FrameDesc& frame, const deta
                                                         plan.physical, variants.caustics, error);
     if (r != Result::Ok) return r;
   }
-  // The WavefrontAreaRatio model's god rays read its window (and seed 002's factor beyond it):
-  // the tile field runs in its frames only to continue the seabed's window.
-  if (plan.godRays && !plan.physical)
-    return context.godRays.ensureTileProgram(layout.groups, layout.cascadeMask, variants.godRays,
-                                             error);
+  // The shafts read the seabed's light: the tile field, or the WavefrontAreaRatio window
+  // continued by it.
+  if (plan.godRays)
+    return context.godRays.ensureTileProgram(layout.groups, layout.cascadeMask, plan.physical,
+                                             variants.godRays, error);
   return Result::Ok;
 }
 

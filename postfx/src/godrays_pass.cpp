@@ -33,14 +33,14 @@ Result GodRaysPass::init(const std::string& defines, std::string& error) {
   return Result::Ok;
 }
 
-Result GodRaysPass::ensureTileProgram(int groups, int cascadeMask, int& variant,
+Result GodRaysPass::ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
                                       std::string& error) {
   const int g = groups > 1 ? 2 : 1;
-  const int index = kTileMasks * (g - 1) + (cascadeMask & (kTileMasks - 1));
+  const int index =
+      (physical ? kTileVariants : 0) + kTileMasks * (g - 1) + (cascadeMask & (kTileMasks - 1));
   variant = 1 + index;
   if (tileFull_[index].id() != 0 && tileReduced_[index].id() != 0) return Result::Ok;
-  // The TileIrradiance model's god rays only: a physical frame's read its window.
-  const std::string tile = tileVariantDefines(g, cascadeMask & (kTileMasks - 1), false);
+  const std::string tile = tileVariantDefines(g, cascadeMask & (kTileMasks - 1), physical);
   const glkit::ShaderStage march{GL_FRAGMENT_SHADER, "postfx/godrays.frag"};
   return buildPrograms(defines_,
                        {{tileFull_[index],

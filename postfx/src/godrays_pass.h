@@ -20,16 +20,18 @@ class GodRaysPass {
  public:
   // Builds the programs (with the caustics pass's #defines) and GL objects (DSA: binds nothing).
   Result init(const std::string& defines, std::string& error);
-  // The march that reads the TileIrradiance model's field (the seabed caustics' light) for
-  // `groups` RGBA fetches per cascade and the cascades in `cascadeMask`, as
-  // CausticsPass::ensureTileProgram. Built the first time a frame needs it; returns its index for
-  // draw (>= 1).
-  Result ensureTileProgram(int groups, int cascadeMask, int& variant, std::string& error);
+  // The march that reads the tile irradiance (the seabed caustics' light) for `groups` RGBA
+  // fetches per cascade and the cascades in `cascadeMask`, as CausticsPass::ensureTileProgram:
+  // the TileIrradiance model's, or with `physical` the WavefrontAreaRatio window's continued by
+  // the tile beyond it (as the seabed is). Built the first time a frame needs it; returns its
+  // index for draw (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
+                           std::string& error);
 
   // Attaches the host target, sizes the reduced-resolution texture when used, uploads the block.
   Result prepare(const FrameDesc& frame, int width, int height, const shared::GodRaysBlock& block,
                  std::string& error);
-  // tileVariant: 0 for the RayDeviation / WavefrontAreaRatio march, else ensureTileProgram's.
+  // tileVariant: 0 for the RayDeviation march, else ensureTileProgram's.
   void draw(const FrameDesc& frame, int width, int height, int tileVariant = 0);
   void finish();  // lets go of the host's texture
 
@@ -38,9 +40,10 @@ class GodRaysPass {
 
   std::string defines_;
   glkit::Program full_, reduced_, upsample_;
-  // TileIrradiance marches, full and reduced: [groups - 1][cascade mask], as CausticsPass's.
+  // Tile-field marches, full and reduced: [physical][groups - 1][cascade mask].
   static constexpr int kTileMasks = 1 << kMaxCascades;
-  glkit::Program tileFull_[2 * kTileMasks], tileReduced_[2 * kTileMasks];
+  static constexpr int kTileVariants = 2 * kTileMasks;
+  glkit::Program tileFull_[2 * kTileVariants], tileReduced_[2 * kTileVariants];
   glkit::Framebuffer framebuffer_, reducedFramebuffer_;
   glkit::Buffer uniformBuffer_;
   glkit::Texture reducedTexture_;

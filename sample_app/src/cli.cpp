@@ -159,7 +159,9 @@ const std::vector<CommandSpec>& commands() {
        Command::Compare,
        "plugin frame against traced frame: error, correlation, side by side",
        "P: render --out P.exr, R: reference --out R.exr, B: render --no-caustics --out B.exr "
-       "(same preset, size and time). Over R's lit underwater pixels it prints the relative "
+       "(the same scene options for all three, --caustics-model too: each model lights its god "
+       "rays from its own field, and shafts that differ would count as caustic light). Over R's "
+       "lit underwater pixels it prints the relative "
        "RMSE and Pearson correlation of the added light (P - B against R - B) and writes OUT "
        "(default compare.png): the three frames above, the two added lights and their "
        "difference below (red: plugin brighter, blue: darker).",

@@ -15,9 +15,10 @@
 // Light field (omega in S): the seabed caustics' own where the frame's model has one, so that
 // the shafts line up with the pattern on the seabed below them: the TileIrradiance variant
 // (POSTFX_TILE_IRRADIANCE, built like caustics.frag's) reads the tile irradiance at the sample's
-// depth; the WavefrontAreaRatio model (POSTFX_PHYSICAL, window on) its depth layers inside the
-// window, blended to the seed-002 factor outside it exactly as the seabed is. RayDeviation keeps
-// seed 002's factor from the water slopes at each sample.
+// depth; the WavefrontAreaRatio model (POSTFX_TILE_IRRADIANCE with POSTFX_PHYSICAL) its depth
+// layers inside the window, blended to the tile irradiance beyond it exactly as the seabed is.
+// RayDeviation (no POSTFX_TILE_IRRADIANCE) keeps seed 002's factor from the water slopes at each
+// sample.
 // Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_REDUCED (write the reduced-
 // size texture: always written, alpha = the pixel's distance for the depth-aware upsample).
 #include "postfx/godrays_common.glsl"
@@ -51,8 +52,14 @@ vec3 sunSource(vec3 p, float t) {
   // coarser mip flattens the slopes before the nonlinear omega and brightens the mean (+10 % at
   // half resolution in the reference test); the upsample is what averages the texels.
   float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
-#ifdef POSTFX_TILE_IRRADIANCE
+#if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_PHYSICAL
   float omega = tileIrradianceAt(p, depthBelow, logFootprint);
+#elif defined(POSTFX_TILE_IRRADIANCE)
+  // The window, continued beyond it by the tile irradiance, as caustics.frag lights the seabed.
+  float physicalWeight = 0.0;
+  float windowLight = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
+  float farLight = physicalWeight < 1.0 ? tileIrradianceAt(p, depthBelow, logFootprint) : 1.0;
+  float omega = mix(farLight, windowLight, physicalWeight);
 #else
   float physicalWeight = 0.0;
 #if POSTFX_PHYSICAL

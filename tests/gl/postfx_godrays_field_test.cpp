@@ -137,6 +137,46 @@ TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsLineUpWithTheSeabedPattern) {
   EXPECT_GT(field, slopes + 0.5);
 }
 
+// Beyond the physical window the seabed is lit by the tile field, and so are the shafts: with a
+// window of 1 m around the camera nearly every sample lies beyond it, and the physical model's
+// shafts are the tile model's (they were seed 002's factor, which does not match that seabed).
+TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsBeyondTheWindowAreTheTileFields) {
+  postfxtest::SceneSpec spec;
+  spec.width = 96;
+  spec.height = 54;
+  spec.sphere = false;
+  spec.lookDirection = {0.0, -0.3, -1.0};
+  postfxtest::Scene scene(spec);
+  const GLuint water = postfxtest::makeWaterTexture(64, 3, 0.01);
+  auto fx =
+      postfxtest::makeContext(Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics);
+  postfx::FrameDesc frame = fieldFrame(scene, water, postfx::CausticsModel::TileIrradiance);
+  frame.caustics.enabled = false;
+  frame.godRays.sampleCount = 16;
+  frame.caustics.windowSize = 1.0f;
+  const std::vector<glm::vec4> tile = render(*fx, scene, frame);
+  frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
+  const std::vector<glm::vec4> physical = render(*fx, scene, frame);
+  frame.caustics.model = postfx::CausticsModel::RayDeviation;
+  const std::vector<glm::vec4> seed002 = render(*fx, scene, frame);
+  double level = 0.0, fromTile = 0.0, seed002FromTile = 0.0;
+  for (size_t i = 0; i < tile.size(); ++i) {
+    level += double(tile[i].g);
+    fromTile += std::abs(double(physical[i].g) - double(tile[i].g));
+    seed002FromTile += std::abs(double(seed002[i].g) - double(tile[i].g));
+  }
+  ASSERT_GT(level, 1e-3 * double(tile.size())) << "the test must see god rays";
+  std::printf(
+      "physical model's shafts, 1 m window: mean |difference| from the tile model's %.4f "
+      "of its light (seed 002's %.4f)\n",
+      fromTile / level, seed002FromTile / level);
+  RecordProperty("physical_vs_tile", std::to_string(fromTile / level));
+  RecordProperty("seed002_vs_tile", std::to_string(seed002FromTile / level));
+  EXPECT_LT(fromTile / level, 0.02);
+  EXPECT_GT(seed002FromTile / level, 5.0 * fromTile / level);
+  glDeleteTextures(1, &water);
+}
+
 // Flat water: the field is 1 everywhere, as seed 002's factor is, so both give the same shafts.
 TEST_F(PostfxGodRaysFieldTest, FlatWaterGivesTheUnmodulatedShafts) {
   postfxtest::SceneSpec spec;

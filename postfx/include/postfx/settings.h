@@ -185,7 +185,7 @@ inline constexpr Range<float> kMaxMarchDistanceRange{0.1f, 1e5f};   // m
 // Single scattering of the sun along each view ray under the water. The light at each sample is
 // the caustics model's field at the sample's depth (CausticsSettings::model): TileIrradiance
 // (the default) reads the tile irradiance the seabed caustics read, WavefrontAreaRatio its
-// window's depth layers and, outside the window, seed 002's factor as the seabed does there;
+// window's depth layers and, beyond the window, the tile irradiance, as the seabed does there;
 // RayDeviation keeps seed 002's factor from the water slopes at each sample (shafts that do not
 // line up with the seabed's pattern). Flat water gives the unmodulated shafts with every model.
 // Seed 002's factor is at most 1, so a pixel gets at most E * intensity * sigma_s / sigma_t; an
