@@ -58,8 +58,9 @@ void GodRaysPass::ensureReduced(int w, int h) {
   if (reducedTexture_ && reducedWidth_ == w && reducedHeight_ == h) return;
   reducedTexture_.reset();  // the old size goes first: never two of them allocated at once
   reducedTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.god_rays.reduced");
-  // RGBA16F rather than R11F_G11F_B10F: alpha carries each texel's distance for the upsample.
-  glTextureStorage2D(reducedTexture_.id(), 1, GL_RGBA16F, w, h);
+  // Light and distance as four halves (godrays.frag's outReduced): 8 bytes a texel, as RGBA16F,
+  // but the upsample gathers a pixel's four texels with two fetches instead of four.
+  glTextureStorage2D(reducedTexture_.id(), 1, GL_RG32UI, w, h);
   glNamedFramebufferTexture(reducedFramebuffer_.id(), GL_COLOR_ATTACHMENT0, reducedTexture_.id(),
                             0);
   reducedWidth_ = w;

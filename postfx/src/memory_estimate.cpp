@@ -25,7 +25,8 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
   if (hasFeature(create.features, testing::RawCausticOutput)) t.raw = pixels * 2;  // R16F
   if (passes.godRays && frame.godRays.resolution != GodRayResolution::Full)
     t.godRays = static_cast<std::uint64_t>(godRayReducedSize(width, frame.godRays.resolution)) *
-                std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) * 8;  // RGBA16F
+                std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) *
+                8;  // RG32UI: four halves
   // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
   // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window.
   if (passes.physical)

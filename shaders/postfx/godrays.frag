@@ -21,6 +21,9 @@
 // sample.
 // Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_REDUCED (write the reduced-
 // size texture: always written, alpha = the pixel's distance for the depth-aware upsample).
+#if POSTFX_GODRAYS_REDUCED
+#define POSTFX_LOOKUP_TARGET 1  // writes outReduced, not the host's target
+#endif
 #include "postfx/godrays_common.glsl"
 #include "shared/postfx_caustics.h"
 #include "shared/postfx_godrays.h"
@@ -79,9 +82,15 @@ vec3 sunSource(vec3 p, float t) {
   return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);
 }
 
+#if POSTFX_GODRAYS_REDUCED
+// Light and distance as four halves in two words: the upsample gathers each word of a pixel's
+// four texels with one fetch (a CPU rasteriser pays per fetch).
+layout(location = 0) out uvec2 outReduced;
+#endif
+
 void emit(vec3 light, float pixelDistance) {
 #if POSTFX_GODRAYS_REDUCED
-  outLight = vec4(light, pixelDistance);
+  outReduced = uvec2(packHalf2x16(light.rg), packHalf2x16(vec2(light.b, pixelDistance)));
 #else
   if (!(light.r + light.g + light.b > 0.0)) discard;  // saves the blend; drops NaN too
   outLight = vec4(light, 0.0);

@@ -161,8 +161,8 @@ struct CausticsSettings {
 
 namespace postfx {
 
-// Resolution the god-ray march runs at. Below full, each texel of a plugin-owned RGBA16F texture
-// marches the ray of the top-left pixel of its block (its distance kept in alpha), and a
+// Resolution the god-ray march runs at. Below full, each texel of a plugin-owned texture (8 bytes:
+// light and distance as halves) marches the ray of the top-left pixel of its block, and a
 // depth-aware (bilateral) upsample adds the result into the target; shafts are soft, so the
 // lost detail costs little accuracy (the report measures it) for 1/4 or 1/16 of the march.
 enum class GodRayResolution {
