@@ -166,7 +166,14 @@ void main() {
   vec3 gamma = vec3(weights.r > 0.0 ? weighted.r / weights.r : 0.0,
                     weights.g > 0.0 ? weighted.g / weights.g : 0.0,
                     weights.b > 0.0 ? weighted.b / weights.b : 0.0);
-  vec3 light = g.lightScale.rgb * godRayInscatter(g.scattering.rgb, g.extinction.rgb,
-                                                  tEnd - tStart) * gamma;
-  emit(all(lessThan(abs(light), vec3(1e30))) ? light : vec3(0.0), pixelDistance);
+  vec3 unitLight = godRayInscatter(g.scattering.rgb, g.extinction.rgb, tEnd - tStart) * gamma;
+  vec3 light = g.lightScale.rgb * unitLight;
+  bool finite = all(lessThan(abs(light), vec3(1e30)));
+#if POSTFX_GODRAYS_REDUCED
+  // Per unit of the sun's light (at most the field's clamp, whatever the host's units, which
+  // halves hold without overflow); the upsample scales it.
+  emit(finite ? unitLight : vec3(0.0), pixelDistance);
+#else
+  emit(finite ? light : vec3(0.0), pixelDistance);
+#endif
 }

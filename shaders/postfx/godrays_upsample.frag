@@ -45,7 +45,8 @@ void main() {
     sum += w * tap;
     weightSum += w;
   }
-  vec3 light = weightSum > 1e-4 ? sum / weightSum : best;
-  if (!(light.r + light.g + light.b > 0.0)) discard;
+  // The march stored light per unit of the sun's (godrays.frag).
+  vec3 light = g.lightScale.rgb * (weightSum > 1e-4 ? sum / weightSum : best);
+  if (!(light.r + light.g + light.b > 0.0) || !all(lessThan(light, vec3(1e30)))) discard;
   outLight = vec4(light, 0.0);
 }

@@ -330,6 +330,34 @@ TEST_F(PostfxGodRaysTest, ReducedResolutionIsCloseToFull) {
   glDeleteTextures(1, &water);
 }
 
+// The light is linear in the sun's irradiance at every resolution, in whatever units the host
+// lights its frame: the reduced march stores light per unit of the sun's, so a host in
+// photometric units (1e5 lux and more) does not overflow the half floats it is kept in.
+TEST_F(PostfxGodRaysTest, LightIsLinearInTheSunsIrradianceAtEveryResolution) {
+  postfxtest::Scene scene(smallSpec(), GL_RGBA32F);
+  const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
+  auto fx = postfxtest::makeContext(Feature::GodRays);
+  postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3, {}, -0.5);
+  for (GodRayResolution resolution : kResolutions) {
+    frame.godRays.resolution = resolution;
+    frame.sun.irradiance = glm::vec3(1.0f);
+    const std::vector<glm::vec4> unit = render(*fx, scene, frame);
+    constexpr float kScale = 1e6f;  // 1e6 x the unit light: far past a half's 65504
+    frame.sun.irradiance = glm::vec3(kScale);
+    const std::vector<glm::vec4> bright = render(*fx, scene, frame);
+    double level = 0.0, worst = 0.0;
+    for (size_t i = 0; i < unit.size(); ++i) {
+      level = std::max(level, double(unit[i].g));
+      ASSERT_TRUE(std::isfinite(bright[i].g)) << "pixel " << i;
+      worst = std::max(worst, std::abs(double(bright[i].g) / double(kScale) - double(unit[i].g)));
+    }
+    ASSERT_GT(level, 1e-3) << "the test must see god rays";
+    // float rounding of the scale only: the same halves are stored for both.
+    EXPECT_LE(worst, 1e-5 * level) << "1/" << int(resolution);
+  }
+  glDeleteTextures(1, &water);
+}
+
 TEST_F(PostfxGodRaysTest, BadSettingsAreRefusedWithStateUntouched) {
   postfxtest::Scene scene(smallSpec());
   const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
