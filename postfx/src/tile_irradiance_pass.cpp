@@ -79,7 +79,10 @@ Result TileIrradiancePass::init(const std::string& defines, std::string& error) 
                          {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}}},
                         {resolve_,
                          "postfx.caustics_tile.resolve",
-                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}}},
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}},
+                        {downsample_,
+                         "postfx.caustics_tile.downsample",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_downsample.comp"}}}},
                        error);
 }
 
@@ -170,10 +173,24 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
                        static_cast<float>(l.slot[c] * l.groups), clamp);
     glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.groups));
   }
-  // The mip chain is built from the image writes; the caustics pass then samples it.
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
-                  GL_SHADER_STORAGE_BARRIER_BIT);
-  glGenerateTextureMipmap(texture_.id());
+  // The mip chain from the image writes, level by level (each dispatch reads the level the one
+  // before wrote); the caustics pass then samples it. The unit is the one the caustics pass
+  // binds the field to next (GlStateGuard restores it); texelFetch ignores its sampler.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  const GLuint downsample = downsample_.id();
+  glUseProgram(downsample);
+  glBindTextureUnit(POSTFX_UNIT_TILE_IRRADIANCE, texture_.id());
+  glBindSampler(POSTFX_UNIT_TILE_IRRADIANCE, 0);  // whatever the host left there: none
+  const int levels = glkit::mipLevelCount(l.resolution);
+  for (int level = 1; level < levels; ++level) {
+    const int side = std::max(l.resolution >> level, 1);
+    glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), level, GL_TRUE, 0,
+                       GL_WRITE_ONLY, GL_RGBA16F);
+    glProgramUniform2i(downsample, 0, side, level - 1);
+    const GLuint groups = static_cast<GLuint>((side + 7) / 8);
+    glDispatchCompute(groups, groups, static_cast<GLuint>(textureLayers_));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
 }
 
 }  // namespace postfx::detail

@@ -74,7 +74,7 @@ class TileIrradiancePass {
   std::uint64_t allocatedBytes() const;
 
  private:
-  glkit::Program scatter_, resolve_;
+  glkit::Program scatter_, resolve_, downsample_;
   glkit::Texture texture_;
   glkit::Buffer accumulators_;
   int textureResolution_ = 0, textureLayers_ = 0;
