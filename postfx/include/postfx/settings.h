@@ -24,8 +24,8 @@ enum class CausticsModel {
   WavefrontAreaRatio,
   // True caustic irradiance everywhere, at about the cost of RayDeviation: every frame each
   // cascade that can focus light within maxReceiverDepth refracts its own periodic tile onto
-  // tileDepthLayers depths (2 small compute dispatches, tileResolution^2 texels, independent of
-  // the screen). A pixel multiplies one filtered lookup per cascade, each moved by the coarser
+  // tileDepthLayers depths (small compute dispatches: scatter, resolve and one per mip level,
+  // tileResolution^2 texels, independent of the screen). A pixel multiplies one filtered lookup per cascade, each moved by the coarser
   // cascades' refraction (their light lands displaced). Any receiver shape and distance, no
   // window, no edge; mip-filtered, so far pixels get their footprint's mean light.
   TileIrradiance,
