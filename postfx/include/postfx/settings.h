@@ -51,7 +51,7 @@ inline constexpr Range<int> kTileResolutionRange{32, 1024};  // and a power of t
 // distance (the lookup is filtered over the footprint).
 enum class CausticsLookupResolution {
   Full = 1,  // every pixel
-  // Every other pixel in x and y into a plugin-owned RG16F texture (irradiance and distance),
+  // Every other pixel in x and y into a plugin-owned texture (irradiance and distance as halves),
   // blended back per pixel by bilinear weight times distance similarity, so no light bleeds
   // across silhouettes; everything else (normal, shadow, albedo, absorption) stays per pixel.
   Half = 2,
