@@ -25,9 +25,10 @@ enum class CausticsModel {
   // True caustic irradiance everywhere, at about the cost of RayDeviation: every frame each
   // cascade that can focus light within maxReceiverDepth refracts its own periodic tile onto
   // tileDepthLayers depths (small compute dispatches: scatter, resolve and one per mip level,
-  // tileResolution^2 texels, independent of the screen). A pixel multiplies one filtered lookup per cascade, each moved by the coarser
-  // cascades' refraction (their light lands displaced). Any receiver shape and distance, no
-  // window, no edge; mip-filtered, so far pixels get their footprint's mean light.
+  // tileResolution^2 texels, independent of the screen). A pixel multiplies one filtered lookup
+  // per cascade, each moved by the coarser cascades' refraction (their light lands displaced).
+  // Any receiver shape and distance, no window, no edge; mip-filtered, so far pixels get their
+  // footprint's mean light.
   TileIrradiance,
   Seed002 [[deprecated("named for a paper: use RayDeviation")]] = RayDeviation,
 };
