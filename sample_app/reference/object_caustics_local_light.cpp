@@ -46,7 +46,6 @@ LocalCausticReference traceCap(const LocalLightSource& light, const glm::dvec3& 
   const double solidAngle = 2.0 * kPi * (1.0 - cosMax);
   const double rayAngle = solidAngle / (double(n) * n);
   const int size = bins.size;
-  const double u2 = glm::dot(bins.axisU, bins.axisU), v2 = glm::dot(bins.axisV, bins.axisV);
   const glm::dvec3 normal = glm::normalize(glm::cross(bins.axisU, bins.axisV));
   const double area = binArea(bins);
   LocalCausticReference out;
@@ -79,11 +78,9 @@ LocalCausticReference traceCap(const LocalLightSource& light, const glm::dvec3& 
         const double along = glm::dot(bins.origin - d->point, normal) / facing;
         if (!(along > 0.0)) continue;
         const glm::dvec3 landed = flux * glm::exp(-absorption * along);
-        const glm::dvec3 rel = d->point + d->direction * along - bins.origin;
-        const double tu = glm::dot(rel, bins.axisU) / u2 * size;
-        const double tv = glm::dot(rel, bins.axisV) / v2 * size;
-        if (tu >= 0.0 && tv >= 0.0 && tu < size && tv < size) {
-          local.irradiance[size_t(tv) * size + size_t(tu)] += landed / area;
+        const std::ptrdiff_t bin = binIndex(bins, d->point + d->direction * along);
+        if (bin >= 0) {
+          local.irradiance[size_t(bin)] += landed / area;
           local.fluxInBins += landed;
         } else {
           local.fluxOutside += landed;
@@ -141,6 +138,15 @@ glm::dvec3 binPoint(const ReceiverBins& bins, const glm::dvec2& bin) {
 
 double binArea(const ReceiverBins& bins) {
   return glm::length(glm::cross(bins.axisU, bins.axisV)) / (double(bins.size) * bins.size);
+}
+
+std::ptrdiff_t binIndex(const ReceiverBins& bins, const glm::dvec3& point) {
+  const glm::dvec3 rel = point - bins.origin;
+  const double size = bins.size;
+  const double tu = glm::dot(rel, bins.axisU) / glm::dot(bins.axisU, bins.axisU) * size;
+  const double tv = glm::dot(rel, bins.axisV) / glm::dot(bins.axisV, bins.axisV) * size;
+  if (!(tu >= 0.0 && tv >= 0.0 && tu < size && tv < size)) return -1;
+  return std::ptrdiff_t(tv) * bins.size + std::ptrdiff_t(tu);
 }
 
 SphereRay traceThroughSphere(const SphereCaster& s, const glm::dvec3& origin,

@@ -8,6 +8,7 @@
 // the light). The inverse-square law is not applied per ray: it comes out of binning the flux of
 // a fixed solid angle onto the plane's area. Deterministic: stratified rays (equal solid angle
 // per stratum) with a fixed seed, rows split over 2 threads.
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -48,6 +49,8 @@ ReceiverBins facingBins(const glm::dvec3& light, const glm::dvec3& axis, double 
 glm::dvec3 binPoint(const ReceiverBins& bins, const glm::dvec2& bin);
 // Area of one bin (m^2).
 double binArea(const ReceiverBins& bins);
+// The row-major index of the bin that `point` (on the bins' plane) falls in, or -1 outside them.
+std::ptrdiff_t binIndex(const ReceiverBins& bins, const glm::dvec3& point);
 
 // One ray through the glass sphere (SphereCaster's ior, absorption, transmission, tint and
 // thinWalled; roughness and dispersion are not traced here). `origin` outside the sphere, or

@@ -9,6 +9,7 @@
 #include <random>
 #include <thread>
 
+#include "object_caustics_local_light.h"
 #include "object_caustics_optics.h"
 
 namespace ocean::reference {
@@ -53,6 +54,7 @@ CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfS
   const int size = map.size;
   const double u2 = glm::dot(map.axisU, map.axisU), v2 = glm::dot(map.axisV, map.axisV);
   const double texelArea = std::sqrt(u2 * v2) / (double(size) * size);
+  const ReceiverBins bins{map.origin, map.axisU, map.axisV, size};  // the map's texels
   CausticReference out;
   out.size = size;
   out.irradiance.assign(static_cast<size_t>(size) * size, glm::dvec3(0.0));
@@ -75,12 +77,9 @@ CausticReference trace(const TraceFn& fn, const glm::dvec3& centre, double halfS
         local.interceptedArea += cell * cell;
         const glm::dvec3 flux = l->flux * (cell * cell);
         if (flux == glm::dvec3(0.0)) continue;
-        const glm::dvec3 rel = l->point - map.origin;
-        const double tu = glm::dot(rel, map.axisU) / u2 * size;
-        const double tv = glm::dot(rel, map.axisV) / v2 * size;
-        if (tu >= 0.0 && tv >= 0.0 && tu < size && tv < size) {
-          local.irradiance[static_cast<size_t>(tv) * size + static_cast<size_t>(tu)] +=
-              flux / texelArea;
+        const std::ptrdiff_t bin = binIndex(bins, l->point);
+        if (bin >= 0) {
+          local.irradiance[static_cast<size_t>(bin)] += flux / texelArea;
           local.fluxInMap += flux;
         } else {
           local.fluxOutside += flux;
