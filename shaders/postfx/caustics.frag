@@ -84,14 +84,7 @@ void main() {
   vec3 omega = vec3(tileIrradianceAt(p, depthBelow, logFootprint));
 #endif
 #elif defined(POSTFX_TILE_IRRADIANCE)
-  // The window, continued beyond its edge by the tile irradiance: the same physics (irradiance
-  // of the refracted sun, in the same units) without a window, so the fade band blends two
-  // estimates of one light rather than two looks. Outside the window only the tile is read,
-  // inside only the window (a dynamic branch: GPUs skip the other's fetches).
-  float physicalWeight = 0.0;
-  float windowLight = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
-  float farLight = physicalWeight < 1.0 ? tileIrradianceAt(p, depthBelow, logFootprint) : 1.0;
-  vec3 omega = vec3(mix(farLight, windowLight, physicalWeight));
+  vec3 omega = vec3(windowOrTileIrradiance(p, depthBelow, logFootprint));
 #else
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;

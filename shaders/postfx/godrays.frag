@@ -58,11 +58,7 @@ vec3 sunSource(vec3 p, float t) {
 #if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_PHYSICAL
   float omega = tileIrradianceAt(p, depthBelow, logFootprint);
 #elif defined(POSTFX_TILE_IRRADIANCE)
-  // The window, continued beyond it by the tile irradiance, as caustics.frag lights the seabed.
-  float physicalWeight = 0.0;
-  float windowLight = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
-  float farLight = physicalWeight < 1.0 ? tileIrradianceAt(p, depthBelow, logFootprint) : 1.0;
-  float omega = mix(farLight, windowLight, physicalWeight);
+  float omega = windowOrTileIrradiance(p, depthBelow, logFootprint);  // as the seabed is lit
 #else
   float physicalWeight = 0.0;
 #if POSTFX_PHYSICAL

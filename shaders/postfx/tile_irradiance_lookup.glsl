@@ -59,4 +59,18 @@ float tileIrradianceAt(vec3 p, float depthBelow, float logFootprint) {
 #endif
   return e;
 }
+
+#if POSTFX_PHYSICAL
+// The WavefrontAreaRatio window's irradiance, continued beyond its edge by the tile irradiance:
+// the same physics (irradiance of the refracted sun, in the same units) without a window, so
+// the fade band blends two estimates of one light rather than two looks. Outside the window
+// only the tile is read, inside only the window (a dynamic branch: GPUs skip the other's
+// fetches). The seabed caustics and the god rays both light from it.
+float windowOrTileIrradiance(vec3 p, float depthBelow, float logFootprint) {
+  float physicalWeight = 0.0;
+  float windowLight = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
+  float farLight = physicalWeight < 1.0 ? tileIrradianceAt(p, depthBelow, logFootprint) : 1.0;
+  return mix(farLight, windowLight, physicalWeight);
+}
+#endif
 #endif
