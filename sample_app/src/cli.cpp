@@ -164,8 +164,13 @@ const std::vector<CommandSpec>& commands() {
        "lit underwater pixels it prints the relative "
        "RMSE and Pearson correlation of the added light (P - B against R - B) and writes OUT "
        "(default compare.png): the three frames above, the two added lights and their "
-       "difference below (red: plugin brighter, blue: darker).",
-       {"--plugin", "--reference", "--base", "--out"},
+       "difference below (red: plugin brighter, blue: darker). With F (--flat F.exr: "
+       "render --caustics-model ray-deviation --tau 0, flat water's frame) it also compares "
+       "the pattern alone: each added light divided by F - B where F - B is at least a quarter "
+       "of its median (what both share, albedo, N.L, shadow, absorption, divides out), and "
+       "the patterns' power per octave of period over one square patch (too soft, too sharp, "
+       "or a narrow peak: rings the trace lacks); a third row shows the two patterns.",
+       {"--plugin", "--reference", "--base", "--flat", "--out"},
        false,
        "compare.png",
        60,

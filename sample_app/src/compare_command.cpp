@@ -11,6 +11,7 @@
 #include "caustic_comparison.h"
 #include "commands.h"
 #include "image_output.h"
+#include "pattern_comparison.h"
 
 namespace ocean {
 namespace {
@@ -80,24 +81,52 @@ glm::vec3 toneMap(const glm::vec3& x) {
   return {srgbEncode(a.r), srgbEncode(a.g), srgbEncode(a.b)};
 }
 
+// The pattern-only agreement (reference::comparePatterns), a few lines.
+void printPattern(const reference::PatternComparison& p) {
+  std::printf(
+      "compare: pattern (added light / flat water's, %zu pixels with flat light >= 1/4 of its "
+      "median): correlation %.4f, relative RMSE %.4f; contrast (std/mean) plugin %.3f, "
+      "reference %.3f; p99 plugin %.3f, reference %.3f; mean plugin %.4f, reference %.4f\n",
+      p.pixels, p.correlation, p.relativeRmse, p.methodContrast, p.referenceContrast, p.methodP99,
+      p.referenceP99, p.methodMean, p.referenceMean);
+  const reference::PatternSpectrum& s = p.spectrum;
+  if (s.patchSize == 0) {
+    std::printf("compare: sharpness: no patch of 32x32 compared pixels\n");
+    return;
+  }
+  std::printf(
+      "compare: sharpness over the %dx%d patch at (%d, %d): plugin / reference power per "
+      "octave of period (pixels):",
+      s.patchSize, s.patchSize, s.patchX, s.patchY);
+  for (const reference::SpectrumOctave& o : s.octaves)
+    std::printf(" %g-%g: %.2f", o.minPeriodPixels, o.maxPeriodPixels, o.ratio);
+  std::printf("; 4-64 px %.2f (%s); largest narrow peak %.2f at %.1f px\n", s.fineRatio,
+              s.verdict.c_str(), s.peak, s.peakPeriodPixels);
+}
+
 }  // namespace
 
 int runCompare(const Options& options) {
   std::string error;
   if (!checkOutputPath(options.out, error)) return commandFailed(error);
-  ExrImage plugin, traced, base;
+  ExrImage plugin, traced, base, flat;
+  const bool withPattern = !options.flatImage.empty();
   if (!readExr("--plugin", options.pluginImage, plugin, error) ||
       !readExr("--reference", options.referenceImage, traced, error) ||
-      !readExr("--base", options.baseImage, base, error)) {
+      !readExr("--base", options.baseImage, base, error) ||
+      (withPattern && !readExr("--flat", options.flatImage, flat, error))) {
     return commandFailed(error);
   }
-  if (plugin.width != traced.width || plugin.height != traced.height ||
-      base.width != traced.width || base.height != traced.height) {
-    return commandFailed("the three images differ in size (plugin " + std::to_string(plugin.width) +
-                         "x" + std::to_string(plugin.height) + ", reference " +
-                         std::to_string(traced.width) + "x" + std::to_string(traced.height) +
-                         ", base " + std::to_string(base.width) + "x" +
-                         std::to_string(base.height) + ")");
+  auto sizeOf = [](const ExrImage& image) {
+    return std::to_string(image.width) + "x" + std::to_string(image.height);
+  };
+  auto sameSize = [&](const ExrImage& image) {
+    return image.width == traced.width && image.height == traced.height;
+  };
+  if (!sameSize(plugin) || !sameSize(base) || (withPattern && !sameSize(flat))) {
+    return commandFailed("the images differ in size (plugin " + sizeOf(plugin) + ", reference " +
+                         sizeOf(traced) + ", base " + sizeOf(base) +
+                         (withPattern ? ", flat " + sizeOf(flat) : std::string()) + ")");
   }
   const int litChannel = traced.channel("caustic.lit");
   if (litChannel < 0)
@@ -105,13 +134,16 @@ int runCompare(const Options& options) {
                          "' has no caustic.lit channel (write it with ocean_sample reference)");
   const int width = traced.width, height = traced.height;
   const size_t n = size_t(width) * size_t(height);
-  std::vector<double> methodLight(n), referenceLight(n);
+  std::vector<double> methodLight(n), referenceLight(n), flatLight(withPattern ? n : 0);
   std::vector<std::uint8_t> lit(n);
   for (size_t i = 0; i < n; ++i) {
     lit[i] = traced.pixels[i * size_t(traced.channels) + size_t(litChannel)] > 0.5f ? 1 : 0;
     methodLight[i] = luminance(rgb(plugin, i) - rgb(base, i));
     referenceLight[i] = luminance(rgb(traced, i) - rgb(base, i));
-    if (lit[i] && !(std::isfinite(methodLight[i]) && std::isfinite(referenceLight[i])))
+    if (withPattern) flatLight[i] = luminance(rgb(flat, i) - rgb(base, i));
+    const bool finite = std::isfinite(methodLight[i]) && std::isfinite(referenceLight[i]) &&
+                        (!withPattern || std::isfinite(flatLight[i]));
+    if (lit[i] && !finite)
       return commandFailed("a lit pixel of the inputs is NaN or infinite (pixel " +
                            std::to_string(i % size_t(width)) + ", " +
                            std::to_string(i / size_t(width)) + " from the top)");
@@ -119,6 +151,16 @@ int runCompare(const Options& options) {
   const reference::CausticComparison c =
       reference::compareAddedLight(methodLight, referenceLight, lit);
   if (c.pixels == 0) return commandFailed("no lit underwater pixel to compare");
+  reference::PatternComparison pattern;
+  if (withPattern) {
+    pattern =
+        reference::comparePatterns(methodLight, referenceLight, flatLight, lit, width, height);
+    if (pattern.pixels == 0)
+      return commandFailed("no lit underwater pixel has flat-water light in --flat '" +
+                           options.flatImage +
+                           "' (render it with --caustics-model ray-deviation "
+                           "--tau 0 and the same scene options)");
+  }
 
   // One scale for every added-light panel: the reference's 99th percentile over lit pixels.
   std::vector<double> litReference;
@@ -127,9 +169,12 @@ int runCompare(const Options& options) {
   const size_t k = (litReference.size() - 1) * 99 / 100;
   std::nth_element(litReference.begin(), litReference.begin() + long(k), litReference.end());
   const double scale = std::max(litReference[k], 1e-12);
+  const double patternScale = std::max(pattern.referenceP99, 1e-12);
 
-  // 3 x 2 panels, written bottom row first (GL order) as writeImage expects.
-  const int outWidth = 3 * width, outHeight = 2 * height;
+  // 3 x 2 panels (3 x 3 with the pattern), written bottom row first (GL order) as writeImage
+  // expects.
+  const int rows = withPattern ? 3 : 2;
+  const int outWidth = 3 * width, outHeight = rows * height;
   std::vector<uint8_t> rgba(size_t(outWidth) * size_t(outHeight) * 4, 255);
   auto put = [&](int panelX, int panelY, int x, int yTop, const glm::vec3& colour) {
     const int row = outHeight - 1 - (panelY * height + yTop);
@@ -137,26 +182,40 @@ int runCompare(const Options& options) {
     for (int ch = 0; ch < 3; ++ch)
       p[ch] = uint8_t(std::lround(255.0f * std::clamp(colour[ch], 0.0f, 1.0f)));
   };
-  auto grey = [&](double v) { return glm::vec3(srgbEncode(float(v / scale))); };
+  auto grey = [](double v, double s) { return glm::vec3(srgbEncode(float(v / s))); };
+  auto signedColour = [](double d, double s) {
+    const float v = float(d / s);
+    return glm::vec3(srgbEncode(v), 0.0f, srgbEncode(-v));
+  };
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
       put(0, 0, x, y, toneMap(glm::max(rgb(plugin, i), glm::vec3(0.0f))));
       put(1, 0, x, y, toneMap(glm::max(rgb(traced, i), glm::vec3(0.0f))));
       put(2, 0, x, y, toneMap(glm::max(rgb(base, i), glm::vec3(0.0f))));
-      put(0, 1, x, y, grey(methodLight[i]));
-      put(1, 1, x, y, grey(referenceLight[i]));
-      const float d = float((methodLight[i] - referenceLight[i]) / scale);
-      put(2, 1, x, y, glm::vec3(srgbEncode(d), 0.0f, srgbEncode(-d)));
+      put(0, 1, x, y, grey(methodLight[i], scale));
+      put(1, 1, x, y, grey(referenceLight[i], scale));
+      put(2, 1, x, y, signedColour(methodLight[i] - referenceLight[i], scale));
+      if (!withPattern) continue;
+      const bool compared = pattern.compared[i] != 0;
+      const double pm = pattern.methodPattern[i], pr = pattern.referencePattern[i];
+      put(0, 2, x, y, compared ? grey(pm, patternScale) : glm::vec3(0.0f));
+      put(1, 2, x, y, compared ? grey(pr, patternScale) : glm::vec3(0.0f));
+      put(2, 2, x, y, compared ? signedColour(pm - pr, patternScale) : glm::vec3(0.0f));
     }
   }
   if (!writeImage(options.out, outWidth, outHeight, rgba, nullptr, error))
     return commandFailed(error);
   std::printf(
       "compare: %zu lit underwater pixels: relative RMSE %.4f, correlation %.4f (added light, "
-      "luminance; mean plugin %.4g, reference %.4g); %s (top: plugin | reference | no "
-      "caustics; bottom: added light plugin | reference | difference)\n",
-      c.pixels, c.relativeRmse, c.correlation, c.methodMean, c.referenceMean, options.out.c_str());
+      "luminance; mean plugin %.4g, reference %.4g)\n",
+      c.pixels, c.relativeRmse, c.correlation, c.methodMean, c.referenceMean);
+  if (withPattern) printPattern(pattern);
+  std::printf(
+      "compare: %s (top: plugin | reference | no caustics; then added light plugin | "
+      "reference | difference%s)\n",
+      options.out.c_str(),
+      withPattern ? "; then the pattern (added light / flat water's) likewise" : "");
   return 0;
 }
 

@@ -317,6 +317,14 @@ const std::array kValueOptions{
                   o.baseImage = text;
                   return true;
                 }},
+    ValueOption{"--flat", "F.exr",
+                "flat water's frame (render --caustics-model ray-deviation --tau 0): adds the "
+                "pattern-only comparison",
+                false,
+                [](std::string_view text, Options& o, std::string&) {
+                  o.flatImage = text;
+                  return true;
+                }},
 };
 
 const std::array kFlagOptions{

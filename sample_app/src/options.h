@@ -63,7 +63,7 @@ struct Options {
   int maxBatches = 24;
   int threads = 2;
   // compare: the three frames (EXR) it reads
-  std::string pluginImage, referenceImage, baseImage;
+  std::string pluginImage, referenceImage, baseImage, flatImage;
 };
 
 inline constexpr int kMaxImageSide = 16384;

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <vector>
 
+#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
 #include "image_output.h"
@@ -23,6 +24,14 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+bool imageSize(const fs::path& path, int& width, int& height) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return false;
+  width = in->spec().width;
+  height = in->spec().height;
+  return true;
+}
 
 struct RunResult {
   int exitCode = -1;
@@ -525,6 +534,28 @@ TEST_F(SampleCli, ReferenceThenCompareWithItself) {
   EXPECT_NE(compared.stdoutText.find("relative RMSE 0.0000, correlation 1.0000"), std::string::npos)
       << compared.stdoutText;
   EXPECT_TRUE(fs::exists(side));
+  // With flat water's frame: the pattern alone, a third row in the side by side.
+  const fs::path flat = dir_ / "flat.exr", patternSide = dir_ / "pattern.png";
+  ASSERT_EQ(
+      runSample("render --caustics-model ray-deviation --tau 0" + size + "--out " + flat.string(),
+                dir_)
+          .exitCode,
+      0);
+  const RunResult pattern =
+      runSample("compare --plugin " + ref.string() + " --reference " + ref.string() + " --base " +
+                    base.string() + " --flat " + flat.string() + " --out " + patternSide.string(),
+                dir_);
+  ASSERT_EQ(pattern.exitCode, 0) << pattern.stderrText;
+  EXPECT_NE(pattern.stdoutText.find("correlation 1.0000, relative RMSE 0.0000"), std::string::npos)
+      << pattern.stdoutText;
+  // 64x36 holds no 32x32 patch of compared pixels: the spectrum says so rather than guess.
+  EXPECT_NE(pattern.stdoutText.find("sharpness: no patch"), std::string::npos)
+      << pattern.stdoutText;
+  int sideWidth = 0, sideHeight = 0, patternWidth = 0, patternHeight = 0;
+  ASSERT_TRUE(imageSize(side, sideWidth, sideHeight));
+  ASSERT_TRUE(imageSize(patternSide, patternWidth, patternHeight));
+  EXPECT_EQ(patternWidth, sideWidth);
+  EXPECT_GT(patternHeight, sideHeight) << "a third row";
 }
 
 // view's own flags are refused before a window would open: no display is needed for that.
