@@ -281,6 +281,8 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
                 " (it is normalised)");
   if (!within(sun.irradiance, kIrradianceRange))
     return fail("sun.irradiance must be in " + rangeText(kIrradianceRange));
+  if (!within(sun.angularDiameterDegrees, kSunAngularDiameterRange))
+    return fail("sun.angularDiameterDegrees must be in " + rangeText(kSunAngularDiameterRange));
 
   const WaterSurface& water = frame.water;
   if (!std::isfinite(water.level)) return fail("water.level is not finite");

@@ -1,4 +1,5 @@
 #include "frame_caustics_reference.h"
+#include "sun_disc.h"
 
 #include <algorithm>
 #include <chrono>
@@ -85,6 +86,7 @@ struct Frame {
   std::vector<double> radiusSquared;  // per pixel, 0 = not a receiver
   // Per pixel: how many pixels around a photon projected there can hold it in their kernel.
   std::vector<int> window;
+  SunDisc disc{glm::dvec3(0.0, 1.0, 0.0), 0.0};
 };
 
 // One cell's photons of one batch, splatted into `acc`.
@@ -111,16 +113,21 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
       const double u = corner.x + (a + random.nextUniform()) * step;
       const double v = corner.y + (b + random.nextUniform()) * step;
       SurfaceSample at;
-      const glm::dvec3 entry = entryPoint(f.water, f.sun, u, v, at);
+      glm::dvec3 sunRay = f.sun;
+      if (f.disc.angularRadius() > 0.0) {  // a point sun draws nothing: its rays stay as they were
+        const double d1 = random.nextUniform();
+        sunRay = f.disc.direction(d1, random.nextUniform());
+      }
+      const glm::dvec3 entry = entryPoint(f.water, sunRay, u, v, at);
       const glm::dvec3 normal = glm::normalize(glm::dvec3(-at.slopeX, 1.0, -at.slopeZ));
-      const double cosIncident = glm::dot(f.sun, normal);
+      const double cosIncident = glm::dot(sunRay, normal);
       if (!(cosIncident > 0.0)) continue;  // the back of a wave: no light enters here
-      const glm::dvec3 dir = refractSunRay(f.sun, at.slopeX, at.slopeZ, f.desc.ior);
+      const glm::dvec3 dir = refractSunRay(sunRay, at.slopeX, at.slopeZ, f.desc.ior);
       if (!(dir.y < 0.0)) continue;
       const double w =
           cellWeight * fresnelTransmittance(cosIncident, f.desc.ior) / f.flatTransmittance;
       const glm::dvec3 from(entry.x - r.camera.x, levelRelative + entry.y, entry.z - r.camera.z);
-      if (f.scene.boundsMax().y > from.y && f.scene.occluded(from, f.sun, 0.0, 1e30)) continue;
+      if (f.scene.boundsMax().y > from.y && f.scene.occluded(from, sunRay, 0.0, 1e30)) continue;
       RayHit hit;
       if (!f.scene.intersect(from, dir, 0.0, 1e30, hit)) continue;
       if (!(glm::dot(dir, hit.normal) < 0.0)) continue;  // a face turned away absorbs it
@@ -183,6 +190,7 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
 
   Frame f{water, scene, receivers, desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior), 1.0, {}, {}};
   f.flatTransmittance = fresnelTransmittance(sun.y, desc.ior);
+  f.disc = SunDisc(sun, desc.sunAngularRadius);
   f.radiusSquared.assign(count, 0.0);
 
   // Kernels, flat irradiance, lit mask and what each receiver needs from the launch.
@@ -190,7 +198,10 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   const double kernelPhotons = desc.kernelPhotonsPerBatch;
   const glm::dvec3 flatDown = -f.up;
   const glm::dvec2 drift(flatDown.x / -flatDown.y, flatDown.z / -flatDown.y);
-  const double slopeDrift = maxSlopeDrift(sun, desc.ior, water.maxSlope());
+  // The sun's disc moves a ray less than a slope of its angular radius would (the refraction
+  // shrinks it by 1/n): counted as one.
+  const double slopeDrift =
+      maxSlopeDrift(sun, desc.ior, water.maxSlope() + std::tan(desc.sunAngularRadius));
   const double heightDrift =
       (std::hypot(sun.x, sun.z) / sun.y + glm::length(drift)) * water.maxHeight();
   std::vector<LaunchNeed> needs;

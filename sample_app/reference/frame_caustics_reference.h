@@ -56,6 +56,9 @@ struct FrameTraceProgress {
 struct FrameTraceDesc {
   glm::dvec3 towardSun{0.0, 1.0, 0.0};  // unit vector toward the sun, y > 0
   double ior = 1.333;
+  // Angular radius of the sun's disc (radians, >= 0): each photon comes from a direction
+  // uniform over it (0: a point sun, every photon parallel).
+  double sunAngularRadius = 0.0;
   double kernelScale = 1.0;  // kernel radius in (area-matched) pixel footprints, > 0
   // Smallest kernel radius (m): near the camera a pixel-sized kernel would need photon
   // densities beyond any budget; caustic features are larger than this.

@@ -1,4 +1,5 @@
 #include "seabed_reference.h"
+#include "sun_disc.h"
 
 #include <algorithm>
 #include <chrono>
@@ -93,7 +94,9 @@ LaunchWindow launchWindow(const Surface& surface, const ReferenceDesc& desc,
                           const glm::dvec3& sun) {
   const double maxHeight = surface.maxHeight(), maxSlope = surface.maxSlope();
   const glm::dvec2 flatDrift = lateral(refractSunRay(sun, 0.0, 0.0, desc.ior));
-  const double slopeDrift = maxSlopeDrift(sun, desc.ior, maxSlope);
+  // The sun's disc tilts a ray less than a slope of its angular radius would: counted as one.
+  const double slopeDrift =
+      maxSlopeDrift(sun, desc.ior, maxSlope + std::tan(desc.sunAngularRadius));
   const glm::dvec2 binMin = desc.bins.origin;
   const glm::dvec2 binMax =
       binMin + desc.bins.size() * glm::dvec2(desc.bins.countX, desc.bins.countZ);
@@ -120,9 +123,12 @@ struct Tracer {
   double flatTransmittance;
   double maxHeight;
 
-  // Where the ray crossing the mean plane at (u, v) first meets the surface; false if never.
-  bool hitSurface(double u, double v, glm::dvec3& point, SurfaceSample& at) const {
-    point = sunRayHitsSurface(surface, sun, u, v, at);
+  SunDisc disc;
+
+  // Where the ray toward `ray` crossing the mean plane at (u, v) first meets the surface.
+  bool hitSurface(const glm::dvec3& ray, double u, double v, glm::dvec3& point,
+                  SurfaceSample& at) const {
+    point = sunRayHitsSurface(surface, ray, u, v, at);
     return true;
   }
 
@@ -153,13 +159,18 @@ struct Tracer {
     for (int column = 0; column < columns; ++column) {
       const double u = window.min.x + (column + random.nextUniform()) * cell.x;
       const double v = window.min.y + (row + random.nextUniform()) * cell.y;
+      glm::dvec3 ray = sun;
+      if (disc.angularRadius() > 0.0) {  // a point sun draws nothing: its rays stay as they were
+        const double d1 = random.nextUniform();
+        ray = disc.direction(d1, random.nextUniform());
+      }
       glm::dvec3 point;
       SurfaceSample at;
-      if (!hitSurface(u, v, point, at)) continue;
+      if (!hitSurface(ray, u, v, point, at)) continue;
       const glm::dvec3 normal = glm::normalize(glm::dvec3(-at.slopeX, 1.0, -at.slopeZ));
-      const double cosIncident = glm::dot(sun, normal);
+      const double cosIncident = glm::dot(ray, normal);
       if (!(cosIncident > 0.0)) continue;  // grazing the back of a wave: no light enters
-      const glm::dvec3 dir = refractSunRay(sun, at.slopeX, at.slopeZ, desc.ior);
+      const glm::dvec3 dir = refractSunRay(ray, at.slopeX, at.slopeZ, desc.ior);
       if (!(dir.y < 0.0)) continue;
       const double w = weight * fresnelTransmittance(cosIncident, desc.ior) / flatTransmittance;
       for (size_t r = 0; r < desc.receivers.size(); ++r) {
@@ -248,8 +259,12 @@ ReferenceResult traceSeabedCaustics(const Surface& surface, const ReferenceDesc&
     return result;
   const LaunchWindow window = launchWindow(surface, desc, sun);
   result.launchMargin = window.margin;
-  const Tracer tracer{surface, desc, sun, fresnelTransmittance(sun.y, desc.ior),
-                      surface.maxHeight()};
+  const Tracer tracer{surface,
+                      desc,
+                      sun,
+                      fresnelTransmittance(sun.y, desc.ior),
+                      surface.maxHeight(),
+                      SunDisc(sun, desc.sunAngularRadius)};
   const glm::dvec2 cell = desc.bins.size() / static_cast<double>(std::max(desc.raysPerBinSide, 1));
   const int columns = static_cast<int>(std::ceil((window.max.x - window.min.x) / cell.x));
   const int rows = static_cast<int>(std::ceil((window.max.y - window.min.y) / cell.y));

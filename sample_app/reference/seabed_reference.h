@@ -78,6 +78,9 @@ struct ReferenceDesc {
   glm::dvec3 towardSun{0.0, 1.0, 0.0};  // unit vector toward the sun, y > 0
   double ior = 1.333;
   double absorption = 0.0;  // Beer-Lambert coefficient per metre of in-water path, >= 0
+  // Angular radius of the sun's disc (radians, >= 0): each ray comes from a direction uniform
+  // over it (0: a point sun).
+  double sunAngularRadius = 0.0;
   BinGrid bins;
   std::vector<Receiver> receivers;
   double targetRelativeError = 0.01;  // stop when the median per-bin error is below this

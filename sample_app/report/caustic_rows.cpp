@@ -59,6 +59,7 @@ bool FlatSeabedComparison::prepare(const postfx::FrameDesc& hostFrame,
   desc_ = {};
   desc_.towardSun = glm::normalize(hostFrame.sun.direction);
   desc_.ior = hostFrame.water.ior;
+  desc_.sunAngularRadius = 0.5 * glm::radians(double(hostFrame.sun.angularDiameterDegrees));
   desc_.bins.origin = {camera.x - 0.5 * w * pixelX, camera.z - 0.5 * h * pixelZ};
   desc_.bins.binSize = bin * pixelX;
   desc_.bins.binSizeZ = bin * pixelZ;

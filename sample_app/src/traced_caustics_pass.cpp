@@ -45,6 +45,7 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   reference::FrameTraceDesc trace = trace_;
   trace.towardSun = glm::normalize(desc.sun.direction);
   trace.ior = desc.water.ior;
+  trace.sunAngularRadius = 0.5 * glm::radians(double(desc.sun.angularDiameterDegrees));
   result_ = {};
   if (trace.towardSun.y > 0.0)
     result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);

@@ -22,6 +22,7 @@ struct LocalLight;  // postfx/lights.h
 inline constexpr int kMaxCascades = 4;
 inline constexpr Range<double> kSunLengthRange{1e-6, 1e6};            // |Sun::direction|
 inline constexpr Range<float> kIrradianceRange{0.0f, 1e9f};           // Sun::irradiance
+inline constexpr Range<float> kSunAngularDiameterRange{0.0f, 10.0f};  // degrees
 inline constexpr Range<double> kTileSizeRange{1e-3, 1e7};             // m
 inline constexpr Range<double> kWaveStatisticRange{0.0, 1e9};         // 1/m and m
 inline constexpr Range<float> kIorRange{1.0f, 3.0f};                  // the water's
@@ -60,6 +61,11 @@ struct Sun {
   glm::dvec3 direction{0.0, 1.0, 0.0};
   // Sun irradiance at the water surface in the host's HDR units, linear RGB, kIrradianceRange.
   glm::vec3 irradiance{1.0f};
+  // Angle the sun's disc subtends (degrees), kSunAngularDiameterRange; 0.53 for the real sun.
+  // Light reaches each point from a cone this wide, so caustics soften with depth (at 10 m the
+  // disc alone blurs them over ~7 cm); the seabed caustics' TileIrradiance field and the god
+  // rays built on it convolve with it. 0: a point sun, infinitely sharp folds.
+  float angularDiameterDegrees = 0.53f;
 };
 
 struct WaterSurface {
