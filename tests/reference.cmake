@@ -32,10 +32,10 @@ postfx_add_test(postfx_streak_tests GL
   LIBS ocean_report water glm::glm postfx::epoxy)
 
 # The TileIrradiance model (the default): flat water, where light may land, flux, and against
-# converged light tracing on the report's flat seabed.
+# converged light tracing on the report's flat seabed; its spread keeps the flux.
 postfx_add_test(postfx_tile_irradiance_tests GL
   SOURCES gl/postfx_scene.cpp gl/postfx_tile_irradiance_test.cpp
-          gl/postfx_tile_lookup_resolution_test.cpp
+          gl/postfx_tile_lookup_resolution_test.cpp gl/postfx_tile_spread_test.cpp
   LIBS ocean_report postfx gbuffer water glm::glm postfx::epoxy)
 target_include_directories(postfx_tile_irradiance_tests
   PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})

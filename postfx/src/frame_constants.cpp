@@ -48,6 +48,24 @@ glm::dvec4 landingDriftJacobian(const glm::dvec3& towardSun, double ior) {
   return glm::dvec4(dx, dz);
 }
 
+glm::dvec3 sunDiscLandingCovariance(const glm::dvec3& towardSun, double ior, double angularRadius) {
+  const glm::dvec3 sun = glm::normalize(towardSun);
+  const glm::dvec3 helper =
+      std::abs(sun.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
+  const glm::dvec3 side = glm::normalize(glm::cross(sun, helper));
+  const glm::dvec3 up = glm::cross(side, sun);
+  auto drift = [&](const glm::dvec3& toward) {
+    const glm::dvec3 t = refractedSunDown(glm::normalize(toward), ior);
+    return glm::dvec2(t.x, t.z) / std::max(-t.y, 1e-6);
+  };
+  const double e = 1e-4;
+  const glm::dvec2 a = (drift(sun + e * side) - drift(sun - e * side)) / (2.0 * e);
+  const glm::dvec2 b = (drift(sun + e * up) - drift(sun - e * up)) / (2.0 * e);
+  // A uniform disc of radius r has variance r^2 / 4 along each of its axes.
+  const double v = 0.25 * angularRadius * angularRadius;
+  return v * glm::dvec3(a.x * a.x + b.x * b.x, a.x * a.y + b.x * b.y, a.y * a.y + b.y * b.y);
+}
+
 bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame) {
   return hasFeature(create.features, Feature::PhysicalCaustics) &&
          frame.caustics.model == CausticsModel::WavefrontAreaRatio && frame.sun.direction.y > 0.0;

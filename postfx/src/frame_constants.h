@@ -21,6 +21,11 @@ struct WaterTextureInfo {
 // (dh/dx, dh/dz) at flat water, column-major 2x2 packed as (d/dsx, d/dsz).
 glm::dvec4 landingDriftJacobian(const glm::dvec3& towardSun, double ior);
 
+// Covariance (xx, xz, zz, m^2 per metre^2 of depth) of where light from the sun's disc of
+// `angularRadius` radians lands, about where the disc's centre would put it: each direction of
+// the disc refracts into its own drift.
+glm::dvec3 sunDiscLandingCovariance(const glm::dvec3& towardSun, double ior, double angularRadius);
+
 bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame);
 
 shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDesc& frame,

@@ -11,9 +11,10 @@ static_assert(POSTFX_UNIT_IRRADIANCE < POSTFX_UNIT_COUNT &&
                   POSTFX_OBJECT_UNIT_LANDINGS < POSTFX_UNIT_COUNT,
               "GlStateGuard saves texture units [0, POSTFX_UNIT_COUNT) only");
 static_assert(POSTFX_STORAGE_GRID_POINTS == 0 && POSTFX_STORAGE_CLAMP_COUNT == 0 &&
-                  POSTFX_STORAGE_TILE_ACCUMULATORS == 0 && POSTFX_IMAGE_TILE_IRRADIANCE == 0 &&
+                  POSTFX_STORAGE_TILE_ACCUMULATORS == 0 && POSTFX_STORAGE_TILE_BLUR == 1 &&
+                  POSTFX_STORAGE_TILE_SPREAD == 2 && POSTFX_IMAGE_TILE_IRRADIANCE == 0 &&
                   POSTFX_IMAGE_OBJECT_LANDINGS == 0,
-              "GlStateGuard saves shader-storage binding 0 and image unit 0 only");
+              "GlStateGuard saves shader-storage bindings 0-2 and image unit 0 only");
 
 namespace postfx::detail {
 
@@ -39,7 +40,8 @@ GlStateGuard::GlStateGuard() {
   }
   glGetIntegerv(GL_QUERY_BUFFER_BINDING, &queryBuffer_);
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageBuffer_);
-  storageIndexed_ = glkit::IndexedBufferBinding::save(GL_SHADER_STORAGE_BUFFER, 0);
+  for (GLuint i = 0; i < GLuint(kStorageBindings); ++i)
+    storageIndexed_[i] = glkit::IndexedBufferBinding::save(GL_SHADER_STORAGE_BUFFER, i);
   glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &image_.texture);
   glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 0, &image_.level);
   glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, 0, &image_.layered);
@@ -82,7 +84,7 @@ GlStateGuard::~GlStateGuard() {
   for (const glkit::IndexedBufferBinding& binding : uniformIndexed_) binding.restore();
   glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniformBuffer_));
   glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(queryBuffer_));
-  storageIndexed_.restore();
+  for (const glkit::IndexedBufferBinding& binding : storageIndexed_) binding.restore();
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBuffer_));
   glBindImageTexture(0, static_cast<GLuint>(image_.texture), image_.level,
                      image_.layered ? GL_TRUE : GL_FALSE, image_.layer,

@@ -43,9 +43,11 @@ class GlStateGuard {
   GLint uniformBuffer_ = 0;
   std::array<glkit::IndexedBufferBinding, kUniformBindings> uniformIndexed_{};
   GLint queryBuffer_ = 0;
-  // The irradiance pass's clamp count and the tile irradiance's accumulators: SSBO binding 0.
+  // SSBO bindings 0 (the irradiance pass's clamp count, the tile irradiance's accumulators), 1
+  // and 2 (the tile irradiance's spread: its blur buffer and slope statistics).
   GLint storageBuffer_ = 0;
-  glkit::IndexedBufferBinding storageIndexed_{};
+  static constexpr int kStorageBindings = 3;
+  std::array<glkit::IndexedBufferBinding, kStorageBindings> storageIndexed_{};
   // The tile irradiance's resolve writes through image unit 0.
   struct ImageUnitState {
     GLint texture = 0, level = 0, layered = 0, layer = 0, access = GL_READ_ONLY, format = GL_R8;

@@ -12,6 +12,18 @@
 #include "shared_math.h"
 
 namespace postfx::detail {
+namespace {
+
+// The spread statistics: tile_irradiance_spread_statistics.glsl's TILE_SPREAD_PARTS partial
+// sums (a vec4) per cascade.
+constexpr std::uint64_t kSpreadStatisticsBytes =
+    std::uint64_t(kMaxCascades) * shared::TILE_SPREAD_PARTS * 16;
+
+float tileClamp(const FrameDesc& frame) {
+  return std::min(frame.caustics.maxIrradiance, shared::TILE_MAX_IRRADIANCE);
+}
+
+}  // namespace
 
 std::string tileVariantDefines(int groups, int cascadeMask, bool physical) {
   std::string d = physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n";
@@ -39,6 +51,7 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame) {
   l.layers = s.tileDepthLayers;
   l.groups = l.layers / kTileLayersPerTexel;
   l.maxDepth = s.maxReceiverDepth;
+  l.spread = s.tileUnresolvedSpread || frame.sun.angularDiameterDegrees > 0.0f;
   const glm::dvec3 up = -refractedSunDown(glm::normalize(frame.sun.direction), water.ior);
   const double upY = std::max(up.y, 1e-6);
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
@@ -65,11 +78,17 @@ std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l) {
   const std::uint64_t accumulators = std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
                                      std::uint64_t(std::max(l.cascadeCount, 1)) *
                                      std::uint64_t(l.layers);
-  return texels * arrayLayers * 8 + accumulators * 4;
+  const std::uint64_t spread =
+      l.spread ? 2 * std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
+                         std::uint64_t(std::max(l.cascadeCount, 1)) * std::uint64_t(l.layers) * 4 +
+                     kSpreadStatisticsBytes
+               : 0;
+  return texels * arrayLayers * 8 + accumulators * 4 + spread;
 }
 
 std::uint64_t TileIrradiancePass::allocatedBytes() const {
-  return textureBytes(texture_.id(), 8) + bufferBytes(accumulators_.id());  // RGBA16F
+  return textureBytes(texture_.id(), 8) + bufferBytes(accumulators_.id()) +  // RGBA16F
+         bufferBytes(spreadStatisticsBuffer_.id()) + bufferBytes(blur_.id());
 }
 
 Result TileIrradiancePass::init(const std::string& defines, std::string& error) {
@@ -82,7 +101,16 @@ Result TileIrradiancePass::init(const std::string& defines, std::string& error) 
                          {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}},
                         {downsample_,
                          "postfx.caustics_tile.downsample",
-                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_downsample.comp"}}}},
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_downsample.comp"}}},
+                        {spreadStatistics_,
+                         "postfx.caustics_tile.spread_statistics",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_spread.comp"}}},
+                        {spreadBox_,
+                         "postfx.caustics_tile.spread_box",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_spread_box.comp"}}},
+                        {spreadPack_,
+                         "postfx.caustics_tile.spread_pack",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_spread_pack.comp"}}}},
                        error);
 }
 
@@ -109,9 +137,27 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
     glClearNamedBufferData(accumulators_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     accumulatorBytes_ = bytes;
   }
-  GLint64 allocated = 0;
+  // The spread's buffers only while it is on: a frame without it holds none.
+  const GLsizeiptr blurBytes = l.spread ? GLsizeiptr(2) * l.resolution * l.resolution *
+                                              std::max(l.cascadeCount, 1) * l.layers * 4
+                                        : 0;
+  if (blurBytes_ != blurBytes) {
+    blur_.reset();
+    spreadStatisticsBuffer_.reset();
+    if (blurBytes > 0) {
+      blur_ = glkit::createBuffer(blurBytes, nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                  "postfx.caustics_tile.spread_blur");
+      spreadStatisticsBuffer_ =
+          glkit::createBuffer(GLsizeiptr(kSpreadStatisticsBytes), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                              "postfx.caustics_tile.spread_statistics");
+    }
+    blurBytes_ = blurBytes;
+  }
+  GLint64 allocated = 0, blurAllocated = 0;
   glGetNamedBufferParameteri64v(accumulators_.id(), GL_BUFFER_SIZE, &allocated);
-  if (glkit::storedWidth(texture_) != l.resolution || allocated != bytes) {
+  if (blur_) glGetNamedBufferParameteri64v(blur_.id(), GL_BUFFER_SIZE, &blurAllocated);
+  if (glkit::storedWidth(texture_) != l.resolution || allocated != bytes ||
+      blurAllocated != blurBytes) {
     error = "caustics: the driver could not allocate the tile irradiance (tileResolution " +
             std::to_string(l.resolution) + ")";
     return Result::OutOfMemory;
@@ -160,18 +206,21 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  const GLuint resolve = resolve_.id();
-  const float clamp = std::min(frame.caustics.maxIrradiance, shared::TILE_MAX_IRRADIANCE);
-  glUseProgram(resolve);
-  glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                     GL_RGBA16F);
-  const GLuint texelGroups = static_cast<GLuint>((l.resolution + 7) / 8);
-  for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
-    if (l.slot[c] < 0) continue;
-    glProgramUniform4f(resolve, 0, static_cast<float>(l.resolution),
-                       static_cast<float>(l.slot[c] * l.layers),
-                       static_cast<float>(l.slot[c] * l.groups), clamp);
-    glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.groups));
+  if (l.spread) {
+    drawSpread(frame, depths);
+  } else {
+    const GLuint resolve = resolve_.id();
+    glUseProgram(resolve);
+    glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA16F);
+    const GLuint texelGroups = static_cast<GLuint>((l.resolution + 7) / 8);
+    for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
+      if (l.slot[c] < 0) continue;
+      glProgramUniform4f(resolve, 0, static_cast<float>(l.resolution),
+                         static_cast<float>(l.slot[c] * l.layers),
+                         static_cast<float>(l.slot[c] * l.groups), tileClamp(frame));
+      glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.groups));
+    }
   }
   // The mip chain from the image writes, level by level (each dispatch reads the level the one
   // before wrote); the caustics pass then samples it. The unit is the one the caustics pass
@@ -191,6 +240,65 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
     glDispatchCompute(groups, groups, static_cast<GLuint>(textureLayers_));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   }
+}
+
+void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths) {
+  const TileIrradianceLayout& l = layout_;
+  const WaterSurface& water = frame.water;
+  const int cascades = std::min(water.cascadeCount, kMaxCascades);
+
+  // Every cascade's slope statistics, in parts.
+  const GLuint statistics = spreadStatistics_.id();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_SPREAD,
+                   spreadStatisticsBuffer_.id());
+  glProgramUniform1i(statistics, 0, l.resolution * frame.caustics.tilePointsPerTexel);
+  glUseProgram(statistics);
+  glDispatchCompute(static_cast<GLuint>(cascades), static_cast<GLuint>(shared::TILE_SPREAD_PARTS),
+                    1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  // The blur: rows, columns and the diagonal, every cascade and layer in each dispatch.
+  glm::ivec4 slotCascade(0);
+  glm::vec4 texelsPerMetre(0.0f);
+  for (int c = 0; c < cascades; ++c) {
+    if (l.slot[c] < 0) continue;
+    slotCascade[l.slot[c]] = c;
+    texelsPerMetre[l.slot[c]] = static_cast<float>(l.resolution / water.tileSize[c]);
+  }
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const glm::vec4 drift(landingDriftJacobian(sun, water.ior));
+  const glm::vec3 disc(sunDiscLandingCovariance(
+      sun, water.ior, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees))));
+  const GLuint box = spreadBox_.id();
+  glProgramUniform1fv(box, 1, shared::TILE_MAX_LAYERS, depths);
+  glProgramUniform4iv(box, 10, 1, &slotCascade.x);
+  glProgramUniform4fv(box, 11, 1, &texelsPerMetre.x);
+  glProgramUniform4fv(box, 12, 1, &drift.x);
+  glProgramUniform4f(box, 13, disc.x, disc.y, disc.z,
+                     frame.caustics.tileUnresolvedSpread ? 1.0f : 0.0f);
+  glProgramUniform1i(box, 14, cascades);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_ACCUMULATORS, accumulators_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_BLUR, blur_.id());
+  glUseProgram(box);
+  const int n = l.resolution;
+  const GLuint lineGroups = static_cast<GLuint>((n + 63) / 64);
+  for (int direction = 0; direction < 3; ++direction) {
+    glProgramUniform4i(box, 0, n, direction, l.cascadeCount, l.layers);
+    glDispatchCompute(lineGroups, static_cast<GLuint>(l.layers),
+                      static_cast<GLuint>(l.cascadeCount));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  const GLuint pack = spreadPack_.id();
+  glProgramUniform3f(pack, 0, static_cast<float>(n), static_cast<float>(l.layers),
+                     tileClamp(frame));
+  glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                     GL_RGBA16F);
+  glUseProgram(pack);
+  const GLuint texelGroups = static_cast<GLuint>((n + 7) / 8);
+  glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.cascadeCount * l.groups));
+  // Each accumulator was read by several texels: zeroed for the next frame only now.
+  const GLuint zero = 0;
+  glClearNamedBufferData(accumulators_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
 }  // namespace postfx::detail

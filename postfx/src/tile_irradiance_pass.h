@@ -32,6 +32,10 @@ struct TileIrradianceLayout {
   int cascadeMask = 0;   // bit c: cascade c has irradiance (compiled into the caustics pass)
   // Per cascade: its index among the cascades with irradiance, -1 when it has none.
   int slot[kMaxCascades] = {-1, -1, -1, -1};
+  // The layers are convolved with a landing spread (shared/postfx_tile_irradiance.h): of the
+  // slopes the points do not resolve (CausticsSettings::tileUnresolvedSpread) and of the sun's
+  // disc (Sun::angularDiameterDegrees).
+  bool spread = false;
 };
 
 // Which cascades the frame needs: those whose first-order irradiance modulation at
@@ -41,8 +45,9 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame);
 
 // GPU memory the pass allocates for layout `l`: the RGBA16F array (l.groups layers per cascade
 // with irradiance, at least one) with its full mip chain, and a uint accumulator per texel,
-// depth layer and cascade (at least one cascade). The memory estimate and
-// TileIrradiancePass::allocatedBytes() must agree (a test checks).
+// depth layer and cascade (at least one cascade); with the spread, the blur's two copies of
+// every layer (a float per texel) and the slope statistics' partial sums.
+// The memory estimate and TileIrradiancePass::allocatedBytes() must agree (a test checks).
 std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l);
 
 // The #defines of a program variant that reads the tile irradiance (caustics or god rays):
@@ -74,11 +79,15 @@ class TileIrradiancePass {
   std::uint64_t allocatedBytes() const;
 
  private:
+  // The unresolved-slope spread: statistics, then per cascade the box passes of its blur.
+  void drawSpread(const FrameDesc& frame, const float* depths);
+
   glkit::Program scatter_, resolve_, downsample_;
+  glkit::Program spreadStatistics_, spreadBox_, spreadPack_;
   glkit::Texture texture_;
-  glkit::Buffer accumulators_;
+  glkit::Buffer accumulators_, spreadStatisticsBuffer_, blur_;
   int textureResolution_ = 0, textureLayers_ = 0;
-  GLsizeiptr accumulatorBytes_ = 0;
+  GLsizeiptr accumulatorBytes_ = 0, blurBytes_ = 0;
   TileIrradianceLayout layout_{};
 };
 

@@ -53,7 +53,14 @@ float tileIrradianceAt(vec3 p, float depthBelow, float logFootprint) {
     if ((POSTFX_TILE_CASCADES >> c) != 0 && c < cascades) {
       coarse += tileCascadeSurface(c - 1, coord, logFootprint);
       coord = entry - tileLinearOffset(coarse, u.tileDrift, flatDrift, depthBelow);
-      e *= tileCascadeIrradiance(c, coord, layerCoord, logFootprint);
+      // Seen through the coarser cascades, which act as a lens of focal power 1 / f, the finer
+      // pattern is the one it makes alone at the lens-shortened depth 1 / (1 / d + 1 / f): the
+      // coarser focusing E (to first order the inverse of the lens's magnification squared)
+      // gives it as d sqrt(E). Where the coarse waves converge light, the fine pattern below is
+      // further developed (past its own focus, more scrambled); where they spread it, less.
+      float lensDepth = depthBelow * sqrt(clamp(e, 0.1, 10.0));
+      float lensLayer = tileLayerCoord(lensDepth, int(u.tileIrradiance.x), u.tileIrradiance.y);
+      e *= tileCascadeIrradiance(c, coord, lensLayer, logFootprint);
     }
   }
 #endif

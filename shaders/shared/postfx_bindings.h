@@ -52,6 +52,10 @@
 #define POSTFX_STORAGE_GRID_POINTS 0  // WavefrontAreaRatio: the compute step's output
 #define POSTFX_STORAGE_CLAMP_COUNT 0  // WavefrontAreaRatio: the draws' clamp counter
 #define POSTFX_STORAGE_TILE_ACCUMULATORS 0
+// The tile irradiance's unresolved-slope spread: its blur's two copies of the layers, and the
+// slope statistics that the blur reads.
+#define POSTFX_STORAGE_TILE_BLUR 1
+#define POSTFX_STORAGE_TILE_SPREAD 2
 #define POSTFX_IMAGE_TILE_IRRADIANCE 0  // the TileIrradiance resolve's output
 #define POSTFX_IMAGE_OBJECT_LANDINGS 0  // the object caustics' ray trace output
 

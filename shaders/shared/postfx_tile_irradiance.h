@@ -82,6 +82,39 @@ SHARED_FN float tileLandingFlux(vec3 surface, vec3 towardSun, float ior,
   return fresnelTransmittance(c, ior) * invFlatTransmittance * beam;
 }
 
+// Unresolved-slope spread (CausticsSettings::tileUnresolvedSpread). Each refracted point carries
+// its cell's mean slope; the slopes inside the cell, and every finer cascade's (whose waves are
+// far shorter than this cascade's pattern), deflect the light that cell sends by a further
+// random offset that grows linearly with depth: to first order depth * J * s, J the landing
+// drift per metre of depth and slope (tileLinearOffset's). Where those waves have focused and
+// crossed (a few of their focal lengths down), the light they send is a diffuser's: the cascade's
+// pattern arrives convolved with the offset's distribution, a Gaussian of covariance
+//     C(depth) = depth^2 * J S J^T,
+// S the covariance of the slopes the points do not resolve. The convolution runs over the
+// periodic tile in the frequency domain (exact, any covariance, cost independent of its size).
+// Cells per tile side whose slopes the spread's statistics sample (fewer where the tile has
+// fewer points): 32^2 cells of a cascade's texels estimate its slope covariance within ~3 %.
+SHARED_CONST int TILE_SPREAD_SAMPLE_CELLS = 32;
+// Water texels per cell side the statistics read at most (a water texture much finer than the
+// points is sampled on this sub-grid of each cell).
+SHARED_CONST int TILE_SPREAD_MAX_CELL_TEXELS = 8;
+// Workgroups per cascade of the statistics pass, each writing partial sums (CPU rasterisers run
+// a workgroup on one thread).
+SHARED_CONST int TILE_SPREAD_PARTS = 8;
+
+// Landing-offset covariance per metre^2 of depth (xx, xz, zz), in the irradiance texels of a
+// tile of `texelsPerMetre`, from slope covariance (xx, xz, zz) and the drift J (packed as
+// tileLinearOffset takes it: column-major xx, zx, xz, zz).
+SHARED_FN vec3 tileSpreadCovariance(vec3 slopeCovariance, vec4 drift, float texelsPerMetre) {
+  // J S J^T with J = [[drift.x, drift.z], [drift.y, drift.w]] (rows: landing x, landing z).
+  float a = drift.x, b = drift.z, c = drift.y, d = drift.w;
+  float sxx = slopeCovariance.x, sxz = slopeCovariance.y, szz = slopeCovariance.z;
+  float xx = a * a * sxx + 2.0f * a * b * sxz + b * b * szz;
+  float xz = a * c * sxx + (a * d + b * c) * sxz + b * d * szz;
+  float zz = c * c * sxx + 2.0f * c * d * sxz + d * d * szz;
+  return vec3(xx, xz, zz) * (texelsPerMetre * texelsPerMetre);
+}
+
 SHARED_END
 
 #endif

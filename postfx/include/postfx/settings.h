@@ -123,6 +123,15 @@ struct CausticsSettings {
   // long waves barely focus there, they only move the finer cascades' light (which is kept).
   // Each one left out saves a fetch per pixel and a third of the pre-pass.
   float tileMinModulation = 0.25f;
+  // Each cascade's irradiance is convolved, per depth layer, with the landing spread of the
+  // slopes its points do not resolve (inside a point's cell of the water texture, and every
+  // finer cascade's): those ripples, shorter than the pattern and far past their own focus at
+  // depth, scatter the light like a diffuser, softening the pattern by depth * J * slope spread
+  // (J the landing drift, about (1 - 1/n) / cos for a high sun). Measured from the water texture
+  // every frame (any host's water); its error and cost: docs/measurements.md. Off: the pattern
+  // of the points alone, sharper than the light the water really sends, with rings where a
+  // coarser cascade focuses a finer one's pattern (the pre-pass 0.2x cheaper on llvmpipe).
+  bool tileUnresolvedSpread = true;
   // Resolution of the lookups (see CausticsLookupResolution). Half costs a quarter of the
   // lookups plus a 4-tap upsample and 4 bytes per reduced texel (0.9 MB at 1280x720); its
   // accuracy and cost against Full are in docs/measurements.md.
