@@ -7,6 +7,8 @@ if(TARGET ocean_scene)
             unit/scene_gltf_hostile_test.cpp unit/scene_gltf_features_test.cpp
             unit/scene_gltf_fuzz_test.cpp unit/scene_gltf_draco_test.cpp
             unit/scene_gltf_meshopt_test.cpp unit/scene_gltf_texture_test.cpp
+            unit/scene_gltf_budget_test.cpp unit/scene_gltf_limits_test.cpp
+            unit/scene_gltf_messages_test.cpp unit/gltf_hostile_corpus.cpp
     LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF draco::draco
          meshoptimizer::meshoptimizer PkgConfig::OIIO)
 endif()
