@@ -7,7 +7,7 @@ postfx_add_test(postfx_unit_tests
   SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp unit/postfx_godrays_math_test.cpp
           unit/postfx_no_context_test.cpp unit/postfx_irradiance_layout_test.cpp
           unit/postfx_object_caustics_frame_test.cpp unit/postfx_splat_test.cpp
-          unit/postfx_object_caustics_light_frame_test.cpp
+          unit/postfx_object_caustics_light_frame_test.cpp unit/postfx_object_caustics_work_test.cpp
   LIBS postfx gbuffer glm::glm postfx::epoxy)
 target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
 
@@ -31,7 +31,7 @@ postfx_add_test(postfx_object_caustics_tests
           gl/postfx_object_caustics_material_test.cpp gl/postfx_object_caustics_defaults_test.cpp
           gl/postfx_object_caustics_lights_contract_test.cpp gl/postfx_object_caustics_lights_util.cpp
           gl/postfx_object_caustics_lights_test.cpp gl/postfx_object_caustics_lights_stability_test.cpp
-          gl/postfx_object_caustics_lights_cost_test.cpp
+          gl/postfx_object_caustics_lights_cost_test.cpp gl/postfx_object_caustics_work_test.cpp
   LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

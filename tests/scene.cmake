@@ -7,6 +7,18 @@ if(TARGET ocean_scene)
             unit/scene_gltf_hostile_test.cpp unit/scene_gltf_features_test.cpp
             unit/scene_gltf_fuzz_test.cpp unit/scene_gltf_draco_test.cpp
             unit/scene_gltf_meshopt_test.cpp unit/scene_gltf_texture_test.cpp
+            unit/scene_gltf_budget_test.cpp unit/scene_gltf_limits_test.cpp
+            unit/scene_gltf_messages_test.cpp unit/gltf_hostile_corpus.cpp
     LIBS ocean_scene ocean_asset_dir TinyGLTF::TinyGLTF draco::draco
          meshoptimizer::meshoptimizer PkgConfig::OIIO)
+endif()
+
+# The glTF loader's fuzz target (issue 28, item 6): seeded mutations of the unit test's seeds
+# and of the regression corpus for OCEAN_GLTF_FUZZ_SECONDS (default 45 s); `ctest -L fuzz`.
+if(TARGET ocean_scene)
+  postfx_add_test(scene_gltf_fuzz_tests
+    SOURCES fuzz/scene_gltf_fuzz_test.cpp unit/gltf_hostile_corpus.cpp
+    LIBS ocean_scene TinyGLTF::TinyGLTF draco::draco meshoptimizer::meshoptimizer PkgConfig::OIIO
+    LABELS fuzz)
+  target_include_directories(scene_gltf_fuzz_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/unit)
 endif()

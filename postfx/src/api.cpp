@@ -21,6 +21,7 @@
 #include "object_caustics_light_frame.h"
 #include "object_caustics_state.h"
 #include "object_caustics_validation.h"
+#include "object_caustics_work.h"
 #include "validation.h"
 
 namespace postfx {
@@ -307,6 +308,8 @@ Result dispatchUnchecked(Context& context, const FrameDesc& frame) {
   r = buildBlocks(context, frame, plan, textures, blocks, error);
   if (r != Result::Ok) return r;
   r = detail::checkFrameMemory(context.desc, frame, textures.width, textures.height, plan, error);
+  if (r != Result::Ok) return r;
+  r = detail::checkObjectCausticsWork(context.desc, frame, plan, error);
   if (r != Result::Ok) return r;
   TileVariants tile;  // all 0: another model
   if (plan.tile) {

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <sstream>
+#include <utility>
 
 namespace postfx::detail {
 namespace {
@@ -239,6 +241,15 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
     error = "CreateDesc.memoryBudgetMiB must be in [1, 1048576], got " +
             std::to_string(desc.memoryBudgetMiB);
     return Result::InvalidArgument;
+  }
+  constexpr std::int64_t kMaxWorkBudget = std::int64_t(1) << 40;
+  for (const auto& [value, name] : {std::pair{desc.casterTriangleBudget, "casterTriangleBudget"},
+                                    std::pair{desc.splatBudget, "splatBudget"}}) {
+    if (value < 1 || value > kMaxWorkBudget) {
+      error =
+          std::string("CreateDesc.") + name + " must be in [1, 2^40], got " + std::to_string(value);
+      return Result::InvalidArgument;
+    }
   }
   return Result::Ok;
 }

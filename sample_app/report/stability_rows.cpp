@@ -31,7 +31,7 @@ bool measureStability(const Options& options, const StabilityReportSettings& set
   Preset preset;
   if (!resolveView(options, preset, error)) return false;
   ocean_scene::Model scene;
-  if (!buildScene(options.models, scene, error)) return false;
+  if (!buildScene(options.models, scene, error, options.modelLimits)) return false;
   RenderSettings render;
   render.width = settings.width;
   render.height = settings.height;

@@ -19,6 +19,8 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--height",
                                               "--time",
                                               "--model",
+                                              "--model-file",
+                                              "--model-limits",
                                               "--light",
                                               "--water-resolution",
                                               "--no-caustics",
@@ -69,8 +71,18 @@ largest side to M metres (0.01..100), :fit=none keeps the file's size. Glass is 
 with KHR_materials_transmission and metallic < 0.5 (transmission x (1 - metallic) weighs its
 caustic, the base colour tints it, KHR_materials_volume absorbs along the path, thickness 0 is
 a thin wall that does not focus, roughness widens it); metal (metallic >= 0.5) and ior 0 are
-mirrors. Draco and meshopt compression are decoded; an embedded base-colour texture is averaged
-into the colour, other textures are not used (a warning names them).)";
+mirrors. Draco and meshopt compression are decoded; a base-colour texture (embedded, a data:
+URI or a file beside the model) is averaged into the colour, other textures are not used (a
+warning names them). --model-file PATH adds a file like --model with PATH taken literally, for
+names with '@' or ':fit=' in them (placed in the row at the default size, after the --model
+files); with --model such a name works when a position or fit follows (the last '@' and ':fit='
+are the options').
+
+Each file is held to a work budget, checked from its own counts before anything is expanded:
+4194304 triangles after instancing, 16384 instances (one per primitive per node copy), 65536
+nodes and 1 GiB once expanded (buffers, meshes, instances). A file over it is refused naming
+each limit with its count; --model-limits triangles=N,instances=N,nodes=N,bytes=N (any of
+them, N up to 2^40, k/M/G suffixes) raises them.)";
 
 struct CommandSpec {
   std::string_view name;

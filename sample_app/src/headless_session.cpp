@@ -9,7 +9,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
                          HeadlessSession& session, std::string& error) {
   if (!resolveView(options, session.preset, error)) return false;
   ocean_scene::Model& scene = session.scene;
-  if (!buildScene(options.models, scene, error)) return false;
+  if (!buildScene(options.models, scene, error, options.modelLimits)) return false;
   session.context = glcontext::HeadlessContext::create(debug, error);
   if (!session.context) return false;
   GLint maxSize = 0;

@@ -8,6 +8,7 @@
 
 #include "caustics_model_names.h"
 #include "light_spec.h"
+#include "model_limits_option.h"
 
 namespace ocean {
 namespace {
@@ -121,9 +122,33 @@ const std::array kValueOptions{
                 }},
     ValueOption{"--model", "FILE[@x,y,z][:fit=M|none]",
                 "a glTF (.glb/.gltf) added as glass or metal casters (repeatable)", true,
-                [](std::string_view text, Options& o, std::string&) {
-                  o.models.emplace_back(text);  // the file and its placement: model_spec.cpp
+                [](std::string_view text, Options& o, std::string& error) {
+                  ModelSpec spec;  // the file and its placement: model_spec.cpp
+                  if (!parseModelSpec(std::string(text), spec, error)) return false;
+                  o.models.push_back(spec);
                   return true;
+                }},
+    ValueOption{"--model-file", "PATH",
+                "a glTF added like --model, its path taken literally (for names with '@' or "
+                "':fit='), in the row at the default size (repeatable; after the --model files)",
+                true,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (text.empty()) {
+                    error = "--model-file: no file name";
+                    return false;
+                  }
+                  ModelSpec spec;
+                  spec.path = text;
+                  o.models.push_back(spec);
+                  return true;
+                }},
+    ValueOption{"--model-limits", "KEY=N[,KEY=N]...",
+                "the work budget of each glTF: triangles (after instancing, default 4194304), "
+                "instances (16384), nodes (65536), bytes (once expanded, default 1G); N in "
+                "[1, 2^40], a k/M/G suffix allowed",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return parseModelLimits(text, o.modelLimits, error);
                 }},
     ValueOption{"--light", "TYPE:...",
                 "a point or spot light (repeatable, at most 4 with the preset's): "

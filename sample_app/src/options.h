@@ -7,6 +7,9 @@
 
 #include <glm/glm.hpp>
 
+#include <scene/gltf_limits.h>
+
+#include "model_spec.h"
 #include "scene_light.h"
 
 namespace ocean {
@@ -18,8 +21,12 @@ struct Options {
   std::string preset = "seabed";
   int width = 1280, height = 720;
   double timeSeconds = 0.0;
-  std::vector<std::string> models;  // extra .glb files placed in the scene
-  std::vector<SceneLight> lights;   // --light: added to the preset's lights
+  // Extra glTF files placed in the scene: each --model (FILE[@x,y,z][:fit=M|none]), then each
+  // --model-file (a path taken literally, placed in the row at the default size).
+  std::vector<ModelSpec> models;
+  // --model-limits: the work budget each file is held to before it is expanded.
+  ocean_scene::GltfLimits modelLimits;
+  std::vector<SceneLight> lights;  // --light: added to the preset's lights
   std::string out = "ocean.png";
   // bench: measured frames after warm-up; render: frames of the image sequence (1: one image);
   // view: frames drawn before it quits (0: until the window is closed)

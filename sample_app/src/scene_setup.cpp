@@ -43,19 +43,20 @@ void modelBounds(const ocean_scene::Model& model, glm::dvec3& lo, glm::dvec3& hi
 
 }  // namespace
 
-bool buildScene(const std::vector<std::string>& userModels, ocean_scene::Model& scene,
-                std::string& error) {
+bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
+                std::string& error, const ocean_scene::GltfLimits& limits) {
   ocean_scene::DefaultSceneParams params;
   std::vector<std::string> warnings;
   if (!ocean_scene::buildDefaultSceneWithModels(params, assetDirectory(), scene, error)) {
     return false;
   }
   for (size_t i = 0; i < userModels.size(); ++i) {
-    ModelSpec spec;
-    if (!parseModelSpec(userModels[i], spec, error)) return false;
+    const ModelSpec& spec = userModels[i];
     ocean_scene::Model model;
     std::string notes;
-    if (!ocean_scene::loadGlb(spec.path, model, error, &notes)) return false;
+    ocean_scene::GltfLimits held = limits;
+    held.raiseOption = "--model-limits";
+    if (!ocean_scene::loadGlb(spec.path, model, error, &notes, held)) return false;
     if (!notes.empty()) warnings.push_back(spec.path + ": " + notes);
     // Without a position, user models stand in a row in front of the seabed preset's camera.
     const glm::dvec2 rowXZ(3.0 * double(i) - 1.5 * double(userModels.size() - 1), 5.0);

@@ -4,14 +4,18 @@
 #include <string>
 #include <vector>
 
+#include <scene/gltf_limits.h>
 #include <scene/model.h>
+
+#include "model_spec.h"
 
 namespace ocean {
 
-// userModels are --model arguments, FILE[@x,y,z][:fit=metres|none] (model_spec.h). Loader
-// notes and casters left out of the object caustics are printed to stderr as warnings; the
-// first error returns false with a one-line message.
-bool buildScene(const std::vector<std::string>& userModels, ocean_scene::Model& scene,
-                std::string& error);
+// userModels are the --model and --model-file files with their placement (model_spec.h), each
+// held to `limits` (a refusal names --model-limits, which raises them). Loader notes and
+// casters left out of the object caustics are printed to stderr as warnings; the first error
+// returns false with a one-line message.
+bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
+                std::string& error, const ocean_scene::GltfLimits& limits = {});
 
 }  // namespace ocean

@@ -55,6 +55,31 @@ inline Bytes claimSize(Bytes image, std::uint32_t width, std::uint32_t height) {
   return image;
 }
 
+// The PNG with byte `at` of its IHDR data (0..12: width, height, bit depth at 8, colour type at
+// 9, ...) set to `value`, the chunk's CRC kept valid: libpng itself must refuse it.
+inline Bytes withIhdrByte(Bytes image, std::size_t at, unsigned char value) {
+  image[16 + at] = value;
+  const std::uint32_t crc = crc32(image.data() + 12, 17);
+  for (int i = 0; i < 4; ++i) image[29 + i] = static_cast<unsigned char>(crc >> (24 - 8 * i));
+  return image;
+}
+
+// The JSON of texturedGlb's model as a .gltf: the triangle in a data: URI, the image at
+// `imageUri` (a file beside it, or a data: URI).
+inline std::string texturedGltf(const std::string& imageUri, const std::string& factor) {
+  return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "data:application/octet-stream;base64,)" +
+         gltf_test_files::base64(gltf_test_files::trianglePositions()) +
+         R"(", "byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+        "min": [0, 0, -1], "max": [1, 0, 0]}],
+      "images": [{"uri": ")" +
+         imageUri + R"("}], "textures": [{"source": 0}],
+      "materials": [{"name": "painted", "pbrMetallicRoughness": {"baseColorFactor": )" +
+         factor + R"(, "baseColorTexture": {"index": 0}}}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+      "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+}
+
 // A GLB: the triangle and `image` in its BIN chunk, a material with baseColorFactor `factor`
 // and the image as its baseColorTexture.
 inline Bytes texturedGlb(const Bytes& image, const std::string& factor) {

@@ -192,6 +192,35 @@ TEST_F(SampleCli, ModelWithNodesThePluginCannotUseStillRenders) {
       << result.stderrText;
 }
 
+// Issue 28: a file whose name has the placement syntax in it ('@', ':fit=') loads through
+// --model-file, which takes the path literally; --model reads the same name as a placement.
+TEST_F(SampleCli, ModelFileTakesItsPathLiterally) {
+  std::ifstream asset(std::string(OCEAN_ASSETS) + "/glass_sphere.glb", std::ios::binary);
+  std::ostringstream buffer;
+  buffer << asset.rdbuf();
+  const fs::path model = writeFile("a@b:fit=2.glb", buffer.str());
+  expectRejected("--model " + model.string(), "fit must be a size in metres");
+  const fs::path out = dir_ / "literal.png";
+  const RunResult result =
+      runSample("render --width 64 --height 36 --water-resolution 16 --model-file " +
+                    model.string() + " --out " + out.string(),
+                dir_);
+  EXPECT_EQ(result.exitCode, 0) << result.stderrText;
+  EXPECT_TRUE(fs::exists(out));
+}
+
+// Issue 28, item 1: a model over the work budget is refused naming the limit, its count and
+// the option that raises it; a bad --model-limits is refused before any work.
+TEST_F(SampleCli, ModelOverTheWorkBudget) {
+  const std::string sphere = std::string(OCEAN_ASSETS) + "/glass_sphere.glb";
+  expectRejected("--model " + sphere + " --model-limits triangles=10,nodes=64",
+                 "triangles after instancing (limit 10); refused before it is expanded (raise "
+                 "with --model-limits triangles=N)");
+  expectRejected("--model-limits triangles=0", "--model-limits triangles must be");
+  expectRejected("--model-limits colours=3", "'colours=3' is not KEY=N");
+  expectRejected("--model-limits bytes=2T", "--model-limits bytes must be");
+}
+
 TEST_F(SampleCli, UnwritableOutputDirectory) {
   const RunResult result =
       runSample("render --width 64 --height 36 --out /nonexistent-dir/ocean.png", dir_);

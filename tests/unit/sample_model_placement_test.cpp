@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "caster_admission.h"
+#include "model_limits_option.h"
 #include "model_spec.h"
 
 namespace ocean {
@@ -18,6 +19,24 @@ double flatSand(double, double) {
 }
 double slopedSand(double x, double z) {
   return -10.0 + 0.1 * x + 0.2 * z;
+}
+
+// Issue 28: --model-limits sets the keys it names and leaves the others.
+TEST(SampleModelLimits, SetsTheKeysGiven) {
+  ocean_scene::GltfLimits limits;
+  std::string error;
+  ASSERT_TRUE(parseModelLimits("triangles=8M,bytes=2G", limits, error)) << error;
+  EXPECT_EQ(limits.triangles, std::uint64_t(8) << 20);
+  EXPECT_EQ(limits.bytes, std::uint64_t(2) << 30);
+  EXPECT_EQ(limits.instances, ocean_scene::GltfLimits{}.instances);
+  EXPECT_EQ(limits.nodes, ocean_scene::GltfLimits{}.nodes);
+  ASSERT_TRUE(parseModelLimits("nodes=1099511627776", limits, error)) << error;  // 2^40
+  EXPECT_EQ(limits.nodes, std::uint64_t(1) << 40);
+  for (const char* bad : {"", "nodes", "nodes=", "nodes=0", "nodes=-1", "nodes=1099511627777",
+                          "nodes=1025G", "nodes=3,", "nodes=1.5", "vertices=3"}) {
+    EXPECT_FALSE(parseModelLimits(bad, limits, error)) << bad;
+    EXPECT_NE(error.find("--model-limits"), std::string::npos) << error;
+  }
 }
 
 TEST(SampleModelSpec, ParsesFileAloneWithDefaultFit) {

@@ -24,6 +24,8 @@
 // is refused (InvalidArgument). Conditional rendering cannot be queried in GL 4.5: inside it
 // the plugin's draws are subject to the host's query, so do not call dispatch() there.
 // The library never prints, aborts or throws.
+#include <cstdint>
+
 #include <postfx/diagnostics.h>
 #include <postfx/frame_desc.h>
 #include <postfx/lights.h>
@@ -80,6 +82,19 @@ struct CreateDesc {  // fixed for the context's life
   // default setting many times over (the object caustics' default map 512 needs 12 MiB); a
   // caustic map of 4096 needs 768 MiB, 8192 needs 3 GiB, 16384 needs 12 GiB.
   int memoryBudgetMiB = 1024;
+  // Work the object caustics may record in a frame (Feature::ObjectCaustics), counted on the
+  // CPU with the memory: a frame over either budget is refused with InvalidArgument naming it
+  // before anything is drawn, rather than stalling the GPU. Each in [1, 2^40].
+  //   casterTriangleBudget: triangles drawn into the caster maps, each caster's (indexCount
+  //     / 3, or vertexCount / 3) twice (front and back faces) for every view that draws it:
+  //     the sun's and each local light's that reaches it. The default is 32M caster triangles
+  //     seen from the sun, a few seconds a frame on a CPU rasteriser (llvmpipe).
+  //   splatBudget: splats drawn into the caustic maps, ObjectCausticsSettings::gridSize^2 per
+  //     view, three times that when a caster is dispersed (Feature::Dispersion); each covers
+  //     at most 137 x 137 map texels. The default holds gridSize 2048 from 8 views, or with
+  //     dispersion from 2.
+  std::int64_t casterTriangleBudget = std::int64_t(1) << 26;
+  std::int64_t splatBudget = std::int64_t(1) << 25;
   // Most local lights a frame may list (ObjectCausticsFrame::lightCount), [0,
   // kMaxLocalLightsLimit] (postfx/lights.h), fixed at create(): it sizes the uniform blocks
   // (one 3.75 KiB slot per light) and the per-light timers. A light runs the sun's own programs

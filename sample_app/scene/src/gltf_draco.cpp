@@ -7,6 +7,7 @@
 #include <draco/compression/decode.h>
 #include <draco/mesh/mesh.h>
 
+#include "gltf_text.h"
 #include "gltf_value.h"
 
 namespace ocean_scene::gltf {
@@ -90,7 +91,7 @@ bool decodeDracoPrimitive(const tinygltf::Model& model, const tinygltf::Primitiv
   auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
   if (!decoded.ok() || decoded.value() == nullptr) {
     error = std::string(kExtension) + " data could not be decoded" +
-            (decoded.ok() ? std::string() : ": " + decoded.status().error_msg_string());
+            (decoded.ok() ? std::string() : ": " + excerpt(decoded.status().error_msg_string()));
     return false;
   }
   const draco::Mesh& mesh = *decoded.value();

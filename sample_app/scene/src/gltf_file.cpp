@@ -9,6 +9,7 @@
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 namespace ocean_scene::gltf {
 
@@ -143,32 +144,47 @@ bool resolveInFolder(const std::string& folder, const std::string& rawUri,
     error = "is an absolute path; only relative paths inside the model's folder are read";
     return false;
   }
-  // Any ".." segment is refused, even one that would come back: the rule is easy to state.
+  // Resolved lexically, as a URI reference is (RFC 3986 5.2.4): "." segments and empty ones
+  // drop out and ".." takes back the segment before it, so "sub/../a.bin" is "a.bin" whether
+  // or not "sub" exists (or is a link that leads elsewhere). A ".." with nothing left to take
+  // back leaves the folder. Backslashes separate segments too, as exporters on Windows write.
+  std::vector<std::string> segments;
   std::size_t start = 0;
   while (start <= decodedUri.size()) {
-    const std::size_t end = decodedUri.find_first_of("/\\", start);
-    const std::string segment =
-        decodedUri.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    std::size_t end = decodedUri.find_first_of("/\\", start);
+    if (end == std::string::npos) end = decodedUri.size();
+    const std::string segment = decodedUri.substr(start, end - start);
     if (segment == "..") {
-      error = "leaves the model's folder ('..'); only paths inside it are read";
-      return false;
+      if (segments.empty()) {
+        error = "leaves the model's folder ('..' above it); only paths inside it are read";
+        return false;
+      }
+      segments.pop_back();
+    } else if (!segment.empty() && segment != ".") {
+      segments.push_back(segment);
     }
-    if (end == std::string::npos) break;
     start = end + 1;
+  }
+  if (segments.empty()) {
+    error = "names the model's folder itself, not a file in it";
+    return false;
   }
   if (folder.empty()) {
     error = "cannot be resolved: the model's folder is not accessible";
     return false;
   }
-  const std::string joined = folder + "/" + decodedUri;
+  std::string joined = folder;
+  for (const std::string& segment : segments) joined += "/" + segment;
   char buffer[PATH_MAX];
   if (::realpath(joined.c_str(), buffer) == nullptr) {
     error = "names no file in the model's folder";
     return false;
   }
+  // Lexically inside, so only a symbolic link on the way can have led out.
   const std::string real = buffer;
   if (real.compare(0, folder.size() + 1, folder + "/") != 0) {
-    error = "is a symbolic link that leads out of the model's folder";
+    error = real == folder ? "names the model's folder itself, not a file in it"
+                           : "is a symbolic link that leads out of the model's folder";
     return false;
   }
   struct stat status {};

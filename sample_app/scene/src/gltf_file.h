@@ -22,9 +22,11 @@ std::string decodeUri(const std::string& uri);
 std::string realFolder(const std::string& folder);
 
 // Resolves a (decoded) relative URI inside `folder` (a realFolder result) to the regular file
-// it names. Refused, with a reason that never quotes another file's size or bytes: a scheme
-// (file:, http:, ...), an absolute path, any ".." segment, a symbolic link that leads out of
-// the folder, a missing file, or anything that is not a regular file.
+// it names, its "." and ".." segments resolved lexically first ("sub/../a.bin" is "a.bin").
+// Refused, with a reason that never quotes another file's size or bytes: a scheme (file:,
+// http:, ...), an absolute path, a ".." above the folder, the folder itself ("." or ""), a
+// symbolic link that leads out of the folder, a missing file, or anything that is not a
+// regular file.
 bool resolveInFolder(const std::string& folder, const std::string& rawUri,
                      const std::string& decodedUri, std::string& resolved, std::string& error);
 

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <exception>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 #include <tiny_gltf.h>
@@ -12,11 +13,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf_file.h"
+#include "gltf_glb.h"
 #include "gltf_instancing.h"
 #include "gltf_material.h"
 #include "gltf_meshopt.h"
 #include "gltf_preflight.h"
 #include "gltf_primitive.h"
+#include "gltf_stderr.h"
 #include "gltf_text.h"
 #include "gltf_texture_colour.h"
 
@@ -71,44 +74,51 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
-// tinygltf's warnings, less the ones about image files this loader deliberately never opens.
-std::string usefulWarnings(const std::string& warn, const gltf::Preflight& preflight) {
+// tinygltf's lines, each bounded (its messages quote names and URIs whole), joined by "; ".
+// `skipImages` drops the warnings about the image files this loader keeps from it (it reads a
+// base colour's image itself and no other).
+std::string tinygltfLines(const std::string& text, bool skipImages) {
   std::string kept;
   std::size_t start = 0;
-  while (start < warn.size()) {
-    std::size_t end = warn.find('\n', start);
-    if (end == std::string::npos) end = warn.size();
-    const std::string line = warn.substr(start, end - start);
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string_view line(text.data() + start, end - start);
     start = end + 1;
-    const std::string notFound = "File not found : ";
-    const bool skippedImage = line.rfind("Failed to load external 'uri' for image[", 0) == 0 ||
-                              (line.rfind(notFound, 0) == 0 &&
-                               preflight.imageUris.count(line.substr(notFound.size())) > 0);
-    if (!line.empty() && !skippedImage) kept += "tinygltf: " + line + "; ";
+    const bool image = line.rfind("Failed to load external 'uri' for image[", 0) == 0 ||
+                       line.rfind("File not found : ", 0) == 0;
+    if (line.empty() || (skipImages && image)) continue;
+    kept += (kept.empty() ? "" : "; ") + gltf::excerpt(line);
   }
   return kept;
 }
 
-bool parse(const std::string& path, const std::vector<unsigned char>& bytes, tinygltf::Model& model,
+// The file's JSON and buffers in tinygltf's model; `preflight` says what was checked and where
+// the base-colour images are.
+bool parse(const std::string& path, const std::vector<unsigned char>& bytes,
+           const GltfLimits& limits, tinygltf::Model& model, gltf::Preflight& preflight,
            std::string& error, std::string& warnings) {
-  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  const bool binary = gltf::isGlb(bytes);
   if (!binary && !(bytes[0] == '{' || bytes[0] == ' ' || bytes[0] == '\n' || bytes[0] == '\t' ||
                    bytes[0] == '\r' || bytes[0] == 0xEF /* UTF-8 BOM */)) {
     error = "not a glTF file (no 'glTF' magic and no JSON object)";
     return false;
   }
   const std::string baseDir = directoryOf(path);
-  gltf::Preflight preflight;
-  if (!gltf::preflight(bytes, baseDir, preflight, error)) return false;
+  if (!gltf::preflight(bytes, baseDir, limits, preflight, error)) return false;
   if (!preflight.imageUris.empty()) {
     warnings += std::to_string(preflight.imageUris.size()) +
-                " image file(s) not read: textures are not used; ";
+                " image file(s) not read: only a material's base-colour image is used; ";
   }
   // Meshopt fallback buffers got placeholders; tinygltf parses the rewritten JSON.
   const std::vector<unsigned char> rewritten = preflight.rewrittenJson.empty()
                                                    ? std::vector<unsigned char>()
                                                    : gltf::withJson(bytes, preflight.rewrittenJson);
   const std::vector<unsigned char>& input = rewritten.empty() ? bytes : rewritten;
+  if (input.size() > 0xffffffffu) {  // tinygltf takes an unsigned int length
+    error = "the JSON rewritten for tinygltf is larger than 4 GiB";
+    return false;
+  }
   GuardedFiles guarded{&preflight};
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skipImage, nullptr);
@@ -120,9 +130,12 @@ bool parse(const std::string& path, const std::vector<unsigned char>& bytes, tin
       binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, input.data(), size, baseDir)
              : loader.LoadASCIIFromString(
                    &model, &err, &warn, reinterpret_cast<const char*>(input.data()), size, baseDir);
-  warnings += usefulWarnings(warn, preflight);
+  if (const std::string kept = tinygltfLines(warn, true); !kept.empty()) {
+    warnings += "tinygltf: " + kept + "; ";
+  }
   if (!ok) {
-    error = err.empty() ? "tinygltf could not parse the file" : err;
+    const std::string said = tinygltfLines(err, false);
+    error = said.empty() ? "tinygltf could not parse the file" : "tinygltf: " + said;
     return false;
   }
   return gltf::decodeMeshoptViews(model, preflight.meshoptFallbacks, error);
@@ -132,7 +145,7 @@ bool nodeLocalTransform(const tinygltf::Node& node, glm::dmat4& out, std::string
   if (node.matrix.size() == 16) {
     out = glm::make_mat4(node.matrix.data());  // glTF and GLM are both column-major
   } else if (!node.matrix.empty()) {
-    error = "node '" + node.name + "' matrix does not have 16 elements";
+    error = "node '" + gltf::excerpt(node.name) + "' matrix does not have 16 elements";
     return false;
   } else {
     glm::dvec3 t(0.0), s(1.0);
@@ -145,7 +158,8 @@ bool nodeLocalTransform(const tinygltf::Node& node, glm::dmat4& out, std::string
     if ((!node.translation.empty() && node.translation.size() != 3) ||
         (!node.scale.empty() && node.scale.size() != 3) ||
         (!node.rotation.empty() && node.rotation.size() != 4)) {
-      error = "node '" + node.name + "' has a malformed translation, rotation or scale";
+      error =
+          "node '" + gltf::excerpt(node.name) + "' has a malformed translation, rotation or scale";
       return false;
     }
     out = glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(glm::normalize(r)) *
@@ -154,7 +168,7 @@ bool nodeLocalTransform(const tinygltf::Node& node, glm::dmat4& out, std::string
   for (int c = 0; c < 4; ++c) {
     for (int r = 0; r < 4; ++r) {
       if (!std::isfinite(out[c][r])) {
-        error = "node '" + node.name + "' has a non-finite transform";
+        error = "node '" + gltf::excerpt(node.name) + "' has a non-finite transform";
         return false;
       }
     }
@@ -163,7 +177,8 @@ bool nodeLocalTransform(const tinygltf::Node& node, glm::dmat4& out, std::string
 }
 
 std::string nodeLabel(std::size_t index, const tinygltf::Node& node) {
-  return "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+  return "node " + std::to_string(index) +
+         (node.name.empty() ? "" : " '" + gltf::excerpt(node.name) + "'");
 }
 
 // Scene coordinates beyond this lose centimetres in float and leave the sample's ~100 m scene
@@ -270,7 +285,7 @@ bool flattenNodes(const tinygltf::Model& model,
     const glm::dmat4 world = item.parent * local;
     if (node.mesh >= 0) {
       if (static_cast<std::size_t>(node.mesh) >= meshMap.size()) {
-        error = "node '" + node.name + "' refers to missing mesh " + std::to_string(node.mesh);
+        error = nodeLabel(nodeIndex, node) + " refers to missing mesh " + std::to_string(node.mesh);
         return false;
       }
       std::vector<glm::dmat4> copies;
@@ -296,7 +311,7 @@ bool flattenNodes(const tinygltf::Model& model,
             error = nodeLabel(nodeIndex, node) + ": " + problem;
             return false;
           }
-          out.instances.push_back(Instance{mesh, glm::mat4(placed), gltf::safeOneLine(node.name)});
+          out.instances.push_back(Instance{mesh, glm::mat4(placed), gltf::excerpt(node.name)});
         }
       }
     }
@@ -315,27 +330,42 @@ bool flattenNodes(const tinygltf::Model& model,
   return true;
 }
 
-bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::string& notes) {
-  // Textures: the base colour's is averaged when embedded; the rest are named in a note (the
-  // first few materials by name, then a count), since the sample shades from factors only.
+// The note on a textured material's textures: what its colour took from them, what it left
+// out and why ("shaded from its factors, without baseColorTexture (its image is not PNG or
+// JPEG), normalTexture").
+std::string textureNote(const tinygltf::Material& source, bool averaged, const std::string& why) {
+  const std::string others = gltf::ignoredTextures(source, true);
+  if (averaged) {
+    return "baseColorTexture averaged into its colour" + (why.empty() ? "" : " (" + why + ")") +
+           (others.empty() ? "" : ", without " + others);
+  }
+  std::string unused = source.pbrMetallicRoughness.baseColorTexture.index >= 0
+                           ? "baseColorTexture (" + why + ")"
+                           : std::string();
+  if (!others.empty()) unused += (unused.empty() ? "" : ", ") + others;
+  return "shaded from its factors, without " + unused;
+}
+
+bool convert(const tinygltf::Model& model, const gltf::Preflight& preflight, Model& out,
+             std::string& error, std::string& notes) {
+  // Textures: the base colour's is averaged into the colour, from wherever the image is; the
+  // rest are named in a note (the first few materials by name, then a count), since the
+  // sample shades from factors only.
   constexpr int kNamed = 4;
   int textured = 0;
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& source = model.materials[i];
     Material material;
     if (!gltf::readMaterial(source, material, error)) return false;
-    material.name = gltf::safeOneLine(material.name);  // printed in the sample's warnings
+    material.name = gltf::excerpt(material.name);  // printed in the sample's warnings
     glm::vec3 mean(1.0f);
     std::string why;
-    const bool averaged = gltf::baseColourTextureMean(model, source, mean, why);
+    const bool averaged = gltf::baseColourTextureMean(model, preflight, source, mean, why);
     if (averaged) material.baseColor *= mean;
-    const std::string unused = gltf::ignoredTextures(source, averaged);
-    if ((averaged || !unused.empty()) && textured++ < kNamed) {
-      notes += "material '" + material.name + "': ";
-      if (averaged) notes += "baseColorTexture averaged into its colour";
-      if (averaged && !unused.empty()) notes += ", ";
-      if (!unused.empty()) notes += "textures not used (" + unused + "), its factors are";
-      notes += "; ";
+    const bool hasTextures = source.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
+                             !gltf::ignoredTextures(source, true).empty();
+    if (hasTextures && textured++ < kNamed) {
+      notes += "material '" + material.name + "': " + textureNote(source, averaged, why) + "; ";
     }
     out.materials.push_back(std::move(material));
   }
@@ -350,17 +380,17 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = source.primitives[p];
       Mesh mesh;
-      mesh.name = gltf::safeOneLine(
-          source.primitives.size() == 1 ? source.name : source.name + "#" + std::to_string(p));
+      mesh.name = gltf::excerpt(source.name) +
+                  (source.primitives.size() == 1 ? "" : "#" + std::to_string(p));
       if (!gltf::readPrimitive(model, primitive, mesh, error, notes)) {
-        error = "mesh " + std::to_string(m) + " '" + source.name + "' primitive " +
+        error = "mesh " + std::to_string(m) + " '" + gltf::excerpt(source.name) + "' primitive " +
                 std::to_string(p) + ": " + error;
         return false;
       }
       if (primitive.material >= 0) {
         if (static_cast<std::size_t>(primitive.material) >= out.materials.size()) {
-          error = "mesh '" + source.name + "' refers to missing material " +
-                  std::to_string(primitive.material);
+          error = "mesh " + std::to_string(m) + " '" + gltf::excerpt(source.name) +
+                  "' refers to missing material " + std::to_string(primitive.material);
           return false;
         }
         mesh.material = static_cast<std::uint32_t>(primitive.material);
@@ -382,15 +412,21 @@ bool convert(const tinygltf::Model& model, Model& out, std::string& error, std::
 
 }  // namespace
 
-bool loadGlb(const std::string& path, Model& out, std::string& error, std::string* warnings) {
+bool loadGlb(const std::string& path, Model& out, std::string& error, std::string* warnings,
+             const GltfLimits& limits) {
   out = Model{};
   std::string problem, notes;
   bool ok = false;
+  // Whatever a library prints meanwhile (Draco, tinygltf; libpng's are caught closer, in
+  // the texture's reason) is named in this file's message instead of reaching stderr.
+  gltf::StderrCapture capture;
   try {
     std::vector<unsigned char> bytes;
     tinygltf::Model model;
+    gltf::Preflight preflight;
     ok = gltf::readRegularFile(path, kMaxFileBytes, bytes, problem) &&
-         parse(path, bytes, model, problem, notes) && convert(model, out, problem, notes);
+         parse(path, bytes, limits, model, preflight, problem, notes) &&
+         convert(model, preflight, out, problem, notes);
   } catch (const std::exception& e) {
     problem = std::string("unexpected failure: ") + e.what();
     ok = false;
@@ -398,12 +434,19 @@ bool loadGlb(const std::string& path, Model& out, std::string& error, std::strin
     problem = "unexpected failure";
     ok = false;
   }
+  const std::string printed = capture.take();
+  if (!printed.empty()) {
+    (ok ? notes : problem) += std::string(ok ? "" : " ") + "(library output: " + printed + ")";
+  }
   if (!ok) {
     out = Model{};
-    error = gltf::safeOneLine(path + ": " + problem);
+    error = gltf::excerpt(path) + ": " +
+            gltf::excerpt(gltf::safeOneLine(problem), gltf::kMaxMessageChars);
     return false;
   }
-  if (warnings != nullptr) *warnings = gltf::safeOneLine(notes);
+  if (warnings != nullptr) {
+    *warnings = gltf::excerpt(gltf::safeOneLine(notes), gltf::kMaxNotesChars);
+  }
   return true;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "gltf_text.h"
 #include "gltf_value.h"
 
 namespace ocean_scene::gltf {
@@ -49,7 +50,7 @@ bool inUnitRange(float v) {
 }
 
 bool fail(const tinygltf::Material& source, const std::string& what, std::string& error) {
-  error = "material '" + source.name + "': " + what;
+  error = "material '" + excerpt(source.name) + "': " + what;
   return false;
 }
 

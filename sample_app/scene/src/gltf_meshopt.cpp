@@ -1,10 +1,12 @@
 #include "gltf_meshopt.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 #include <meshoptimizer.h>
 
+#include "gltf_text.h"
 #include "gltf_value.h"
 
 namespace ocean_scene::gltf {
@@ -23,33 +25,45 @@ struct View {
   std::string mode, filter;
 };
 
+// Reads e[key] into `out` (`absent` when missing, for optional fields); the problem, naming the
+// field and the value found, when it is not a whole number tinygltf kept exactly.
+std::string field(const tinygltf::Value& e, const char* key, long long absent, long long& out) {
+  const tinygltf::Value* v = member(e, key);
+  out = wholeNumber(e, key, absent);
+  if (v == nullptr) return absent < 0 ? std::string(key) + " is missing" : "";
+  if (!v->IsNumber()) return std::string(key) + " is not a number";
+  if (out >= 0) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", v->GetNumberAsDouble());
+  return std::string(key) + " is " + text + "; it must be a whole number in [0, 2^53]";
+}
+
 // The spec's constraints on mode, filter and stride (EXT_meshopt_compression README).
 std::string invalid(const View& v) {
-  if (v.buffer < 0 || v.offset < 0 || v.length < 0 || v.stride <= 0 || v.count < 0) {
-    return "needs non-negative integer buffer, byteOffset, byteLength, byteStride and count";
-  }
+  const std::string stride = "byteStride " + std::to_string(v.stride);
   if (v.mode == "ATTRIBUTES") {
-    if (v.stride % 4 != 0 || v.stride > 256)
-      return "ATTRIBUTES stride must be 4..256, a multiple of 4";
+    if (v.stride < 4 || v.stride % 4 != 0 || v.stride > 256)
+      return stride + ": ATTRIBUTES needs 4..256, a multiple of 4";
   } else if (v.mode == "TRIANGLES") {
     if (v.count % 3 != 0) return "TRIANGLES count must be a multiple of 3";
-    if (v.stride != 2 && v.stride != 4) return "TRIANGLES stride must be 2 or 4";
+    if (v.stride != 2 && v.stride != 4) return stride + ": TRIANGLES needs 2 or 4";
   } else if (v.mode == "INDICES") {
-    if (v.stride != 2 && v.stride != 4) return "INDICES stride must be 2 or 4";
+    if (v.stride != 2 && v.stride != 4) return stride + ": INDICES needs 2 or 4";
   } else {
-    return "mode '" + v.mode.substr(0, 40) + "' is not ATTRIBUTES, TRIANGLES or INDICES";
+    return "mode '" + excerpt(v.mode, 40) + "' is not ATTRIBUTES, TRIANGLES or INDICES";
   }
   if (v.filter != "NONE" && v.mode != "ATTRIBUTES") return "filters apply to ATTRIBUTES only";
   if (v.filter == "OCTAHEDRAL" && v.stride != 4 && v.stride != 8) {
-    return "OCTAHEDRAL stride must be 4 or 8";
+    return stride + ": OCTAHEDRAL needs 4 or 8";
   }
-  if (v.filter == "QUATERNION" && v.stride != 8) return "QUATERNION stride must be 8";
+  if (v.filter == "QUATERNION" && v.stride != 8) return stride + ": QUATERNION needs 8";
   if (v.filter != "NONE" && v.filter != "OCTAHEDRAL" && v.filter != "QUATERNION" &&
       v.filter != "EXPONENTIAL") {
-    return "filter '" + v.filter.substr(0, 40) + "' is unknown";
+    return "filter '" + excerpt(v.filter, 40) + "' is unknown";
   }
   if (std::uint64_t(v.count) > kMaxMeshoptDecodedBytes / std::uint64_t(v.stride)) {
-    return "decodes to more than " + std::to_string(kMaxMeshoptDecodedBytes >> 20) + " MiB";
+    return "count " + std::to_string(v.count) + " x " + stride + " decodes to more than " +
+           std::to_string(kMaxMeshoptDecodedBytes >> 20) + " MiB";
   }
   return "";
 }
@@ -57,12 +71,15 @@ std::string invalid(const View& v) {
 bool decodeView(tinygltf::Model& model, std::size_t index, std::string& error) {
   tinygltf::BufferView& target = model.bufferViews[index];
   const tinygltf::Value& e = target.extensions.at(kExtension);
-  const View v{wholeNumber(e, "buffer", -1),     wholeNumber(e, "byteOffset", 0),
-               wholeNumber(e, "byteLength", -1), wholeNumber(e, "byteStride", -1),
-               wholeNumber(e, "count", -1),      text(e, "mode", ""),
-               text(e, "filter", "NONE")};
+  View v{0, 0, 0, 0, 0, text(e, "mode", ""), text(e, "filter", "NONE")};
   const std::string where = "bufferView " + std::to_string(index) + " " + kExtension + ": ";
-  if (const std::string problem = invalid(v); !problem.empty()) {
+  std::string problem = field(e, "buffer", -1, v.buffer);
+  if (problem.empty()) problem = field(e, "byteOffset", 0, v.offset);
+  if (problem.empty()) problem = field(e, "byteLength", -1, v.length);
+  if (problem.empty()) problem = field(e, "byteStride", -1, v.stride);
+  if (problem.empty()) problem = field(e, "count", -1, v.count);
+  if (problem.empty()) problem = invalid(v);
+  if (!problem.empty()) {
     error = where + problem;
     return false;
   }

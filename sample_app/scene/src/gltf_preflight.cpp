@@ -1,5 +1,7 @@
 #include "gltf_preflight.h"
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -7,7 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gltf_budget.h"
+#include "gltf_data_uri.h"
 #include "gltf_file.h"
+#include "gltf_glb.h"
+#include "gltf_integers.h"
+#include "gltf_text.h"
 
 namespace ocean_scene::gltf {
 
@@ -16,36 +23,14 @@ namespace {
 using Json = nlohmann::json;
 
 // The JSON text: a .gltf is all JSON; a .glb holds it in its first chunk.
-bool jsonText(const std::vector<unsigned char>& bytes, std::string_view& text, std::string& error) {
-  const char* data = reinterpret_cast<const char*>(bytes.data());
-  if (bytes.size() < 4 || std::memcmp(data, "glTF", 4) != 0) {
-    text = std::string_view(data, bytes.size());
+bool jsonText(const std::vector<unsigned char>& bytes, std::string_view& text, GlbLayout& glb,
+              std::string& error) {
+  if (!isGlb(bytes)) {
+    text = std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     return true;
   }
-  const auto u32 = [&](std::size_t at) {
-    std::uint32_t v;
-    std::memcpy(&v, data + at, 4);
-    return v;  // GLB is little-endian, as are the machines this sample targets
-  };
-  if (bytes.size() < 20) {
-    error = "GLB is truncated: " + std::to_string(bytes.size()) + " bytes, header needs 20";
-    return false;
-  }
-  if (u32(4) != 2) {
-    error = "GLB version " + std::to_string(u32(4)) + " is not 2";
-    return false;
-  }
-  const std::uint64_t chunkLength = u32(12);
-  if (u32(16) != 0x4E4F534Au) {  // "JSON"
-    error = "GLB's first chunk is not JSON";
-    return false;
-  }
-  if (20 + chunkLength > bytes.size()) {
-    error = "GLB's JSON chunk (" + std::to_string(chunkLength) + " bytes) runs past the file's " +
-            std::to_string(bytes.size()) + " bytes";
-    return false;
-  }
-  text = std::string_view(data + 20, static_cast<std::size_t>(chunkLength));
+  if (!readGlbLayout(bytes, glb, error)) return false;
+  text = glb.json;
   return true;
 }
 
@@ -187,34 +172,87 @@ bool uriOf(const Json& item, std::string& uri) {
   return true;
 }
 
-bool isDataUri(const std::string& uri) {
-  return uri.rfind("data:", 0) == 0;
+bool isMeshoptFallback(const Json& buffer);
+
+// A buffer's data: URI, checked as tinygltf will decode it: base64 of one of the two media
+// types it reads as data, exactly byteLength bytes.
+bool checkBufferDataUri(const std::string& uri, std::uint64_t byteLength, const std::string& where,
+                        std::string& error) {
+  const std::string what = where + " data: URI (" + std::to_string(uri.size()) + " bytes) ";
+  DataUri data;
+  std::string reason;
+  if (!checkDataUri(uri, data, reason)) {
+    error = what + reason;
+    return false;
+  }
+  if (data.mediaType != "application/octet-stream" && data.mediaType != "application/gltf-buffer") {
+    error = what + "has media type '" + excerpt(data.mediaType) +
+            "'; a buffer's must be application/octet-stream or application/gltf-buffer";
+    return false;
+  }
+  if (data.decodedSize != byteLength) {
+    error = what + "decodes to " + std::to_string(data.decodedSize) + " bytes, byteLength says " +
+            std::to_string(byteLength);
+    return false;
+  }
+  return true;
 }
 
-bool checkBuffers(const Json& root, const std::string& baseDir, Preflight& out,
-                  std::string& error) {
+std::uint64_t byteLengthOf(const Json& buffer) {
+  const auto it = buffer.find("byteLength");
+  return it != buffer.end() && it->is_number_unsigned() ? it->get<std::uint64_t>() : 0;
+}
+
+bool checkBuffers(const Json& root, const std::string& baseDir, const GlbLayout* glb,
+                  Preflight& out, std::string& error) {
   const auto buffers = root.find("buffers");
   if (buffers == root.end() || !buffers->is_array()) return true;
   const std::string folder = realFolder(baseDir);
   for (std::size_t i = 0; i < buffers->size(); ++i) {
+    const Json& buffer = (*buffers)[i];
+    const std::string name = "buffer " + std::to_string(i);
+    const std::uint64_t byteLength = byteLengthOf(buffer);
     std::string uri;
-    // No uri: the GLB's BIN chunk, a meshopt fallback, or tinygltf's error.
-    if (!uriOf((*buffers)[i], uri)) continue;
-    const std::string where = "buffer " + std::to_string(i) + " uri '" + uri.substr(0, 200) + "'";
-    if (isDataUri(uri)) {
-      // Any other data: URI would be taken by tinygltf for a file name.
-      if (uri.rfind("data:application/octet-stream;base64,", 0) != 0 &&
-          uri.rfind("data:application/gltf-buffer;base64,", 0) != 0) {
-        error = "buffer " + std::to_string(i) +
-                " has a data URI that is not base64 application/octet-stream or gltf-buffer";
+    if (!uriOf(buffer, uri)) {
+      if (isMeshoptFallback(buffer)) continue;
+      // Without a uri the data is the GLB's BIN chunk: there must be one, long enough.
+      if (glb == nullptr) {
+        error = name +
+                " has no uri; in a .gltf every buffer needs one (a .glb's BIN chunk "
+                "is the only buffer without)";
         return false;
       }
+      if (glb->binHeader == 0) {
+        error = name +
+                " has no uri, so it is the BIN chunk, but the GLB has none (its JSON "
+                "chunk ends at byte " +
+                std::to_string(glb->jsonEnd) + ", the GLB's length)";
+        return false;
+      }
+      if (byteLength > glb->binLength) {
+        error = name + " byteLength " + std::to_string(byteLength) + " exceeds the BIN chunk's " +
+                std::to_string(glb->binLength) + " bytes (chunk at byte " +
+                std::to_string(glb->binHeader) + ")";
+        return false;
+      }
+      continue;
+    }
+    const std::string where = name + " uri '" + excerpt(uri) + "'";
+    if (isDataUri(uri)) {
+      if (!checkBufferDataUri(uri, byteLength, name, error)) return false;
       continue;
     }
     const std::string decoded = decodeUri(uri);
     std::string resolved, reason;
     if (!resolveInFolder(folder, uri, decoded, resolved, reason)) {
       error = where + " " + reason;
+      return false;
+    }
+    // The file is inside the model's folder, so its size may be said.
+    struct stat status {};
+    if (::stat(resolved.c_str(), &status) == 0 && std::uint64_t(status.st_size) != byteLength) {
+      error = where + " has " + std::to_string(status.st_size) + " bytes, byteLength says " +
+              std::to_string(byteLength);
       return false;
     }
     out.bufferFiles[joinLikeTinygltf(baseDir, decoded)] = resolved;
@@ -273,15 +311,73 @@ bool dropDracoIndices(Json& root) {
   return changed;
 }
 
-void collectImages(const Json& root, Preflight& out) {
-  const auto images = root.find("images");
-  if (images == root.end() || !images->is_array()) return;
-  for (const Json& image : *images) {
-    std::string uri;
-    if (image.is_object() && uriOf(image, uri) && !isDataUri(uri)) {
-      out.imageUris.insert(decodeUri(uri));
+// The images a material's base colour uses (materials -> textures -> source): only those are
+// read, to average their colour; every other image is never opened.
+std::set<std::size_t> baseColourImages(const Json& root) {
+  std::set<std::size_t> used;
+  const auto materials = root.find("materials");
+  const auto textures = root.find("textures");
+  if (materials == root.end() || !materials->is_array() || textures == root.end() ||
+      !textures->is_array()) {
+    return used;
+  }
+  for (const Json& material : *materials) {
+    const Json* index = nullptr;
+    if (material.is_object() && material.contains("pbrMetallicRoughness")) {
+      const Json& pbr = material["pbrMetallicRoughness"];
+      if (pbr.is_object() && pbr.contains("baseColorTexture") &&
+          pbr["baseColorTexture"].is_object() && pbr["baseColorTexture"].contains("index")) {
+        index = &pbr["baseColorTexture"]["index"];
+      }
+    }
+    if (index == nullptr || !index->is_number_unsigned() ||
+        index->get<std::uint64_t>() >= textures->size()) {
+      continue;
+    }
+    const Json& texture = (*textures)[index->get<std::size_t>()];
+    if (texture.is_object() && texture.contains("source") &&
+        texture["source"].is_number_unsigned()) {
+      used.insert(texture["source"].get<std::size_t>());
     }
   }
+  return used;
+}
+
+bool collectImages(const Json& root, const std::string& baseDir, Preflight& out,
+                   std::string& error) {
+  const auto images = root.find("images");
+  if (images == root.end() || !images->is_array()) return true;
+  const std::set<std::size_t> used = baseColourImages(root);
+  const std::string folder = used.empty() ? std::string() : realFolder(baseDir);
+  for (std::size_t i = 0; i < images->size(); ++i) {
+    std::string uri;
+    if (!(*images)[i].is_object() || !uriOf((*images)[i], uri)) continue;  // a bufferView's
+    const bool baseColour = used.count(i) > 0;
+    if (isDataUri(uri)) {
+      // tinygltf decodes it (a base-colour image or not), so a broken one is refused with the
+      // reason, not tinygltf's echo of the whole URI.
+      DataUri data;
+      std::string reason;
+      if (!checkDataUri(uri, data, reason)) {
+        error = "image " + std::to_string(i) + " data: URI (" + std::to_string(uri.size()) +
+                " bytes) " + reason;
+        return false;
+      }
+      if (baseColour) out.baseColourImages[i].dataUri = uri;
+      continue;
+    }
+    const std::string decoded = decodeUri(uri);
+    if (!baseColour) {
+      out.imageUris.insert(decoded);
+      continue;
+    }
+    ImageSource& source = out.baseColourImages[i];
+    std::string reason;
+    if (!resolveInFolder(folder, uri, decoded, source.file, reason)) {
+      source.problem = "its file '" + excerpt(uri) + "' " + reason;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -291,16 +387,20 @@ std::string joinLikeTinygltf(const std::string& dir, const std::string& file) {
   return dir.back() == '/' ? dir + file : dir + "/" + file;
 }
 
-bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseDir, Preflight& out,
-               std::string& error) {
+bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseDir,
+               const GltfLimits& limits, Preflight& out, std::string& error) {
   std::string_view text;
-  if (!jsonText(bytes, text, error) || !depthWithin(text, kMaxJsonDepth, error)) return false;
+  GlbLayout glb;
+  if (!jsonText(bytes, text, glb, error) || !depthWithin(text, kMaxJsonDepth, error) ||
+      !nodesWithinBudget(text, limits, error)) {
+    return false;
+  }
   // Depth is bounded now, so even a recursive parser is safe.
   Json root;
   try {
     root = Json::parse(text.begin(), text.end());
   } catch (const Json::exception& e) {
-    error = std::string("invalid JSON: ") + e.what();  // the caller escapes non-UTF-8 bytes
+    error = "invalid JSON: " + excerpt(e.what());
     return false;
   }
   if (!root.is_object()) {
@@ -311,11 +411,12 @@ bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseD
   if (!checkArrayFields(root, "accessors", {"bufferView", "byteOffset", "count"}, error) ||
       !checkArrayFields(root, "bufferViews", {"buffer", "byteOffset", "byteLength", "byteStride"},
                         error) ||
-      !checkArrayFields(root, "buffers", {"byteLength"}, error)) {
+      !checkArrayFields(root, "buffers", {"byteLength"}, error) || !integersFit(root, error) ||
+      !withinBudget(root, limits, error) ||
+      !checkBuffers(root, baseDir, isGlb(bytes) ? &glb : nullptr, out, error) ||
+      !collectImages(root, baseDir, out, error)) {
     return false;
   }
-  if (!checkBuffers(root, baseDir, out, error)) return false;
-  collectImages(root, out);
   const bool meshopt = placeholdMeshoptFallbacks(root, out);
   const bool draco = dropDracoIndices(root);
   if (meshopt || draco) out.rewrittenJson = root.dump();
@@ -326,9 +427,11 @@ std::vector<unsigned char> withJson(const std::vector<unsigned char>& bytes,
                                     const std::string& json) {
   const bool binary = bytes.size() >= 20 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (!binary) return std::vector<unsigned char>(json.begin(), json.end());
-  std::uint32_t oldChunk = 0;
+  std::uint32_t oldChunk = 0, length = 0;
   std::memcpy(&oldChunk, bytes.data() + 12, 4);
-  const std::size_t rest = 20 + std::size_t(oldChunk);  // inside the file: preflight checked
+  std::memcpy(&length, bytes.data() + 8, 4);
+  // Inside the file: preflight checked. Bytes past the GLB's length are not carried over.
+  const std::size_t rest = 20 + std::size_t(oldChunk);
   std::string padded = json;
   while (padded.size() % 4 != 0) padded += ' ';
   std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 12);
@@ -339,7 +442,8 @@ std::vector<unsigned char> withJson(const std::vector<unsigned char>& bytes,
   put(static_cast<std::uint32_t>(padded.size()));
   put(0x4E4F534Au);  // "JSON"
   out.insert(out.end(), padded.begin(), padded.end());
-  out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(rest), bytes.end());
+  out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(rest),
+             bytes.begin() + static_cast<std::ptrdiff_t>(length));
   const std::uint32_t total = static_cast<std::uint32_t>(out.size());
   std::memcpy(out.data() + 8, &total, 4);
   return out;

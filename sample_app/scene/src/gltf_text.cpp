@@ -36,7 +36,37 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
   return length;
 }
 
+// One character of `text` at i as it may be printed, and how many bytes it took.
+std::string printable(std::string_view text, std::size_t i, std::size_t& taken) {
+  const std::size_t length = utf8Length(text, i);
+  const auto lead = static_cast<unsigned char>(text[i]);
+  if (length == 0 || (length == 1 && (lead < 0x20 || lead == 0x7F))) {
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02X", lead);
+    taken = 1;
+    return escaped;
+  }
+  taken = length;
+  return std::string(text.substr(i, length));
+}
+
 }  // namespace
+
+std::string excerpt(std::string_view value, std::size_t limit, std::size_t ofBytes) {
+  std::string out;
+  std::size_t characters = 0;
+  for (std::size_t i = 0; i < value.size();) {
+    if (characters == limit) {
+      return out + "\u2026 (" + std::to_string(ofBytes > value.size() ? ofBytes : value.size()) +
+             " bytes)";
+    }
+    std::size_t taken = 0;
+    out += printable(value, i, taken);
+    i += taken;
+    ++characters;
+  }
+  return out;
+}
 
 std::string safeOneLine(std::string_view text) {
   std::string out;
@@ -48,17 +78,9 @@ std::string safeOneLine(std::string_view text) {
       ++i;
       continue;
     }
-    const std::size_t length = utf8Length(text, i);
-    const auto lead = static_cast<unsigned char>(c);
-    if (length == 0 || (length == 1 && (lead < 0x20 || lead == 0x7F))) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02X", lead);
-      out += escaped;
-      ++i;
-      continue;
-    }
-    out.append(text.substr(i, length));
-    i += length;
+    std::size_t taken = 0;
+    out += printable(text, i, taken);
+    i += taken;
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
   return out;

@@ -10,6 +10,10 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include "gltf_data_uri.h"
+#include "gltf_file.h"
+#include "gltf_stderr.h"
+
 namespace ocean_scene::gltf {
 
 namespace {
@@ -63,10 +67,95 @@ bool pngChunksWhole(const unsigned char* data, std::size_t size) {
   return false;
 }
 
+// The image's encoded bytes, from wherever the file keeps them; false with the reason.
+bool imageBytes(const tinygltf::Model& model, const Preflight& preflight, int source,
+                std::vector<unsigned char>& owned, const unsigned char*& bytes, std::size_t& size,
+                std::string& reason) {
+  const tinygltf::Image& image = model.images[std::size_t(source)];
+  if (image.bufferView >= 0) {
+    if (static_cast<std::size_t>(image.bufferView) >= model.bufferViews.size()) {
+      reason = "its image's bufferView does not exist";
+      return false;
+    }
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(image.bufferView)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
+      reason = "its image's bufferView has no buffer";
+      return false;
+    }
+    const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
+    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
+      reason = "its image's bufferView lies outside its buffer";
+      return false;
+    }
+    bytes = data.data() + view.byteOffset;
+    size = view.byteLength;
+    return true;
+  }
+  const auto found = preflight.baseColourImages.find(std::size_t(source));
+  if (found == preflight.baseColourImages.end()) {
+    reason = "its image has neither a bufferView nor a uri";
+    return false;
+  }
+  const ImageSource& where = found->second;
+  if (!where.dataUri.empty()) {
+    owned = decodeDataUri(where.dataUri);
+  } else if (!where.file.empty()) {
+    std::string problem;
+    if (!readRegularFile(where.file, kMaxImageFileBytes, owned, problem)) {
+      reason = "its file " + problem;
+      return false;
+    }
+  } else {
+    reason = where.problem;
+    return false;
+  }
+  bytes = owned.data();
+  size = owned.size();
+  return true;
+}
+
+// OpenImageIO's reader for the bytes, told by their signature (as a file's name would tell
+// it); nullptr for anything but PNG and JPEG.
+const char* readerName(const unsigned char* bytes, std::size_t size) {
+  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size >= 8 && std::memcmp(bytes, kPng, 8) == 0) return "image.png";
+  if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) return "image.jpg";
+  return nullptr;
+}
+
+// The decoded texels of the image as floats; false with the reason.
+bool decode(const unsigned char* bytes, std::size_t size, const char* name, OIIO::ImageSpec& spec,
+            std::vector<float>& texels, std::string& reason) {
+  OIIO::Filesystem::IOMemReader memory(bytes, size);
+  auto input = OIIO::ImageInput::open(name, nullptr, &memory);
+  if (!input) {
+    (void)OIIO::geterror();  // consumed, so it is not reported later by someone else
+    reason = "its image could not be decoded";
+    return false;
+  }
+  spec = input->spec();
+  const long long pixels = static_cast<long long>(spec.width) * spec.height;
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels < 1 ||
+      pixels > kMaxTexturePixels) {
+    reason =
+        "its image is empty or larger than " + std::to_string(kMaxTexturePixels >> 20) + " Mpixels";
+    return false;
+  }
+  texels.resize(static_cast<std::size_t>(pixels) * std::size_t(spec.nchannels));
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, texels.data())) {
+    (void)input->geterror();
+    reason = "its image could not be decoded";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
-bool baseColourTextureMean(const tinygltf::Model& model, const tinygltf::Material& material,
-                           glm::vec3& mean, std::string& reason) {
+bool baseColourTextureMean(const tinygltf::Model& model, const Preflight& preflight,
+                           const tinygltf::Material& material, glm::vec3& mean,
+                           std::string& reason) {
+  reason.clear();
   const int textureIndex = material.pbrMetallicRoughness.baseColorTexture.index;
   if (textureIndex < 0 || static_cast<std::size_t>(textureIndex) >= model.textures.size()) {
     reason = "no base-colour texture";
@@ -77,57 +166,30 @@ bool baseColourTextureMean(const tinygltf::Model& model, const tinygltf::Materia
     reason = "its texture has no image";
     return false;
   }
-  const tinygltf::Image& image = model.images[std::size_t(source)];
-  if (image.bufferView < 0 ||
-      static_cast<std::size_t>(image.bufferView) >= model.bufferViews.size()) {
-    reason = "its image is not embedded (image files are not opened)";
-    return false;
-  }
-  // The name only tells OpenImageIO which reader to try; the bytes come from memory.
-  const char* name = image.mimeType == "image/png"    ? "embedded.png"
-                     : image.mimeType == "image/jpeg" ? "embedded.jpg"
-                                                      : nullptr;
+  std::vector<unsigned char> owned;
+  const unsigned char* bytes = nullptr;
+  std::size_t size = 0;
+  if (!imageBytes(model, preflight, source, owned, bytes, size, reason)) return false;
+  const char* name = readerName(bytes, size);
   if (name == nullptr) {
     reason = "its image is not PNG or JPEG";
     return false;
   }
-  const tinygltf::BufferView& view = model.bufferViews[std::size_t(image.bufferView)];
-  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
-    reason = "its image's bufferView has no buffer";
-    return false;
-  }
-  const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
-  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
-    reason = "its image's bufferView lies outside its buffer";
-    return false;
-  }
-  const unsigned char* bytes = data.data() + view.byteOffset;
-  if (image.mimeType == "image/png" && !pngChunksWhole(bytes, view.byteLength)) {
+  if (std::strcmp(name, "image.png") == 0 && !pngChunksWhole(bytes, size)) {
     reason = "its PNG is damaged or cut short";
     return false;
   }
-  OIIO::Filesystem::IOMemReader memory(bytes, view.byteLength);
-  auto input = OIIO::ImageInput::open(name, nullptr, &memory);
-  if (!input) {
-    (void)OIIO::geterror();  // consumed, so it is not reported later by someone else
-    reason = "its image could not be decoded";
-    return false;
+  OIIO::ImageSpec spec;
+  std::vector<float> texels;
+  // libpng reports through its default handlers, on stderr: caught and named here.
+  StderrCapture capture;
+  const bool decoded = decode(bytes, size, name, spec, texels, reason);
+  if (const std::string printed = capture.take(); !printed.empty()) {
+    reason += (reason.empty() ? "" : ": ") + printed;
   }
-  const OIIO::ImageSpec& spec = input->spec();
-  const long long pixels = static_cast<long long>(spec.width) * spec.height;
-  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels < 1 ||
-      pixels > kMaxTexturePixels) {
-    reason =
-        "its image is empty or larger than " + std::to_string(kMaxTexturePixels >> 20) + " Mpixels";
-    return false;
-  }
+  if (!decoded) return false;
   const int channels = spec.nchannels;
-  std::vector<float> texels(static_cast<std::size_t>(pixels) * std::size_t(channels));
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, texels.data())) {
-    (void)input->geterror();
-    reason = "its image could not be decoded";
-    return false;
-  }
+  const long long pixels = static_cast<long long>(spec.width) * spec.height;
   glm::dvec3 sum(0.0);
   for (long long p = 0; p < pixels; ++p) {
     const float* t = &texels[std::size_t(p) * std::size_t(channels)];
