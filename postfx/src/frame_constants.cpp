@@ -35,12 +35,22 @@ glm::dmat3 viewToWorldRotation(const glm::mat4& view) {
   return glm::transpose(glm::dmat3(glm::mat3(view)));
 }
 
+namespace {
+
+// Horizontal offset per metre of depth of sunlight from `towardSun` refracted by a surface of
+// unit normal `normal`.
+glm::dvec2 landingOffsetPerDepth(const glm::dvec3& towardSun, const glm::dvec3& normal,
+                                 double ior) {
+  const glm::dvec3 t = glm::refract(-towardSun, normal, 1.0 / ior);
+  return glm::dvec2(t.x, t.z) / std::max(-t.y, 1e-6);
+}
+
+}  // namespace
+
 glm::dvec4 landingDriftJacobian(const glm::dvec3& towardSun, double ior) {
   // Central differences of the exact offset per metre of depth; it is smooth in the slopes.
   auto drift = [&](double sx, double sz) {
-    const glm::dvec3 n = glm::normalize(glm::dvec3(-sx, 1.0, -sz));
-    const glm::dvec3 t = glm::refract(-towardSun, n, 1.0 / ior);
-    return glm::dvec2(t.x, t.z) / std::max(-t.y, 1e-6);
+    return landingOffsetPerDepth(towardSun, glm::normalize(glm::dvec3(-sx, 1.0, -sz)), ior);
   };
   const double e = 1e-4;
   const glm::dvec2 dx = (drift(e, 0.0) - drift(-e, 0.0)) / (2.0 * e);
@@ -55,8 +65,7 @@ glm::dvec3 sunDiscLandingCovariance(const glm::dvec3& towardSun, double ior, dou
   const glm::dvec3 side = glm::normalize(glm::cross(sun, helper));
   const glm::dvec3 up = glm::cross(side, sun);
   auto drift = [&](const glm::dvec3& toward) {
-    const glm::dvec3 t = refractedSunDown(glm::normalize(toward), ior);
-    return glm::dvec2(t.x, t.z) / std::max(-t.y, 1e-6);
+    return landingOffsetPerDepth(glm::normalize(toward), glm::dvec3(0.0, 1.0, 0.0), ior);
   };
   const double e = 1e-4;
   const glm::dvec2 a = (drift(sun + e * side) - drift(sun - e * side)) / (2.0 * e);

@@ -19,6 +19,13 @@ namespace {
 constexpr std::uint64_t kSpreadStatisticsBytes =
     std::uint64_t(kMaxCascades) * shared::TILE_SPREAD_PARTS * 16;
 
+// The spread's blur buffer: two float copies of every slot's depth layers (0 without it).
+std::uint64_t spreadBlurBytes(const TileIrradianceLayout& l) {
+  return l.spread ? 2 * std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
+                        std::uint64_t(std::max(l.cascadeCount, 1)) * std::uint64_t(l.layers) * 4
+                  : 0;
+}
+
 float tileClamp(const FrameDesc& frame) {
   return std::min(frame.caustics.maxIrradiance, shared::TILE_MAX_IRRADIANCE);
 }
@@ -78,11 +85,7 @@ std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l) {
   const std::uint64_t accumulators = std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
                                      std::uint64_t(std::max(l.cascadeCount, 1)) *
                                      std::uint64_t(l.layers);
-  const std::uint64_t spread =
-      l.spread ? 2 * std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
-                         std::uint64_t(std::max(l.cascadeCount, 1)) * std::uint64_t(l.layers) * 4 +
-                     kSpreadStatisticsBytes
-               : 0;
+  const std::uint64_t spread = l.spread ? spreadBlurBytes(l) + kSpreadStatisticsBytes : 0;
   return texels * arrayLayers * 8 + accumulators * 4 + spread;
 }
 
@@ -138,9 +141,7 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
     accumulatorBytes_ = bytes;
   }
   // The spread's buffers only while it is on: a frame without it holds none.
-  const GLsizeiptr blurBytes = l.spread ? GLsizeiptr(2) * l.resolution * l.resolution *
-                                              std::max(l.cascadeCount, 1) * l.layers * 4
-                                        : 0;
+  const GLsizeiptr blurBytes = static_cast<GLsizeiptr>(spreadBlurBytes(l));
   if (blurBytes_ != blurBytes) {
     blur_.reset();
     spreadStatisticsBuffer_.reset();

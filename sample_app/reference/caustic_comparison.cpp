@@ -35,6 +35,8 @@ CausticComparison compareAddedLight(const std::vector<double>& method,
   c.relativeRmse = reference2 > 0.0 ? std::sqrt(error2 / reference2) : 0.0;
   c.correlation =
       varianceM > 0.0 && varianceR > 0.0 ? covariance / std::sqrt(varianceM * varianceR) : 0.0;
+  c.methodStd = std::sqrt(varianceM / static_cast<double>(c.pixels));
+  c.referenceStd = std::sqrt(varianceR / static_cast<double>(c.pixels));
   return c;
 }
 

@@ -12,6 +12,7 @@ struct CausticComparison {
   double relativeRmse = 0.0;  // sqrt(sum (m - r)^2 / sum r^2)
   double correlation = 0.0;   // Pearson's r of m and r; 0 when either is constant
   double methodMean = 0.0, referenceMean = 0.0;
+  double methodStd = 0.0, referenceStd = 0.0;  // population standard deviations over the mask
 };
 
 // `method` and `reference`: the light each adds at every pixel (e.g. the luminance of frame

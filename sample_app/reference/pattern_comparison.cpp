@@ -1,5 +1,7 @@
 #include "pattern_comparison.h"
 
+#include "caustic_comparison.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -222,30 +224,14 @@ PatternComparison comparePatterns(const std::vector<double>& method,
   }
   c.pixels = pm.size();
   if (c.pixels == 0) return c;
-  double sumM = 0.0, sumR = 0.0;
-  for (size_t k = 0; k < c.pixels; ++k) {
-    sumM += pm[k];
-    sumR += pr[k];
-  }
-  c.methodMean = sumM / double(c.pixels);
-  c.referenceMean = sumR / double(c.pixels);
-  double error2 = 0.0, reference2 = 0.0, covariance = 0.0, varianceM = 0.0, varianceR = 0.0;
-  for (size_t k = 0; k < c.pixels; ++k) {
-    const double e = pm[k] - pr[k];
-    error2 += e * e;
-    reference2 += pr[k] * pr[k];
-    const double dm = pm[k] - c.methodMean, dr = pr[k] - c.referenceMean;
-    covariance += dm * dr;
-    varianceM += dm * dm;
-    varianceR += dr * dr;
-  }
-  c.relativeRmse = reference2 > 0.0 ? std::sqrt(error2 / reference2) : 0.0;
-  c.correlation =
-      varianceM > 0.0 && varianceR > 0.0 ? covariance / std::sqrt(varianceM * varianceR) : 0.0;
-  const double count = double(c.pixels);
-  c.methodContrast = c.methodMean != 0.0 ? std::sqrt(varianceM / count) / c.methodMean : 0.0;
-  c.referenceContrast =
-      c.referenceMean != 0.0 ? std::sqrt(varianceR / count) / c.referenceMean : 0.0;
+  const CausticComparison stats =
+      compareAddedLight(c.methodPattern, c.referencePattern, c.compared);
+  c.methodMean = stats.methodMean;
+  c.referenceMean = stats.referenceMean;
+  c.relativeRmse = stats.relativeRmse;
+  c.correlation = stats.correlation;
+  c.methodContrast = c.methodMean != 0.0 ? stats.methodStd / c.methodMean : 0.0;
+  c.referenceContrast = c.referenceMean != 0.0 ? stats.referenceStd / c.referenceMean : 0.0;
   c.methodP99 = percentile99(pm);
   c.referenceP99 = percentile99(pr);
   c.spectrum =
