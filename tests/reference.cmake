@@ -44,7 +44,7 @@ target_include_directories(postfx_tile_irradiance_tests
 # pixel) on scenes with known answers; CPU only.
 postfx_add_test(reference_frame_tests
   SOURCES unit/reference_frame_test.cpp unit/reference_compare_test.cpp
-          unit/pattern_comparison_test.cpp
+          unit/pattern_comparison_test.cpp unit/reference_frame_casters_test.cpp
   LIBS ocean_reference)
 
 # The traced frame reference's light against the plugin's own added light (same units).

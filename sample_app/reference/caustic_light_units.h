@@ -19,8 +19,14 @@
 
 namespace ocean::reference {
 
+//
+// The object caustics' composite (shaders/postfx/object_caustics_composite.frag) adds, for the
+// sun, albedo * E_sun * objectIntensity * exp(-absorption d / u.y) * [caustic * (n.u)] * (the
+// same view extinction), no surface fade, caustic the map's irradiance relative to the sun's
+// across the refracted beam: [caustic (n.u)] is again E u.y for traced irradiance E.
 struct CausticLightUnits {
   glm::vec3 lightScale{1.0f};          // E_sun * intensity
+  glm::vec3 objectLightScale{1.0f};    // E_sun * ObjectCausticsSettings::intensity
   glm::vec3 absorptionPerDepth{0.0f};  // absorption / u.y (1/m)
   float fadeDepth = 0.0f;              // CausticsSettings::surfaceFadeDepth
   double upY = 1.0;                    // u.y
@@ -34,5 +40,11 @@ CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame);
 // `viewDistance`: metres from the camera to the receiver.
 glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
                                 double depthBelow, double tracedIrradiance, double viewDistance);
+
+// What the plugin's object caustics would add with their map replaced by traced irradiance
+// `tracedIrradiance` (per channel) of light that went through or off a caster.
+glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                      double depthBelow, const glm::dvec3& tracedIrradiance,
+                                      double viewDistance);
 
 }  // namespace ocean::reference

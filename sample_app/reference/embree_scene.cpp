@@ -162,6 +162,7 @@ bool EmbreeScene::intersect(const glm::dvec3& from, const glm::dvec3& dir, doubl
   }
   hit.t = query.ray.tfar;
   hit.normal = n;
+  hit.mesh = static_cast<int>(query.hit.geomID);
   return true;
 }
 

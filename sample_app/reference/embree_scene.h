@@ -20,6 +20,7 @@ struct TriangleMesh {
 struct RayHit {
   double t = 0.0;     // distance along the unit direction
   glm::dvec3 normal;  // interpolated vertex normal at the hit, unit (the surface's shading normal)
+  int mesh = -1;      // index of the hit mesh in the list EmbreeScene::create was given
 };
 
 class EmbreeScene {

@@ -26,7 +26,11 @@ constexpr double kMinNormalAgreement = 0.5;
 
 struct Accumulator {
   std::vector<std::int64_t> sum;
-  void reset(size_t n) { sum.assign(n, 0); }
+  std::vector<std::int64_t> object;  // 3 per pixel (RGB), with casters only
+  void reset(size_t n, bool casters) {
+    sum.assign(n, 0);
+    object.assign(casters ? 3 * n : 0, 0);
+  }
 };
 
 // Where the sun ray through the mean plane at world (u, v) meets the surface: the root of
@@ -87,7 +91,37 @@ struct Frame {
   // Per pixel: how many pixels around a photon projected there can hold it in their kernel.
   std::vector<int> window;
   SunDisc disc{glm::dvec3(0.0, 1.0, 0.0), 0.0};
+  CasterPathDesc casterPath;
 };
+
+// A photon of `weight` (per channel) landing at x on a surface of normal `normal`: added to
+// the kernel sums (Channels per pixel) of every pixel whose kernel holds it.
+template <int Channels>
+void splat(const Frame& f, const glm::dvec3& x, const glm::dvec3& normal, const double* weight,
+           std::int64_t* sums) {
+  const FrameReceivers& r = f.receivers;
+  glm::dvec2 pixel;
+  if (!r.project(x, pixel)) return;
+  const int cx = static_cast<int>(std::floor(pixel.x)), cy = static_cast<int>(std::floor(pixel.y));
+  if (cx < -64 || cy < -64 || cx >= r.width + 64 || cy >= r.height + 64) return;
+  const int w0 = f.window[static_cast<size_t>(std::clamp(cy, 0, r.height - 1)) * r.width +
+                          std::clamp(cx, 0, r.width - 1)];
+  const int x0 = std::max(cx - w0, 0), x1 = std::min(cx + w0, r.width - 1);
+  const int y0 = std::max(cy - w0, 0), y1 = std::min(cy + w0, r.height - 1);
+  for (int py = y0; py <= y1; ++py) {
+    for (int px = x0; px <= x1; ++px) {
+      const size_t i = static_cast<size_t>(py) * r.width + px;
+      const double r2 = f.radiusSquared[i];
+      if (!(r2 > 0.0)) continue;
+      const glm::dvec3 d = x - r.position[i];
+      const double d2 = glm::dot(d, d);
+      if (!(d2 < r2) || glm::dot(normal, r.normal[i]) < kMinNormalAgreement) continue;
+      const double k = (2.0 / (kPi * r2)) * (1.0 - d2 / r2);
+      for (int c = 0; c < Channels; ++c)
+        sums[i * Channels + static_cast<size_t>(c)] += std::llround(weight[c] * k * kSumScale);
+    }
+  }
+}
 
 // One cell's photons of one batch, splatted into `acc`.
 void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cellX, int cellZ,
@@ -108,6 +142,10 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
   const glm::dvec2 corner = plan.origin + glm::dvec2(cellX, cellZ) * plan.cellSize;
   const FrameReceivers& r = f.receivers;
   const double levelRelative = r.level - r.camera.y;
+  const std::function<void(const CasterLanding&)> land = [&f, &acc](const CasterLanding& l) {
+    const double weight[3] = {l.weight.x, l.weight.y, l.weight.z};
+    splat<3>(f, l.point, l.normal, weight, acc.object.data());
+  };
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b < n; ++b) {
       const double u = corner.x + (a + random.nextUniform()) * step;
@@ -132,27 +170,11 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
       if (!f.scene.intersect(from, dir, 0.0, 1e30, hit)) continue;
       if (!(glm::dot(dir, hit.normal) < 0.0)) continue;  // a face turned away absorbs it
       const glm::dvec3 x = from + dir * hit.t;
-      glm::dvec2 pixel;
-      if (!r.project(x, pixel)) continue;
-      const int cx = static_cast<int>(std::floor(pixel.x)),
-                cy = static_cast<int>(std::floor(pixel.y));
-      if (cx < -64 || cy < -64 || cx >= r.width + 64 || cy >= r.height + 64) continue;
-      const int w0 = f.window[static_cast<size_t>(std::clamp(cy, 0, r.height - 1)) * r.width +
-                              std::clamp(cx, 0, r.width - 1)];
-      const int x0 = std::max(cx - w0, 0), x1 = std::min(cx + w0, r.width - 1);
-      const int y0 = std::max(cy - w0, 0), y1 = std::min(cy + w0, r.height - 1);
-      for (int py = y0; py <= y1; ++py) {
-        for (int px = x0; px <= x1; ++px) {
-          const size_t i = static_cast<size_t>(py) * r.width + px;
-          const double r2 = f.radiusSquared[i];
-          if (!(r2 > 0.0)) continue;
-          const glm::dvec3 d = x - r.position[i];
-          const double d2 = glm::dot(d, d);
-          if (!(d2 < r2) || glm::dot(hit.normal, r.normal[i]) < kMinNormalAgreement) continue;
-          const double c = w * (2.0 / (kPi * r2)) * (1.0 - d2 / r2);
-          acc.sum[i] += std::llround(c * kSumScale);
-        }
-      }
+      const double weight[1] = {w};
+      splat<1>(f, x, hit.normal, weight, acc.sum.data());
+      if (isCaster(f.desc.casters, hit.mesh))
+        followThroughCasters(f.scene, f.desc.casters, f.casterPath, from, dir, hit, glm::dvec3(w),
+                             random, land);
     }
   }
 }
@@ -172,6 +194,20 @@ bool litByFlatWater(const Frame& f, size_t i) {
   return !(f.scene.boundsMax().y > atSurface.y && f.scene.occluded(atSurface, f.sun, 0.0, 1e30));
 }
 
+// Under flat water the light reaching receiver i passes through a caster first: the unperturbed
+// refracted ray up from it meets a caster before the water plane.
+bool inCasterShadow(const Frame& f, size_t i) {
+  const FrameReceivers& r = f.receivers;
+  const glm::dvec3& q = r.position[i];
+  const glm::dvec3& n = r.normal[i];
+  if (!(glm::dot(n, f.up) > 0.0)) return false;
+  const glm::dvec3 from = q + n * std::max(1e-3, 1e-4 * glm::length(q));
+  const double toSurface = (r.level - r.camera.y - from.y) / f.up.y;
+  RayHit hit;
+  return toSurface > 0.0 && f.scene.intersect(from, f.up, 0.0, toSurface, hit) &&
+         isCaster(f.desc.casters, hit.mesh);
+}
+
 }  // namespace
 
 FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& scene,
@@ -188,10 +224,18 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   const glm::dvec3 sun = glm::normalize(desc.towardSun);
   if (!(sun.y > 0.0) || count == 0 || receivers.position.size() != count) return result;
 
-  Frame f{water, scene, receivers, desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior), 1.0, {}, {}};
+  Frame f{water, scene, receivers,         desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior), 1.0,
+          {},    {},    SunDisc(sun, 0.0), {}};
   f.flatTransmittance = fresnelTransmittance(sun.y, desc.ior);
   f.disc = SunDisc(sun, desc.sunAngularRadius);
   f.radiusSquared.assign(count, 0.0);
+  const bool casters = !desc.casters.empty();
+  f.casterPath.waterIor = desc.ior;
+  f.casterPath.waterLevel = receivers.level - receivers.camera.y;
+  if (casters) {
+    result.objectIrradiance.assign(count, glm::dvec3(0.0));
+    result.casterShadow.assign(count, 0);
+  }
 
   // Kernels, flat irradiance, lit mask and what each receiver needs from the launch.
   const double rpp = receivers.radiansPerPixel();
@@ -246,12 +290,16 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     for (int t = 0; t < threadCount; ++t) {
       threads.emplace_back([&, t] {
         for (size_t i = static_cast<size_t>(t); i < count; i += static_cast<size_t>(threadCount))
-          if (receivers.valid[i]) result.lit[i] = litByFlatWater(f, i) ? 1 : 0;
+          if (receivers.valid[i]) {
+            result.lit[i] = litByFlatWater(f, i) ? 1 : 0;
+            if (casters && !result.lit[i]) result.casterShadow[i] = inCasterShadow(f, i) ? 1 : 0;
+          }
       });
     }
     for (std::thread& thread : threads) thread.join();
   }
   for (size_t i = 0; i < count; ++i) result.litPixels += result.lit[i];
+  for (std::uint8_t s : result.casterShadow) result.casterShadowPixels += s;
 
   PhotonLaunchPlan plan = planPhotonLaunch(needs, desc.cellSize);
   if (plan.photons() > static_cast<double>(desc.maxPhotonsPerBatch)) {
@@ -265,12 +313,15 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   // Per pixel, over batches: the sum of the batch estimates and of their squares (summed in
   // batch order from the integer batch sums: deterministic).
   std::vector<double> sum(count, 0.0), squares(count, 0.0);
+  // With casters, apart: the seabed estimate's and the object light's sums.
+  std::vector<double> seabedSum(casters ? count : 0, 0.0);
+  std::vector<glm::dvec3> objectSum(casters ? count : 0, glm::dvec3(0.0));
   Accumulator batchTotal;
   std::vector<Accumulator> partial(static_cast<size_t>(threadCount));
   for (int batch = 0; batch < std::max(desc.maxBatches, 1); ++batch) {
     std::vector<std::thread> threads;
     for (int t = 0; t < threadCount; ++t) {
-      partial[static_cast<size_t>(t)].reset(count);
+      partial[static_cast<size_t>(t)].reset(count, casters);
       threads.emplace_back([&, t] {
         for (int row = t; row < plan.rows; row += threadCount)
           for (int column = 0; column < plan.columns; ++column)
@@ -278,11 +329,21 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
       });
     }
     for (std::thread& thread : threads) thread.join();
-    batchTotal.reset(count);
-    for (const Accumulator& p : partial)
+    batchTotal.reset(count, casters);
+    for (const Accumulator& p : partial) {
       for (size_t i = 0; i < count; ++i) batchTotal.sum[i] += p.sum[i];
+      for (size_t k = 0; k < p.object.size(); ++k) batchTotal.object[k] += p.object[k];
+    }
     for (size_t i = 0; i < count; ++i) {
-      const double estimate = static_cast<double>(batchTotal.sum[i]) / kSumScale;
+      double estimate = static_cast<double>(batchTotal.sum[i]) / kSumScale;
+      if (casters) {
+        const glm::dvec3 object(static_cast<double>(batchTotal.object[3 * i]),
+                                static_cast<double>(batchTotal.object[3 * i + 1]),
+                                static_cast<double>(batchTotal.object[3 * i + 2]));
+        seabedSum[i] += estimate;
+        objectSum[i] += object / kSumScale;
+        estimate += (object.x + object.y + object.z) / (3.0 * kSumScale);
+      }
       sum[i] += estimate;
       squares[i] += estimate * estimate;
     }
@@ -292,15 +353,19 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     litNoise.clear();
     for (size_t i = 0; i < count; ++i) {
       if (!receivers.valid[i]) continue;
-      const double e = sum[i] / batches;
+      const double e = sum[i] / batches;  // seabed + mean object light
       // Standard error of the mean of independent batch estimates, from their scatter.
       const double variance =
           batches > 1.0 ? std::max(squares[i] - batches * e * e, 0.0) / (batches - 1.0) : 0.0;
       const double se = std::sqrt(variance / batches);
       result.irradiance[i] = e;
+      if (casters) {
+        result.irradiance[i] = seabedSum[i] / batches;
+        result.objectIrradiance[i] = objectSum[i] / batches;
+      }
       result.standardError[i] = se;
       result.noise[i] = se / std::max({e, result.flatIrradiance[i], kNoiseFloor});
-      if (result.lit[i]) litNoise.push_back(result.noise[i]);
+      if (result.lit[i] || (casters && result.casterShadow[i])) litNoise.push_back(result.noise[i]);
     }
     result.noiseMedian = quantile(litNoise, 0.5);
     result.noiseQuantile = quantile(litNoise, desc.noiseQuantile);

@@ -12,6 +12,13 @@
 //     relative to flat water's. Geometry above the water can shade the photon before it enters.
 //   * The refracted photon is traced (Embree) to its first hit on the scene's triangles; a hit
 //     on a face turned away from it (its interpolated normal) absorbs it.
+//   * Object caustics (FrameTraceDesc::casters): a photon whose first hit is a glass or metal
+//     caster lights the caster's surface there as any surface, and its light goes on through
+//     the caster (caster_light_path.h) to the ordinary surface it reaches, which gathers it in
+//     a second, per-channel estimate (objectIrradiance). This mirrors the host's split: its
+//     shadow map keeps the casters opaque, so the seabed estimate has their shadow, and the
+//     object-caustic light is what the plugin adds back. Without casters every triangle is
+//     opaque, as before.
 //   * Irradiance at pixel i's surface point q_i (normal n_i) is the kernel density estimate
 //         E_i = sum_photons w K(|x - q_i|),  K(d) = 2 / (pi r_i^2) (1 - d^2 / r_i^2),  d < r_i,
 //     an Epanechnikov kernel on a disc of radius r_i = max(kernelScale * |q_i| * (radians per
@@ -39,6 +46,7 @@
 
 #include <glm/glm.hpp>
 
+#include "caster_light_path.h"
 #include "embree_scene.h"
 #include "frame_receivers.h"
 #include "seabed_reference.h"
@@ -80,6 +88,9 @@ struct FrameTraceDesc {
   std::uint64_t maxPhotonsPerBatch = 200'000'000;
   std::uint64_t seed = 1;
   int threads = 2;
+  // Per mesh of the EmbreeScene: its caster material (glass or metal whose light the trace
+  // follows), or none (opaque). Empty: no casters.
+  CasterMaterials casters;
   std::function<void(const FrameTraceProgress&)> progress;  // after every batch
 };
 
@@ -90,11 +101,20 @@ struct FrameTraceResult {
   std::vector<double> standardError;   // of irradiance
   std::vector<double> noise;           // standardError / max(irradiance, flatIrradiance)
   std::vector<double> kernelRadius;    // m
+  // Light that went through (or off) a caster, per channel, in the units of `irradiance`;
+  // empty without casters. Its batch scatter is part of `standardError` and `noise`, which
+  // are of the sum irradiance + mean(objectIrradiance).
+  std::vector<glm::dvec3> objectIrradiance;
+  // 1 where the unperturbed refracted sun ray up from the point first meets a caster: the
+  // casters' shadows, where most object caustics land. Empty without casters.
+  std::vector<std::uint8_t> casterShadow;
   // 1 where flat-water sunlight reaches the point: valid, facing the refracted sun, and no
   // triangle on the unperturbed refracted ray up to the water nor above it toward the sun.
   std::vector<std::uint8_t> lit;
   size_t litPixels = 0;
-  double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;  // over lit pixels
+  size_t casterShadowPixels = 0;
+  // Over lit pixels and the casters' shadows.
+  double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;
   std::uint64_t photons = 0;
   std::uint64_t photonsPerBatch = 0;
   int batches = 0;

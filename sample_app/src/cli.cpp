@@ -155,13 +155,15 @@ const std::vector<CommandSpec>& commands() {
       {"reference",
        Command::Reference,
        "the frame with its caustic light traced (EXR)",
-       "Renders the same frame as render with the plugin's seabed caustic light replaced by "
+       "Renders the same frame as render with the plugin's caustic light replaced by "
        "traced caustic light in the same units (sun photons through the frame's own water "
-       "texture against the scene's triangles, Embree; an Epanechnikov density estimate on a "
+       "texture against the scene's triangles, Embree, and on through its glass and metal "
+       "casters unless --no-object-caustics; an Epanechnikov density estimate on a "
        "disc of max(K x the pixel's footprint, M metres)). Batches are added, at least 8, until "
        "the 99th percentile of the lit pixels' noise is below N, at most B. Deterministic for a "
        "seed on any thread count. Writes linear radiance to OUT.exr with channels caustic.E, "
-       "caustic.noise and caustic.lit.",
+       "caustic.noise, caustic.lit, caustic.objectE (light through the casters, flat water = 1) "
+       "and caustic.objectRegion (the casters' shadows and where that light falls).",
        {"--out", "--seed", "--noise", "--kernel", "--min-kernel", "--max-batches", "--threads"},
        true,
        "reference.exr",
@@ -170,14 +172,17 @@ const std::vector<CommandSpec>& commands() {
       {"compare",
        Command::Compare,
        "plugin frame against traced frame: error, correlation, side by side",
-       "P: render --out P.exr, R: reference --out R.exr, B: render --no-caustics --out B.exr "
+       "P: render --out P.exr, R: reference --out R.exr, B: render --no-caustics "
+       "--no-object-caustics --out B.exr "
        "(the same scene options for all three, --caustics-model too: each model lights its god "
        "rays from its own field, and shafts that differ would count as caustic light). Over R's "
        "lit underwater pixels it prints the relative "
-       "RMSE and Pearson correlation of the added light (P - B against R - B) and writes OUT "
+       "RMSE and Pearson correlation of the added light (P - B against R - B), the same over "
+       "R's object-caustics region with the flux ratio, and writes OUT "
        "(default compare.png): the three frames above, the two added lights and their "
        "difference below (red: plugin brighter, blue: darker). With F (--flat F.exr: "
-       "render --caustics-model ray-deviation --tau 0, flat water's frame) it also compares "
+       "render --caustics-model ray-deviation --tau 0 --no-object-caustics, flat water's "
+       "frame) it also compares "
        "the pattern alone: each added light divided by F - B where F - B is at least a quarter "
        "of its median (what both share, albedo, N.L, shadow, absorption, divides out), and "
        "the patterns' power per octave of period over one square patch (too soft, too sharp, "

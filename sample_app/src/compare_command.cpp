@@ -20,6 +20,8 @@ struct ExrImage {
   int width = 0, height = 0, channels = 0;
   std::vector<std::string> names;
   std::vector<float> pixels;  // interleaved, top row first (as the file stores it)
+  // What lit it (render and reference write these; "" for a file without them).
+  std::string caustics, objectCaustics;
 
   int channel(const std::string& name) const {
     const auto it = std::find(names.begin(), names.end(), name);
@@ -43,6 +45,8 @@ bool readExr(const std::string& what, const std::string& path, ExrImage& image,
   image.height = spec.height;
   image.channels = spec.nchannels;
   image.names = spec.channelnames;
+  image.caustics = spec.get_string_attribute("ocean:caustics");
+  image.objectCaustics = spec.get_string_attribute("ocean:objectCaustics");
   if (image.width <= 0 || image.height <= 0 || image.channels <= 0) {
     error = what + " '" + path + "' has no pixels";
     return false;
@@ -104,6 +108,32 @@ void printPattern(const reference::PatternComparison& p) {
               s.verdict.c_str(), s.peak, s.peakPeriodPixels);
 }
 
+// The frames must belong together: the reference never holds the plugin's caustics, so neither
+// may the frame without caustics (nor flat water's, in the casters' shadows), and a plugin
+// frame with object caustics needs a reference that traced them. Files without the attributes
+// (written by something else) are taken as they are.
+bool framesBelongTogether(const Options& options, const ExrImage& plugin, const ExrImage& traced,
+                          const ExrImage& base, const ExrImage* flat, std::string& error) {
+  if (base.caustics == "plugin" || base.objectCaustics == "plugin") {
+    error = "--base '" + options.baseImage + "' has the plugin's " +
+            (base.caustics == "plugin" ? "seabed" : "object") +
+            " caustics in it: render it with --no-caustics --no-object-caustics";
+    return false;
+  }
+  if (flat != nullptr && flat->objectCaustics == "plugin") {
+    error = "--flat '" + options.flatImage +
+            "' has the plugin's object caustics in it: render it with --no-object-caustics";
+    return false;
+  }
+  if (plugin.objectCaustics == "plugin" && traced.objectCaustics == "off") {
+    error = "--plugin '" + options.pluginImage + "' has object caustics but --reference '" +
+            options.referenceImage +
+            "' did not trace them (it was run with --no-object-caustics): run both alike";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int runCompare(const Options& options) {
@@ -128,6 +158,8 @@ int runCompare(const Options& options) {
                          sizeOf(traced) + ", base " + sizeOf(base) +
                          (withPattern ? ", flat " + sizeOf(flat) : std::string()) + ")");
   }
+  if (!framesBelongTogether(options, plugin, traced, base, withPattern ? &flat : nullptr, error))
+    return commandFailed(error);
   const int litChannel = traced.channel("caustic.lit");
   if (litChannel < 0)
     return commandFailed("--reference '" + options.referenceImage +
@@ -136,14 +168,23 @@ int runCompare(const Options& options) {
   const size_t n = size_t(width) * size_t(height);
   std::vector<double> methodLight(n), referenceLight(n), flatLight(withPattern ? n : 0);
   std::vector<std::uint8_t> lit(n);
+  // The object caustics' region (the casters' shadows and where their traced light falls), when
+  // the reference traced casters.
+  const int regionChannel = traced.channel("caustic.objectRegion");
+  std::vector<std::uint8_t> region(regionChannel >= 0 ? n : 0);
+  size_t regionPixels = 0;
   for (size_t i = 0; i < n; ++i) {
     lit[i] = traced.pixels[i * size_t(traced.channels) + size_t(litChannel)] > 0.5f ? 1 : 0;
+    if (regionChannel >= 0) {
+      region[i] = traced.pixels[i * size_t(traced.channels) + size_t(regionChannel)] > 0.5f ? 1 : 0;
+      regionPixels += region[i];
+    }
     methodLight[i] = luminance(rgb(plugin, i) - rgb(base, i));
     referenceLight[i] = luminance(rgb(traced, i) - rgb(base, i));
     if (withPattern) flatLight[i] = luminance(rgb(flat, i) - rgb(base, i));
     const bool finite = std::isfinite(methodLight[i]) && std::isfinite(referenceLight[i]) &&
                         (!withPattern || std::isfinite(flatLight[i]));
-    if (lit[i] && !finite)
+    if ((lit[i] || (regionChannel >= 0 && region[i])) && !finite)
       return commandFailed("a lit pixel of the inputs is NaN or infinite (pixel " +
                            std::to_string(i % size_t(width)) + ", " +
                            std::to_string(i / size_t(width)) + " from the top)");
@@ -211,6 +252,19 @@ int runCompare(const Options& options) {
       "luminance; mean plugin %.4g, reference %.4g)\n",
       c.pixels, c.relativeRmse, c.correlation, c.methodMean, c.referenceMean);
   if (withPattern) printPattern(pattern);
+  if (regionPixels > 0) {
+    const reference::CausticComparison o =
+        reference::compareAddedLight(methodLight, referenceLight, region);
+    std::printf(
+        "compare: object caustics (%zu pixels: the casters' shadows and where their traced light "
+        "falls): correlation %.4f, relative RMSE %.4f, flux plugin / reference %.3f (mean added "
+        "light plugin %.4g, reference %.4g)\n",
+        o.pixels, o.correlation, o.relativeRmse,
+        o.referenceMean != 0.0 ? o.methodMean / o.referenceMean : 0.0, o.methodMean,
+        o.referenceMean);
+  } else if (regionChannel >= 0) {
+    std::printf("compare: object caustics: the reference has no caster in view\n");
+  }
   std::printf(
       "compare: %s (top: plugin | reference | no caustics; then added light plugin | "
       "reference | difference%s)\n",

@@ -20,7 +20,8 @@ std::string extensionOf(const std::string& path) {
 template <typename T>
 bool writeFlipped(const std::string& path, int width, int height, const T* pixels,
                   OIIO::TypeDesc type, std::string& error,
-                  const std::vector<std::string>* channelNames = nullptr) {
+                  const std::vector<std::string>* channelNames = nullptr,
+                  const ImageAttributes& attributes = {}) {
   const int channels = channelNames ? static_cast<int>(channelNames->size()) : 4;
   auto output = OIIO::ImageOutput::create(path);
   if (!output) {
@@ -32,6 +33,7 @@ bool writeFlipped(const std::string& path, int width, int height, const T* pixel
       [&](const std::string& temporary, std::string& why) {
         OIIO::ImageSpec spec(width, height, channels, type);
         if (channelNames) spec.channelnames = *channelNames;
+        for (const auto& [name, value] : attributes) spec.attribute(name, value);
         if (!output->open(temporary, spec)) {
           why = "cannot write '" + path + "': " + output->geterror();
           return false;
@@ -76,7 +78,8 @@ bool checkOutputPath(const std::string& path, std::string& error) {
 
 bool writeExrChannels(const std::string& path, int width, int height,
                       const std::vector<std::string>& channelNames,
-                      const std::vector<float>& interleaved, std::string& error) {
+                      const std::vector<float>& interleaved, std::string& error,
+                      const ImageAttributes& attributes) {
   if (!checkOutputPath(path, error)) return false;
   if (extensionOf(path) != ".exr") {
     error = "output '" + path + "' must end in .exr";
@@ -88,16 +91,19 @@ bool writeExrChannels(const std::string& path, int width, int height,
     return false;
   }
   return writeFlipped(path, width, height, interleaved.data(), OIIO::TypeDesc::FLOAT, error,
-                      &channelNames);
+                      &channelNames, attributes);
 }
 
 bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,
-                const std::vector<float>* linearRgba, std::string& error) {
+                const std::vector<float>* linearRgba, std::string& error,
+                const ImageAttributes& attributes) {
   if (!checkOutputPath(path, error)) return false;
   if (extensionOf(path) == ".exr" && linearRgba != nullptr) {
-    return writeFlipped(path, width, height, linearRgba->data(), OIIO::TypeDesc::FLOAT, error);
+    return writeFlipped(path, width, height, linearRgba->data(), OIIO::TypeDesc::FLOAT, error,
+                        nullptr, attributes);
   }
-  return writeFlipped(path, width, height, rgba8.data(), OIIO::TypeDesc::UINT8, error);
+  return writeFlipped(path, width, height, rgba8.data(), OIIO::TypeDesc::UINT8, error, nullptr,
+                      attributes);
 }
 
 }  // namespace ocean

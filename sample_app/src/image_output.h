@@ -3,20 +3,27 @@
 // temporary name in the same directory and is renamed into place only when complete.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ocean {
 
+// String attributes written into the file's header (e.g. "ocean:objectCaustics" = "plugin"):
+// what produced the pixels, so that `compare` can refuse frames that do not belong together.
+using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
+
 // RGBA8 pixels, bottom row first (GL order); `.png` (or any 8-bit format OIIO knows) by
 // extension; `.exr` gets the linear float buffer instead when one is given.
 bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,
-                const std::vector<float>* linearRgba, std::string& error);
+                const std::vector<float>* linearRgba, std::string& error,
+                const ImageAttributes& attributes = {});
 
 // An EXR of float channels with the given names (e.g. R, G, B, A, then extra ones), pixels
 // interleaved, bottom row first (GL order).
 bool writeExrChannels(const std::string& path, int width, int height,
                       const std::vector<std::string>& channelNames,
-                      const std::vector<float>& interleaved, std::string& error);
+                      const std::vector<float>& interleaved, std::string& error,
+                      const ImageAttributes& attributes = {});
 
 // Checks the output path before any rendering: known extension, writable directory.
 bool checkOutputPath(const std::string& path, std::string& error);

@@ -337,7 +337,8 @@ const std::array kValueOptions{
                   o.referenceImage = text;
                   return true;
                 }},
-    ValueOption{"--base", "B.exr", "the frame without caustics (render --no-caustics)", false,
+    ValueOption{"--base", "B.exr",
+                "the frame without caustics (render --no-caustics --no-object-caustics)", false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.baseImage = text;
                   return true;

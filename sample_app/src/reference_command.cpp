@@ -1,5 +1,7 @@
 // ocean_sample reference: the frame `render` draws, with the plugin's seabed caustic light
-// replaced by traced caustic light in the same units (see TracedCausticsPass and --help).
+// replaced by traced caustic light in the same units (see TracedCausticsPass and --help): the
+// seabed's, and with object caustics on (the default) the light of the glass and metal casters.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -8,10 +10,15 @@
 #include "commands.h"
 #include "headless_session.h"
 #include "image_output.h"
+#include "scene_triangles.h"
 #include "traced_caustics_pass.h"
 
 namespace ocean {
 namespace {
+
+// The object-caustics region `compare` judges apart: the casters' shadows, and wherever the
+// traced light through or off the casters is at least this share of flat water's.
+constexpr double kObjectRegionIrradiance = 0.05;
 
 reference::FrameTraceDesc traceDesc(const Options& options) {
   reference::FrameTraceDesc desc;
@@ -41,9 +48,11 @@ int runReference(const Options& options) {
   if (std::filesystem::path(options.out).extension() != ".exr")
     return commandFailed("reference writes linear radiance: --out must end in .exr, got '" +
                          options.out + "'");
-  // The plugin runs with its own caustics off; the traced light takes their place.
+  // The plugin runs with its own caustics off, seabed and object; the traced light takes their
+  // place.
   Options frameOptions = options;
   frameOptions.caustics = false;
+  frameOptions.objectCaustics = false;
   HeadlessSession session;
   if (!openHeadlessSession(frameOptions, /*debug=*/true, /*benchmarkFloor=*/false, session,
                            error)) {
@@ -51,11 +60,15 @@ int runReference(const Options& options) {
   }
   Renderer& renderer = *session.renderer;
   const FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
+  reference::FrameTraceDesc trace = traceDesc(options);
+  if (options.objectCaustics) trace.casters = sceneCasterMaterials(session.scene);
+  size_t casters = 0;
+  for (const auto& caster : trace.casters) casters += caster.has_value() ? 1 : 0;
   auto traced = TracedCausticsPass::create(*session.plugin, session.scene, input.camera.position,
-                                           traceDesc(options), error);
+                                           trace, error);
   if (!traced) return commandFailed(error);
-  std::printf("reference: %zu triangles in Embree, %dx%d pixels\n", traced->triangleCount(),
-              options.width, options.height);
+  std::printf("reference: %zu triangles in Embree (%zu glass/metal casters traced), %dx%d pixels\n",
+              traced->triangleCount(), casters, options.width, options.height);
   const PluginPass plugin = renderer.pluginPass();
   TracedCausticsPass* pass = traced.get();
   renderer.setPluginPass([plugin, pass](const HostFrame& frame, std::string& message) {
@@ -69,8 +82,17 @@ int runReference(const Options& options) {
   const reference::FrameTraceResult& result = pass->result();
   const std::vector<float> radiance = renderer.readRadiance();
   const size_t n = static_cast<size_t>(options.width) * static_cast<size_t>(options.height);
-  const std::vector<std::string> channels = {
-      "R", "G", "B", "A", "caustic.E", "caustic.noise", "caustic.lit"};
+  const std::vector<std::string> channels = {"R",
+                                             "G",
+                                             "B",
+                                             "A",
+                                             "caustic.E",
+                                             "caustic.noise",
+                                             "caustic.lit",
+                                             "caustic.objectE",
+                                             "caustic.objectRegion"};
+  size_t regionPixels = 0;
+  double regionSum = 0.0, regionPeak = 0.0;  // traced object light over the region
   std::vector<float> pixels(n * channels.size(), 0.0f);
   for (size_t i = 0; i < n; ++i) {
     float* out = &pixels[i * channels.size()];
@@ -80,8 +102,24 @@ int runReference(const Options& options) {
       out[5] = static_cast<float>(result.noise[i]);
       out[6] = result.lit[i] ? 1.0f : 0.0f;
     }
+    if (i < result.objectIrradiance.size()) {
+      const glm::dvec3& e = result.objectIrradiance[i];
+      const double mean = (e.x + e.y + e.z) / 3.0;
+      out[7] = static_cast<float>(mean);
+      const bool region = result.casterShadow[i] != 0 || mean >= kObjectRegionIrradiance;
+      out[8] = region ? 1.0f : 0.0f;
+      if (region) {
+        ++regionPixels;
+        regionSum += mean;
+        regionPeak = std::max(regionPeak, mean);
+      }
+    }
   }
-  if (!writeExrChannels(options.out, options.width, options.height, channels, pixels, error))
+  const ImageAttributes attributes = {
+      {"ocean:caustics", "traced"},
+      {"ocean:objectCaustics", options.objectCaustics ? "traced" : "off"}};
+  if (!writeExrChannels(options.out, options.width, options.height, channels, pixels, error,
+                        attributes))
     return commandFailed(error);
   std::printf(
       "reference: %s: %zu lit underwater pixels, %.3g photons in %d batches, noise median "
@@ -89,6 +127,13 @@ int runReference(const Options& options) {
       options.out.c_str(), result.litPixels, static_cast<double>(result.photons), result.batches,
       100.0 * result.noiseMedian, 100.0 * result.noiseQuantile, 100.0 * result.noiseMax,
       result.converged ? "converged" : "NOT converged", result.seconds);
+  if (casters > 0)
+    std::printf(
+        "reference: object caustics: %zu pixels in the casters' shadows, %zu in the "
+        "object-caustics region (caustic.objectRegion); traced light through the casters there "
+        "(caustic.objectE, flat water = 1): mean %.4f, peak %.4f\n",
+        result.casterShadowPixels, regionPixels,
+        regionPixels > 0 ? regionSum / static_cast<double>(regionPixels) : 0.0, regionPeak);
   return 0;
 }
 

@@ -63,7 +63,12 @@ int runRender(const Options& options) {
     std::vector<float> radiance = renderer.readRadiance();
     const std::string name =
         sequence ? sequenceFrameName(options.out, frame, options.frames) : options.out;
-    if (!writeImage(name, options.width, options.height, renderer.readColor(), &radiance, error))
+    // What lit the frame, for compare's check that its frames belong together.
+    const ImageAttributes attributes = {
+        {"ocean:caustics", options.caustics ? "plugin" : "off"},
+        {"ocean:objectCaustics", options.objectCaustics ? "plugin" : "off"}};
+    if (!writeImage(name, options.width, options.height, renderer.readColor(), &radiance, error,
+                    attributes))
       return commandFailed(error);
     if (!previous.empty()) {
       const double change = relativeFrameChange(previous, radiance);

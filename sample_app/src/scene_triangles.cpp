@@ -1,5 +1,8 @@
 #include "scene_triangles.h"
 
+#include "caster_admission.h"
+#include "gpu_scene.h"
+
 namespace ocean {
 
 std::vector<reference::TriangleMesh> sceneTriangles(const ocean_scene::Model& model) {
@@ -28,6 +31,22 @@ std::vector<reference::TriangleMesh> sceneTriangles(const ocean_scene::Model& mo
     meshes.push_back(std::move(out));
   }
   return meshes;
+}
+
+reference::CasterMaterials sceneCasterMaterials(const ocean_scene::Model& model) {
+  reference::CasterMaterials materials;
+  for (const ocean_scene::Instance& instance : model.instances) {
+    if (instance.mesh >= model.meshes.size()) continue;  // as sceneTriangles
+    const ocean_scene::Mesh& mesh = model.meshes[instance.mesh];
+    const bool known = mesh.material < model.materials.size();
+    if (instance.castsCaustics && known && isCausticCaster(model.materials[mesh.material]) &&
+        mesh.indices.size() >= 3) {
+      materials.push_back(casterMaterial(model.materials[mesh.material]));
+    } else {
+      materials.push_back(std::nullopt);
+    }
+  }
+  return materials;
 }
 
 }  // namespace ocean

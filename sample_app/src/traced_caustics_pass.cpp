@@ -16,7 +16,13 @@ std::unique_ptr<TracedCausticsPass> TracedCausticsPass::create(
   pass->plugin_ = &plugin;
   pass->trace_ = trace;
   pass->sceneOrigin_ = cameraPosition;
-  pass->scene_ = reference::EmbreeScene::create(sceneTriangles(scene), cameraPosition, error);
+  const std::vector<reference::TriangleMesh> meshes = sceneTriangles(scene);
+  if (!trace.casters.empty() && trace.casters.size() != meshes.size()) {
+    error = "traced caustics: " + std::to_string(trace.casters.size()) + " caster entries for " +
+            std::to_string(meshes.size()) + " meshes";
+    return nullptr;
+  }
+  pass->scene_ = reference::EmbreeScene::create(meshes, cameraPosition, error);
   if (!pass->scene_) return nullptr;
   return pass;
 }
@@ -56,12 +62,21 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   glGetTextureImage(target, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)),
                     radiance.data());
   const reference::CausticLightUnits units = reference::causticLightUnits(desc);
+  const bool objects = !result_.objectIrradiance.empty();
   for (size_t i = 0; i < n && !result_.irradiance.empty(); ++i) {
-    if (!receivers_.valid[i] || !(result_.irradiance[i] > 0.0)) continue;
-    const glm::vec3 light = reference::referenceCausticLight(
-        units, gbuffer.albedo[i], receivers_.depthBelow(i), result_.irradiance[i],
-        glm::length(gbuffer.viewPosition[i]));
-    radiance[i] += glm::vec4(light, 0.0f);
+    if (!receivers_.valid[i]) continue;
+    const double viewDistance = glm::length(gbuffer.viewPosition[i]);
+    if (result_.irradiance[i] > 0.0) {
+      const glm::vec3 light = reference::referenceCausticLight(
+          units, gbuffer.albedo[i], receivers_.depthBelow(i), result_.irradiance[i], viewDistance);
+      radiance[i] += glm::vec4(light, 0.0f);
+    }
+    if (objects && result_.objectIrradiance[i] != glm::dvec3(0.0)) {
+      const glm::vec3 light =
+          reference::referenceObjectCausticLight(units, gbuffer.albedo[i], receivers_.depthBelow(i),
+                                                 result_.objectIrradiance[i], viewDistance);
+      radiance[i] += glm::vec4(light, 0.0f);
+    }
   }
   glTextureSubImage2D(target, 0, 0, 0, receivers_.width, receivers_.height, GL_RGBA, GL_FLOAT,
                       radiance.data());

@@ -5,7 +5,9 @@
 // (reference::traceFrameCaustics) and adds, at every pixel under the water, the light the
 // plugin's caustics pass would add there with its caustic factor replaced by the traced
 // irradiance (reference::referenceCausticLight: the same units). The rest of the frame (fog,
-// water surface, tone mapping) then runs unchanged.
+// water surface, tone mapping) then runs unchanged. With casters in the trace
+// (FrameTraceDesc::casters, from sceneCasterMaterials) it also adds the light they pass or
+// reflect, where the plugin's object caustics would add theirs (which must then be off).
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,8 +22,9 @@ namespace ocean {
 
 class TracedCausticsPass {
  public:
-  // `trace` without sun and IOR (taken from the frame). Builds the Embree scene of `scene`
-  // around `cameraPosition` (the frame's camera).
+  // `trace` without sun and IOR (taken from the frame); its casters, if any, one per mesh of
+  // sceneTriangles(scene). Builds the Embree scene of `scene` around `cameraPosition` (the
+  // frame's camera).
   static std::unique_ptr<TracedCausticsPass> create(const PluginSetup& plugin,
                                                     const ocean_scene::Model& scene,
                                                     const glm::dvec3& cameraPosition,

@@ -21,6 +21,9 @@
 
 #include "gltf_test_files.h"
 
+#include <scene/gltf_loader.h>
+#include <scene/gltf_writer.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -31,6 +34,18 @@ bool imageSize(const fs::path& path, int& width, int& height) {
   width = in->spec().width;
   height = in->spec().height;
   return true;
+}
+
+// One named channel of an EXR, or nothing when the file or the channel is missing.
+std::vector<float> exrChannel(const fs::path& path, const std::string& name) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  const int c = spec.channelindex(name);
+  if (c < 0) return {};
+  std::vector<float> values(size_t(spec.width) * size_t(spec.height));
+  if (!in->read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, values.data())) return {};
+  return values;
 }
 
 struct RunResult {
@@ -550,7 +565,15 @@ TEST_F(SampleCli, CompareNotANumber) {
 TEST_F(SampleCli, ReferenceThenCompareWithItself) {
   const std::string size = " --width 64 --height 36 --water-resolution 16 ";
   const fs::path base = dir_ / "base.exr", ref = dir_ / "ref.exr", side = dir_ / "side.png";
-  ASSERT_EQ(runSample("render --no-caustics" + size + "--out " + base.string(), dir_).exitCode, 0);
+  // The frame without caustics must hold none of the plugin's: compare refuses one with its
+  // object caustics, whose light the reference traces instead.
+  const fs::path litBase = dir_ / "lit_base.exr";
+  ASSERT_EQ(runSample("render --no-caustics" + size + "--out " + litBase.string(), dir_).exitCode,
+            0);
+  ASSERT_EQ(
+      runSample("render --no-caustics --no-object-caustics" + size + "--out " + base.string(), dir_)
+          .exitCode,
+      0);
   const RunResult traced =
       runSample("reference" + size + "--max-batches 8 --out " + ref.string(), dir_);
   ASSERT_EQ(traced.exitCode, 0) << traced.stderrText;
@@ -562,14 +585,33 @@ TEST_F(SampleCli, ReferenceThenCompareWithItself) {
   ASSERT_EQ(compared.exitCode, 0) << compared.stderrText;
   EXPECT_NE(compared.stdoutText.find("relative RMSE 0.0000, correlation 1.0000"), std::string::npos)
       << compared.stdoutText;
+  // The reference traced the default scene's glass and metal: compare judges their region apart.
+  EXPECT_NE(traced.stdoutText.find("casters traced"), std::string::npos) << traced.stdoutText;
+  EXPECT_EQ(traced.stdoutText.find("(0 glass/metal casters traced)"), std::string::npos)
+      << traced.stdoutText;
+  EXPECT_NE(compared.stdoutText.find("compare: object caustics ("), std::string::npos)
+      << compared.stdoutText;
+  EXPECT_NE(compared.stdoutText.find("correlation 1.0000, relative RMSE 0.0000, flux plugin / "
+                                     "reference 1.000"),
+            std::string::npos)
+      << compared.stdoutText;
   EXPECT_TRUE(fs::exists(side));
+  const RunResult mismatched =
+      runSample("compare --plugin " + ref.string() + " --reference " + ref.string() + " --base " +
+                    litBase.string() + " --out " + side.string(),
+                dir_);
+  EXPECT_EQ(mismatched.exitCode, 1) << mismatched.stdoutText;
+  EXPECT_NE(mismatched.stderrText.find("has the plugin's object caustics in it: render it with "
+                                       "--no-caustics --no-object-caustics"),
+            std::string::npos)
+      << mismatched.stderrText;
   // With flat water's frame: the pattern alone, a third row in the side by side.
   const fs::path flat = dir_ / "flat.exr", patternSide = dir_ / "pattern.png";
-  ASSERT_EQ(
-      runSample("render --caustics-model ray-deviation --tau 0" + size + "--out " + flat.string(),
-                dir_)
-          .exitCode,
-      0);
+  ASSERT_EQ(runSample("render --caustics-model ray-deviation --tau 0 --no-object-caustics" + size +
+                          "--out " + flat.string(),
+                      dir_)
+                .exitCode,
+            0);
   const RunResult pattern =
       runSample("compare --plugin " + ref.string() + " --reference " + ref.string() + " --base " +
                     base.string() + " --flat " + flat.string() + " --out " + patternSide.string(),
@@ -585,6 +627,52 @@ TEST_F(SampleCli, ReferenceThenCompareWithItself) {
   ASSERT_TRUE(imageSize(patternSide, patternWidth, patternHeight));
   EXPECT_EQ(patternWidth, sideWidth);
   EXPECT_GT(patternHeight, sideHeight) << "a third row";
+}
+
+// Issue 28, item 5: the reference traces the glass itself. A glass sphere of IOR 1.0 under water
+// (an air bubble: it spreads its light and reflects its rim) and one of 1.5 (it focuses) once
+// gave the same reference; now the traced light through them differs as the optics say.
+TEST_F(SampleCli, ReferenceTracesTheGlassOfAModel) {
+  std::vector<float> light[2];
+  const float iors[2] = {1.0f, 1.5f};
+  for (int k = 0; k < 2; ++k) {
+    ocean_scene::Model sphere;
+    std::string error;
+    ASSERT_TRUE(
+        ocean_scene::loadGlb(std::string(OCEAN_ASSETS) + "/glass_sphere.glb", sphere, error))
+        << error;
+    ASSERT_FALSE(sphere.materials.empty());
+    for (ocean_scene::Material& m : sphere.materials) m.ior = iors[k];
+    const fs::path model = dir_ / ("sphere" + std::to_string(k) + ".glb");
+    ASSERT_TRUE(ocean_scene::writeGlb(sphere, model.string(), error)) << error;
+    const fs::path out = dir_ / ("ref" + std::to_string(k) + ".exr");
+    // Near the seabed camera, 1 m across, 0.8 m over the sand: its shadow is in view.
+    const RunResult traced = runSample(
+        "reference --width 96 --height 54 --water-resolution 16 --max-batches 4 --model " +
+            model.string() + "@3.5,0.8,9.5:fit=1 --out " + out.string(),
+        dir_);
+    ASSERT_EQ(traced.exitCode, 0) << traced.stderrText;
+    light[k] = exrChannel(out, "caustic.objectE");
+    ASSERT_EQ(light[k].size(), size_t(96 * 54));
+  }
+  // Where the model's light falls (the rest of the scene is the same in both): the dense sphere
+  // focuses above flat water's light, the bubble stays below it and delivers less in all.
+  double peak[2] = {0.0, 0.0}, sum[2] = {0.0, 0.0};
+  size_t changed = 0;
+  for (size_t i = 0; i < light[0].size(); ++i) {
+    if (!(std::abs(light[1][i] - light[0][i]) > 0.02f)) continue;
+    ++changed;
+    for (int k = 0; k < 2; ++k) {
+      peak[k] = std::max(peak[k], double(light[k][i]));
+      sum[k] += double(light[k][i]);
+    }
+  }
+  std::printf("%zu pixels differ: IOR 1.0 peak %.3f sum %.2f, IOR 1.5 peak %.3f sum %.2f\n",
+              changed, peak[0], sum[0], peak[1], sum[1]);
+  EXPECT_GT(changed, 20u);
+  EXPECT_GT(peak[1], 1.5);
+  EXPECT_LT(peak[0], 1.0);
+  EXPECT_GT(sum[1], 1.5 * sum[0]);
 }
 
 // view's own flags are refused before a window would open: no display is needed for that.
