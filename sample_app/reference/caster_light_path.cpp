@@ -57,7 +57,7 @@ struct Walker {
       if (!isCaster(materials, p.hit.mesh)) {
         // Inside a solid nothing lands: a surface through the glass is the host's problem.
         if (p.insideMesh < 0 && glm::dot(p.dir, p.hit.normal) < 0.0)
-          land({x, p.hit.normal, p.weight});
+          land({x, p.hit.normal, p.weight, p.from});
         return;
       }
       const postfx::CasterMaterial& m = *materials[static_cast<size_t>(p.hit.mesh)];

@@ -42,6 +42,7 @@ struct CasterLanding {
   glm::dvec3 point;   // on an ordinary surface, camera-relative
   glm::dvec3 normal;  // that surface's shading normal there
   glm::dvec3 weight;  // the photon's flux weight that arrives, per channel
+  glm::dvec3 from;    // where its last straight segment began (the caster surface it left)
 };
 
 // The ray from + t dir has hit caster mesh hit.mesh (materials[hit.mesh] set) carrying `weight`

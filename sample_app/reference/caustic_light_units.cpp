@@ -16,6 +16,7 @@ CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame) {
   units.lightScale = frame.sun.irradiance * frame.caustics.intensity;
   units.absorptionPerDepth = glm::vec3(glm::dvec3(frame.water.absorption) / units.upY);
   units.objectLightScale = frame.sun.irradiance * frame.objectCaustics.settings.intensity;
+  units.objectIntensity = frame.objectCaustics.settings.intensity;
   units.fadeDepth = frame.caustics.surfaceFadeDepth;
   if (frame.viewExtinction == postfx::ViewExtinction::Plugin)
     units.viewExtinction = frame.water.absorption + frame.water.scattering;
@@ -42,6 +43,17 @@ glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm:
   const glm::vec3 bracket(tracedIrradiance * units.upY);
   return postfx::shared::sanitizeAlbedo(albedo) * units.objectLightScale *
          postfx::shared::causticTransmittance(units.absorptionPerDepth, depth) * bracket *
+         glm::exp(-units.viewExtinction *
+                  postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
+                                                      units.levelRelative));
+}
+
+glm::vec3 referenceLocalCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                     double depthBelow, const glm::dvec3& tracedIrradiance,
+                                     double viewDistance) {
+  const float depth = static_cast<float>(depthBelow);
+  return postfx::shared::sanitizeAlbedo(albedo) * units.objectIntensity *
+         glm::vec3(tracedIrradiance) *
          glm::exp(-units.viewExtinction *
                   postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
                                                       units.levelRelative));

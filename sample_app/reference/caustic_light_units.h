@@ -27,6 +27,7 @@ namespace ocean::reference {
 struct CausticLightUnits {
   glm::vec3 lightScale{1.0f};          // E_sun * intensity
   glm::vec3 objectLightScale{1.0f};    // E_sun * ObjectCausticsSettings::intensity
+  float objectIntensity = 1.0f;        // ObjectCausticsSettings::intensity
   glm::vec3 absorptionPerDepth{0.0f};  // absorption / u.y (1/m)
   float fadeDepth = 0.0f;              // CausticsSettings::surfaceFadeDepth
   double upY = 1.0;                    // u.y
@@ -46,5 +47,13 @@ glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3&
 glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
                                       double depthBelow, const glm::dvec3& tracedIrradiance,
                                       double viewDistance);
+
+// The same for a local light's object caustics: the composite adds albedo * intensity *
+// objectIntensity * [caustic (n.l)] * (view extinction), the water's absorption along the path
+// inside the caustic; `tracedIrradiance` (intensity / m^2, absorbed) takes the place of all but
+// albedo, objectIntensity and the view extinction.
+glm::vec3 referenceLocalCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                     double depthBelow, const glm::dvec3& tracedIrradiance,
+                                     double viewDistance);
 
 }  // namespace ocean::reference

@@ -135,6 +135,20 @@ std::unique_ptr<EmbreeScene> EmbreeScene::create(const std::vector<TriangleMesh>
 
 EmbreeScene::~EmbreeScene() = default;
 
+void EmbreeScene::meshBoundingSphere(size_t mesh, glm::dvec3& centre, double& radius) const {
+  centre = glm::dvec3(0.0);
+  radius = 0.0;
+  if (mesh >= meshes_.size() || meshes_[mesh].positions.empty()) return;
+  const std::vector<glm::dvec3>& p = meshes_[mesh].positions;
+  glm::dvec3 lo = p[0], hi = p[0];
+  for (const glm::dvec3& q : p) {
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  centre = 0.5 * (lo + hi);
+  for (const glm::dvec3& q : p) radius = std::max(radius, glm::length(q - centre));
+}
+
 bool EmbreeScene::intersect(const glm::dvec3& from, const glm::dvec3& dir, double tNear,
                             double tFar, RayHit& hit) const {
   RTCIntersectContext context;

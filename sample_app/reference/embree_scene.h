@@ -42,6 +42,9 @@ class EmbreeScene {
   const glm::dvec3& boundsMin() const { return boundsMin_; }  // relative to the origin
   const glm::dvec3& boundsMax() const { return boundsMax_; }
   size_t triangleCount() const { return triangleCount_; }
+  size_t meshCount() const { return meshes_.size(); }
+  // Bounding sphere of mesh `mesh`'s vertices (relative to the origin; radius 0 when empty).
+  void meshBoundingSphere(size_t mesh, glm::dvec3& centre, double& radius) const;
 
  private:
   EmbreeScene() = default;

@@ -8,6 +8,8 @@
 
 #include <postfx/water/random.h>
 
+#include "shared_math.h"  // the plugin's own spot cone and submerged length (shaders/shared)
+
 #include "photon_launch_plan.h"
 
 namespace ocean::reference {
@@ -27,9 +29,11 @@ constexpr double kMinNormalAgreement = 0.5;
 struct Accumulator {
   std::vector<std::int64_t> sum;
   std::vector<std::int64_t> object;  // 3 per pixel (RGB), with casters only
-  void reset(size_t n, bool casters) {
+  std::vector<std::int64_t> local;   // 3 per pixel (RGB), with traced local lights only
+  void reset(size_t n, bool casters, bool lights) {
     sum.assign(n, 0);
     object.assign(casters ? 3 * n : 0, 0);
+    local.assign(lights ? 3 * n : 0, 0);
   }
 };
 
@@ -179,6 +183,69 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
   }
 }
 
+// The cone of directions from a local light to one caster's bounding sphere, stratified in
+// solid angle: strata x strata photons per batch, each of solid angle solidAngle / strata^2.
+struct LightCap {
+  const TracedLight* light = nullptr;
+  glm::dvec3 position{0.0};  // the light, relative to the camera
+  int mesh = -1;
+  glm::dvec3 axis{0.0}, u{0.0}, v{0.0};  // toward the sphere's centre, and across it
+  double cosHalf = 1.0, solidAngle = 0.0;
+  int strata = 0;
+  std::uint64_t index = 0;  // for the photons' random streams
+};
+
+double spotFactor(const TracedLight& light, const glm::dvec3& dir) {
+  if (!light.spot) return 1.0;
+  const double angle = std::acos(std::clamp(glm::dot(dir, light.axis), -1.0, 1.0));
+  return double(postfx::shared::spotConeFalloff(static_cast<float>(angle),
+                                                static_cast<float>(light.outerHalfAngle),
+                                                static_cast<float>(light.innerHalfAngle)));
+}
+
+// Metres of the segment a -> b below the water level (camera-relative heights).
+double wetLength(const Frame& f, const glm::dvec3& a, const glm::dvec3& b) {
+  const double level = f.casterPath.waterLevel;
+  return double(postfx::shared::submergedLength(static_cast<float>(glm::length(b - a)),
+                                                static_cast<float>(a.y - level),
+                                                static_cast<float>(b.y - level)));
+}
+
+// One row of a light cap's strata of one batch: photons that meet the cap's own caster first
+// go on through the casters; what lands under the water is splatted into acc.local.
+void traceLightRow(const Frame& f, const LightCap& cap, int batch, int row, Accumulator& acc) {
+  postfx::water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
+                                       (static_cast<std::uint64_t>(batch) << 40) ^
+                                       ((cap.index + 1) * 0xA24BAED4963EE407ull) ^
+                                       (static_cast<std::uint64_t>(row) * 0xD1B54A32D192ED03ull));
+  random.nextBits();
+  const int n = cap.strata;
+  const double photonAngle = cap.solidAngle / (double(n) * double(n));
+  const TracedLight& light = *cap.light;
+  glm::dvec3 entry(0.0);
+  const std::function<void(const CasterLanding&)> land = [&](const CasterLanding& l) {
+    if (!(l.point.y < f.casterPath.waterLevel)) return;  // its light stays under the water
+    const double wet = wetLength(f, cap.position, entry) + wetLength(f, l.from, l.point);
+    const glm::dvec3 w = l.weight * glm::exp(-f.desc.waterAbsorption * wet);
+    const double weight[3] = {w.x, w.y, w.z};
+    splat<3>(f, l.point, l.normal, weight, acc.local.data());
+  };
+  for (int i = 0; i < n; ++i) {
+    const double cosTheta = 1.0 - (row + random.nextUniform()) / n * (1.0 - cap.cosHalf);
+    const double sinTheta = std::sqrt(std::max(1.0 - cosTheta * cosTheta, 0.0));
+    const double phi = 2.0 * kPi * (i + random.nextUniform()) / n;
+    const glm::dvec3 dir =
+        cap.axis * cosTheta + (cap.u * std::cos(phi) + cap.v * std::sin(phi)) * sinTheta;
+    const double spot = spotFactor(light, dir);
+    if (!(spot > 0.0)) continue;
+    RayHit hit;
+    if (!f.scene.intersect(cap.position, dir, 0.0, 1e30, hit) || hit.mesh != cap.mesh) continue;
+    entry = cap.position + dir * hit.t;
+    followThroughCasters(f.scene, f.desc.casters, f.casterPath, cap.position, dir, hit,
+                         light.intensity * (spot * photonAngle), random, land);
+  }
+}
+
 // Flat-water sunlight reaches receiver i: nothing on the unperturbed refracted ray up to the
 // water plane, nor above the water toward the sun.
 bool litByFlatWater(const Frame& f, size_t i) {
@@ -221,15 +288,19 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   result.noise.assign(count, 0.0);
   result.kernelRadius.assign(count, 0.0);
   result.lit.assign(count, 0);
-  const glm::dvec3 sun = glm::normalize(desc.towardSun);
-  if (!(sun.y > 0.0) || count == 0 || receivers.position.size() != count) return result;
+  if (count == 0 || receivers.position.size() != count) return result;
+  // A sun below the horizon lights nothing; local lights may still shine through casters.
+  const bool sunUp = glm::normalize(desc.towardSun).y > 0.0;
+  const bool casters = !desc.casters.empty();
+  const bool lights = casters && !desc.lights.empty();
+  if (!sunUp && !lights) return result;
+  const glm::dvec3 sun = sunUp ? glm::normalize(desc.towardSun) : glm::dvec3(0.0, 1.0, 0.0);
 
   Frame f{water, scene, receivers,         desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior), 1.0,
           {},    {},    SunDisc(sun, 0.0), {}};
   f.flatTransmittance = fresnelTransmittance(sun.y, desc.ior);
-  f.disc = SunDisc(sun, desc.sunAngularRadius);
+  f.disc = SunDisc(sun, sunUp ? desc.sunAngularRadius : 0.0);
   f.radiusSquared.assign(count, 0.0);
-  const bool casters = !desc.casters.empty();
   f.casterPath.waterIor = desc.ior;
   f.casterPath.waterLevel = receivers.level - receivers.camera.y;
   if (casters) {
@@ -265,6 +336,7 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     // centre) from pixel i; the area-matched radius keeps that below 4 kernelScale.
     reach[i] =
         static_cast<int>(std::ceil(std::min(radius / std::max(distance * rpp, 1e-12), 64.0))) + 1;
+    if (!sunUp) continue;
     result.flatIrradiance[i] = std::max(glm::dot(n, f.up), 0.0) / f.up.y;
     const double depth = receivers.depthBelow(i);
     const glm::dvec2 world(q.x + receivers.camera.x, q.z + receivers.camera.z);
@@ -290,7 +362,7 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     for (int t = 0; t < threadCount; ++t) {
       threads.emplace_back([&, t] {
         for (size_t i = static_cast<size_t>(t); i < count; i += static_cast<size_t>(threadCount))
-          if (receivers.valid[i]) {
+          if (receivers.valid[i] && sunUp) {
             result.lit[i] = litByFlatWater(f, i) ? 1 : 0;
             if (casters && !result.lit[i]) result.casterShadow[i] = inCasterShadow(f, i) ? 1 : 0;
           }
@@ -299,14 +371,95 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     for (std::thread& thread : threads) thread.join();
   }
   for (size_t i = 0; i < count; ++i) result.litPixels += result.lit[i];
+
+  // Local lights: each pixel's direct light from them (the unit of their noise), the casters'
+  // shadows in it, and one stratified cone of photons per light and caster.
+  std::vector<LightCap> caps;
+  std::vector<double> localUnit;
+  if (lights) {
+    result.localIrradiance.assign(count, glm::dvec3(0.0));
+    result.localDirect.assign(count, 0.0);
+    const double level = f.casterPath.waterLevel;
+    for (const TracedLight& light : desc.lights) {
+      const glm::dvec3 position = light.position - receivers.camera;
+      if (!(position.y < level)) continue;  // above the water: not traced
+      const double absorption =
+          (desc.waterAbsorption.x + desc.waterAbsorption.y + desc.waterAbsorption.z) / 3.0;
+      const double intensity = (light.intensity.x + light.intensity.y + light.intensity.z) / 3.0;
+      for (size_t i = 0; i < count; ++i) {
+        if (!receivers.valid[i] || !(receivers.position[i].y < level)) continue;
+        const glm::dvec3 toLight = position - receivers.position[i];
+        const double d = glm::length(toLight);
+        const double cosN = glm::dot(receivers.normal[i], toLight) / std::max(d, 1e-9);
+        const double spot = spotFactor(light, -toLight / std::max(d, 1e-9));
+        if (!(cosN > 0.0) || !(spot > 0.0)) continue;
+        const double direct = intensity * spot * cosN / (d * d) * std::exp(-absorption * d);
+        result.localDirect[i] += direct;
+        const glm::dvec3 from = receivers.position[i] +
+                                receivers.normal[i] * std::max(1e-3, 1e-4 * glm::length(toLight));
+        RayHit hit;
+        if (scene.intersect(from, toLight / d, 0.0, d, hit) && isCaster(desc.casters, hit.mesh))
+          result.casterShadow[i] = 1;
+      }
+      for (size_t mesh = 0; mesh < desc.casters.size() && mesh < scene.meshCount(); ++mesh) {
+        if (!desc.casters[mesh]) continue;
+        LightCap cap;
+        double radius = 0.0;
+        glm::dvec3 centre;
+        scene.meshBoundingSphere(mesh, centre, radius);
+        const double distance = glm::length(centre - position);
+        if (!(radius > 0.0) || !(distance > radius * 1.001) || distance > light.range) continue;
+        cap.light = &light;
+        cap.position = position;
+        cap.mesh = static_cast<int>(mesh);
+        cap.axis = (centre - position) / distance;
+        const glm::dvec3 ref =
+            std::abs(cap.axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+        cap.u = glm::normalize(glm::cross(ref, cap.axis));
+        cap.v = glm::cross(cap.axis, cap.u);
+        cap.cosHalf = std::sqrt(1.0 - (radius / distance) * (radius / distance));
+        cap.solidAngle = 2.0 * kPi * (1.0 - cap.cosHalf);
+        // Photons per steradian that the kernels behind the caster need for kernelPhotons
+        // each under unfocused light: a kernel of radius r at distance d facing the light at
+        // cos c spans pi r^2 c / d^2 steradians. The 99th percentile of them: the noise
+        // target is a 99th percentile too.
+        std::vector<double> need;
+        for (size_t i = 0; i < count; ++i) {
+          if (!receivers.valid[i]) continue;
+          const glm::dvec3 out = receivers.position[i] - position;
+          const double d = glm::length(out);
+          if (!(d > distance - radius) || glm::dot(out, cap.axis) < cap.cosHalf * d) continue;
+          const double c = std::max(std::abs(glm::dot(receivers.normal[i], out)) / d, 0.25);
+          need.push_back(kernelPhotons * d * d / (kPi * f.radiusSquared[i] * c));
+        }
+        if (need.empty()) continue;  // nothing the camera sees lies behind it
+        const double photons = std::clamp(
+            cap.solidAngle * quantile(need, 0.99), 1e4,
+            static_cast<double>(std::max<std::uint64_t>(desc.maxLightPhotonsPerBatch, 1)));
+        cap.strata = static_cast<int>(std::ceil(std::sqrt(photons)));
+        cap.index = caps.size();
+        caps.push_back(cap);
+        result.lightPhotonsPerBatch += static_cast<std::uint64_t>(cap.strata) * cap.strata;
+      }
+    }
+    // The noise unit: the direct light, at least a fifth of its median over the pixels it
+    // reaches (as kNoiseFloor for the sun's).
+    std::vector<double> reached;
+    for (double d : result.localDirect)
+      if (d > 0.0) reached.push_back(d);
+    const double floor = reached.empty() ? 1.0 : kNoiseFloor * quantile(reached, 0.5);
+    localUnit.resize(count);
+    for (size_t i = 0; i < count; ++i) localUnit[i] = std::max(result.localDirect[i], floor);
+  }
   for (std::uint8_t s : result.casterShadow) result.casterShadowPixels += s;
 
-  PhotonLaunchPlan plan = planPhotonLaunch(needs, desc.cellSize);
+  PhotonLaunchPlan plan = sunUp ? planPhotonLaunch(needs, desc.cellSize) : PhotonLaunchPlan{};
   if (plan.photons() > static_cast<double>(desc.maxPhotonsPerBatch)) {
     const double thin = static_cast<double>(desc.maxPhotonsPerBatch) / plan.photons();
     for (double& n : plan.need) n *= thin;
   }
-  const auto perBatch = static_cast<std::uint64_t>(std::llround(plan.photons()));
+  const auto perBatch =
+      static_cast<std::uint64_t>(std::llround(plan.photons())) + result.lightPhotonsPerBatch;
   result.photonsPerBatch = perBatch;
 
   const int threadCount = std::max(1, desc.threads);
@@ -316,23 +469,28 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   // With casters, apart: the seabed estimate's and the object light's sums.
   std::vector<double> seabedSum(casters ? count : 0, 0.0);
   std::vector<glm::dvec3> objectSum(casters ? count : 0, glm::dvec3(0.0));
+  std::vector<glm::dvec3> localSum(lights ? count : 0, glm::dvec3(0.0));
   Accumulator batchTotal;
   std::vector<Accumulator> partial(static_cast<size_t>(threadCount));
   for (int batch = 0; batch < std::max(desc.maxBatches, 1); ++batch) {
     std::vector<std::thread> threads;
     for (int t = 0; t < threadCount; ++t) {
-      partial[static_cast<size_t>(t)].reset(count, casters);
+      partial[static_cast<size_t>(t)].reset(count, casters, lights);
       threads.emplace_back([&, t] {
         for (int row = t; row < plan.rows; row += threadCount)
           for (int column = 0; column < plan.columns; ++column)
             traceCell(f, plan, batch, column, row, partial[static_cast<size_t>(t)]);
+        for (const LightCap& cap : caps)
+          for (int row = t; row < cap.strata; row += threadCount)
+            traceLightRow(f, cap, batch, row, partial[static_cast<size_t>(t)]);
       });
     }
     for (std::thread& thread : threads) thread.join();
-    batchTotal.reset(count, casters);
+    batchTotal.reset(count, casters, lights);
     for (const Accumulator& p : partial) {
       for (size_t i = 0; i < count; ++i) batchTotal.sum[i] += p.sum[i];
       for (size_t k = 0; k < p.object.size(); ++k) batchTotal.object[k] += p.object[k];
+      for (size_t k = 0; k < p.local.size(); ++k) batchTotal.local[k] += p.local[k];
     }
     for (size_t i = 0; i < count; ++i) {
       double estimate = static_cast<double>(batchTotal.sum[i]) / kSumScale;
@@ -343,6 +501,14 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
         seabedSum[i] += estimate;
         objectSum[i] += object / kSumScale;
         estimate += (object.x + object.y + object.z) / (3.0 * kSumScale);
+      }
+      if (lights) {
+        const glm::dvec3 local(static_cast<double>(batchTotal.local[3 * i]),
+                               static_cast<double>(batchTotal.local[3 * i + 1]),
+                               static_cast<double>(batchTotal.local[3 * i + 2]));
+        localSum[i] += local / kSumScale;
+        // In units of the lights' direct light here, as the sun's is in flat water's.
+        estimate += (local.x + local.y + local.z) / (3.0 * kSumScale * localUnit[i]);
       }
       sum[i] += estimate;
       squares[i] += estimate * estimate;
@@ -363,6 +529,7 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
         result.irradiance[i] = seabedSum[i] / batches;
         result.objectIrradiance[i] = objectSum[i] / batches;
       }
+      if (lights) result.localIrradiance[i] = localSum[i] / batches;
       result.standardError[i] = se;
       result.noise[i] = se / std::max({e, result.flatIrradiance[i], kNoiseFloor});
       if (result.lit[i] || (casters && result.casterShadow[i])) litNoise.push_back(result.noise[i]);

@@ -61,6 +61,20 @@ struct FrameTraceProgress {
   bool done = false, converged = false;
 };
 
+// A point or spot light under the water whose light through the casters the trace follows (its
+// direct light is the host's own): photons stratified over the cone of directions to each
+// caster's bounding sphere, each carrying intensity x spot falloff x its solid angle, absorbed
+// by the water along the straight parts of its path.
+struct TracedLight {
+  glm::dvec3 position{0.0};         // world (m)
+  glm::dvec3 axis{0.0, -1.0, 0.0};  // spot axis, unit
+  bool spot = true;                 // false: a point light (no cone)
+  double outerHalfAngle = 0.5;      // spot: radians, light stops here
+  double innerHalfAngle = 0.4;      // spot: radians, full light within
+  glm::dvec3 intensity{1.0};        // per channel (the plugin's LocalLight::intensity)
+  double range = 1e30;              // casters farther than this cast nothing (its contract)
+};
+
 struct FrameTraceDesc {
   glm::dvec3 towardSun{0.0, 1.0, 0.0};  // unit vector toward the sun, y > 0
   double ior = 1.333;
@@ -91,6 +105,12 @@ struct FrameTraceDesc {
   // Per mesh of the EmbreeScene: its caster material (glass or metal whose light the trace
   // follows), or none (opaque). Empty: no casters.
   CasterMaterials casters;
+  // Local lights whose light through the casters is traced (with casters only; lights above
+  // the water are left out). Their photons per batch follow the receivers' kernels, at most
+  // maxLightPhotonsPerBatch per light and caster.
+  std::vector<TracedLight> lights;
+  glm::dvec3 waterAbsorption{0.0};  // 1/m, per channel: the local lights' photons
+  std::uint64_t maxLightPhotonsPerBatch = 4'000'000;
   std::function<void(const FrameTraceProgress&)> progress;  // after every batch
 };
 
@@ -105,9 +125,16 @@ struct FrameTraceResult {
   // empty without casters. Its batch scatter is part of `standardError` and `noise`, which
   // are of the sum irradiance + mean(objectIrradiance).
   std::vector<glm::dvec3> objectIrradiance;
-  // 1 where the unperturbed refracted sun ray up from the point first meets a caster: the
-  // casters' shadows, where most object caustics land. Empty without casters.
+  // 1 where the unperturbed refracted sun ray up from the point (or the ray to a traced local
+  // light lighting it) first meets a caster: the casters' shadows, where most object caustics
+  // land. Empty without casters.
   std::vector<std::uint8_t> casterShadow;
+  // Local lights' light through the casters, per channel (intensity / m^2: the plugin's
+  // light units before albedo), and each pixel's direct light from them without casters
+  // (mean of the channels, same units: the unit of their noise). Empty without lights.
+  std::vector<glm::dvec3> localIrradiance;
+  std::vector<double> localDirect;
+  std::uint64_t lightPhotonsPerBatch = 0;
   // 1 where flat-water sunlight reaches the point: valid, facing the refracted sun, and no
   // triangle on the unperturbed refracted ray up to the water nor above it toward the sun.
   std::vector<std::uint8_t> lit;

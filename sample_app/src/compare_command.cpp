@@ -191,7 +191,9 @@ int runCompare(const Options& options) {
   }
   const reference::CausticComparison c =
       reference::compareAddedLight(methodLight, referenceLight, lit);
-  if (c.pixels == 0) return commandFailed("no lit underwater pixel to compare");
+  // A night scene (the sun below the horizon) has only its lights' object caustics to compare.
+  if (c.pixels == 0 && regionPixels == 0)
+    return commandFailed("no lit underwater pixel and no object caustics to compare");
   reference::PatternComparison pattern;
   if (withPattern) {
     pattern =
@@ -206,7 +208,7 @@ int runCompare(const Options& options) {
   // One scale for every added-light panel: the reference's 99th percentile over lit pixels.
   std::vector<double> litReference;
   for (size_t i = 0; i < n; ++i)
-    if (lit[i]) litReference.push_back(referenceLight[i]);
+    if (c.pixels > 0 ? lit[i] != 0 : region[i] != 0) litReference.push_back(referenceLight[i]);
   const size_t k = (litReference.size() - 1) * 99 / 100;
   std::nth_element(litReference.begin(), litReference.begin() + long(k), litReference.end());
   const double scale = std::max(litReference[k], 1e-12);
@@ -247,10 +249,14 @@ int runCompare(const Options& options) {
   }
   if (!writeImage(options.out, outWidth, outHeight, rgba, nullptr, error))
     return commandFailed(error);
-  std::printf(
-      "compare: %zu lit underwater pixels: relative RMSE %.4f, correlation %.4f (added light, "
-      "luminance; mean plugin %.4g, reference %.4g)\n",
-      c.pixels, c.relativeRmse, c.correlation, c.methodMean, c.referenceMean);
+  if (c.pixels > 0) {
+    std::printf(
+        "compare: %zu lit underwater pixels: relative RMSE %.4f, correlation %.4f (added light, "
+        "luminance; mean plugin %.4g, reference %.4g)\n",
+        c.pixels, c.relativeRmse, c.correlation, c.methodMean, c.referenceMean);
+  } else {
+    std::printf("compare: no sunlit underwater pixel (the sun is below the horizon)\n");
+  }
   if (withPattern) printPattern(pattern);
   if (regionPixels > 0) {
     const reference::CausticComparison o =

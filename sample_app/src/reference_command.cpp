@@ -61,7 +61,21 @@ int runReference(const Options& options) {
   Renderer& renderer = *session.renderer;
   const FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
   reference::FrameTraceDesc trace = traceDesc(options);
-  if (options.objectCaustics) trace.casters = sceneCasterMaterials(session.scene);
+  if (options.objectCaustics) {
+    trace.casters = sceneCasterMaterials(session.scene);
+    for (const HostLight& host : renderer.lights()) {
+      const SceneLight& l = host.light;
+      reference::TracedLight light;
+      light.position = l.position;
+      light.axis = glm::normalize(l.direction);
+      light.spot = l.type == SceneLight::Type::Spot;
+      light.outerHalfAngle = 0.5 * glm::radians(double(l.coneAngleDegrees));
+      light.innerHalfAngle = light.outerHalfAngle * (1.0 - double(l.coneSoftness));
+      light.intensity = glm::dvec3(l.intensity);
+      light.range = l.range;
+      trace.lights.push_back(light);
+    }
+  }
   size_t casters = 0;
   for (const auto& caster : trace.casters) casters += caster.has_value() ? 1 : 0;
   auto traced = TracedCausticsPass::create(*session.plugin, session.scene, input.camera.position,
@@ -90,10 +104,23 @@ int runReference(const Options& options) {
                                              "caustic.noise",
                                              "caustic.lit",
                                              "caustic.objectE",
-                                             "caustic.objectRegion"};
+                                             "caustic.objectRegion",
+                                             "caustic.localE"};
   size_t regionPixels = 0;
   double regionSum = 0.0, regionPeak = 0.0;  // traced object light over the region
   std::vector<float> pixels(n * channels.size(), 0.0f);
+  // Local lights' caustics count toward the region where they reach this share of the lights'
+  // direct light (or of its median, where the direct light is dimmer).
+  double directMedian = 0.0;
+  {
+    std::vector<double> reached;
+    for (double d : result.localDirect)
+      if (d > 0.0) reached.push_back(d);
+    if (!reached.empty()) {
+      std::nth_element(reached.begin(), reached.begin() + long(reached.size() / 2), reached.end());
+      directMedian = reached[reached.size() / 2];
+    }
+  }
   for (size_t i = 0; i < n; ++i) {
     float* out = &pixels[i * channels.size()];
     for (int c = 0; c < 4; ++c) out[c] = radiance[4 * i + static_cast<size_t>(c)];
@@ -106,7 +133,15 @@ int runReference(const Options& options) {
       const glm::dvec3& e = result.objectIrradiance[i];
       const double mean = (e.x + e.y + e.z) / 3.0;
       out[7] = static_cast<float>(mean);
-      const bool region = result.casterShadow[i] != 0 || mean >= kObjectRegionIrradiance;
+      bool region = result.casterShadow[i] != 0 || mean >= kObjectRegionIrradiance;
+      if (i < result.localIrradiance.size()) {
+        const glm::dvec3& l = result.localIrradiance[i];
+        const double local = (l.x + l.y + l.z) / 3.0;
+        out[9] = static_cast<float>(local);
+        region = region ||
+                 (local > 0.0 &&
+                  local >= kObjectRegionIrradiance * std::max(result.localDirect[i], directMedian));
+      }
       out[8] = region ? 1.0f : 0.0f;
       if (region) {
         ++regionPixels;
@@ -134,6 +169,11 @@ int runReference(const Options& options) {
         "(caustic.objectE, flat water = 1): mean %.4f, peak %.4f\n",
         result.casterShadowPixels, regionPixels,
         regionPixels > 0 ? regionSum / static_cast<double>(regionPixels) : 0.0, regionPeak);
+  if (!trace.lights.empty())
+    std::printf(
+        "reference: %zu local light(s) traced through the casters, %.3g photons per batch "
+        "(caustic.localE: intensity / m^2; lights above the water are not traced)\n",
+        trace.lights.size(), static_cast<double>(result.lightPhotonsPerBatch));
   return 0;
 }
 

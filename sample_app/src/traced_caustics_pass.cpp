@@ -52,9 +52,9 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   trace.towardSun = glm::normalize(desc.sun.direction);
   trace.ior = desc.water.ior;
   trace.sunAngularRadius = 0.5 * glm::radians(double(desc.sun.angularDiameterDegrees));
-  result_ = {};
-  if (trace.towardSun.y > 0.0)
-    result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);
+  trace.waterAbsorption = glm::dvec3(desc.water.absorption);
+  // Nothing to trace under a sun below the horizon, unless local lights shine through casters.
+  result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);
 
   // Add the traced light into the host's HDR target, where the plugin would have added its own.
   const size_t n = receivers_.size();
@@ -63,6 +63,7 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
                     radiance.data());
   const reference::CausticLightUnits units = reference::causticLightUnits(desc);
   const bool objects = !result_.objectIrradiance.empty();
+  const bool locals = !result_.localIrradiance.empty();
   for (size_t i = 0; i < n && !result_.irradiance.empty(); ++i) {
     if (!receivers_.valid[i]) continue;
     const double viewDistance = glm::length(gbuffer.viewPosition[i]);
@@ -75,6 +76,12 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
       const glm::vec3 light =
           reference::referenceObjectCausticLight(units, gbuffer.albedo[i], receivers_.depthBelow(i),
                                                  result_.objectIrradiance[i], viewDistance);
+      radiance[i] += glm::vec4(light, 0.0f);
+    }
+    if (locals && result_.localIrradiance[i] != glm::dvec3(0.0)) {
+      const glm::vec3 light =
+          reference::referenceLocalCausticLight(units, gbuffer.albedo[i], receivers_.depthBelow(i),
+                                                result_.localIrradiance[i], viewDistance);
       radiance[i] += glm::vec4(light, 0.0f);
     }
   }

@@ -2,13 +2,15 @@
 // and off metal, on real triangles, against answers known without the frame: the exact sphere
 // trace's flux (object_caustics_reference.h) for a dense and an index-below-water sphere, an
 // index-matched sphere that refills its own shadow, a mirror that sends flat water's light on
-// unchanged, and the same bits for any thread count.
+// unchanged, a point light's caustic through the sphere against the exact trace from a light,
+// and the same bits for any thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "object_caustics_local_light.h"
 #include "object_caustics_reference.h"
 #include "reference_test_frames.h"
 #include "reference_test_surfaces.h"
@@ -206,6 +208,58 @@ TEST(FrameReferenceCasters, PerfectMirrorSendsFlatWatersLightOnUnchanged) {
   mean /= static_cast<double>(count);
   std::printf("mirror: %zu patch pixels, mean reflected E %.4f\n", count, mean);
   EXPECT_NEAR(mean, 1.0, 0.02);
+}
+
+TEST(FrameReferenceCasters, LocalLightThroughTheSphereCarriesTheExactFlux) {
+  // A point light under the water beside the sphere, the sun below the horizon: the traced
+  // light through the sphere (intensity x sr, absorbed by the water on both legs) is the exact
+  // trace's from the light (object_caustics_local_light.h), and nothing else is lit.
+  const FlatSurface water;
+  FrameTraceDesc desc = baseDesc({0.0, 1.0, 0.0});
+  desc.towardSun = glm::normalize(glm::dvec3(0.3, -1.0, 0.0));
+  const postfx::CasterMaterial material = glass(1.5f, {0.02f, 0.1f, 0.3f});
+  desc.casters = {std::nullopt, material};
+  desc.waterAbsorption = {0.05, 0.1, 0.2};
+  TracedLight light;
+  light.position = {-2.2, -0.8, 0.0};
+  light.spot = false;
+  light.intensity = {30.0, 20.0, 10.0};
+  desc.lights = {light};
+  const Traced t = trace(
+      water,
+      {horizontalQuad(-50, 50, -50, 50, kPlaneY), sphereMesh(kSphereCentre, kSphereRadius, 96, 48)},
+      kEye, desc, kWidth, kHeight, kFovY);
+  const FrameTraceResult& r = t.result;
+  ASSERT_EQ(r.localIrradiance.size(), t.receivers.size());
+  EXPECT_EQ(r.litPixels, 0u) << "no sun";
+  EXPECT_GT(r.casterShadowPixels, 100u);
+  const double depth = kEye.y - kPlaneY;
+  const double footprint = (2.0 * depth * std::tan(0.5 * kFovY)) *
+                           (2.0 * depth * std::tan(0.5 * kFovY)) /
+                           (static_cast<double>(kHeight) * kHeight);
+  glm::dvec3 flux(0.0);
+  for (size_t i = 0; i < t.receivers.size(); ++i) {
+    ASSERT_EQ(r.irradiance[i], 0.0);
+    ASSERT_EQ(r.objectIrradiance[i], glm::dvec3(0.0));
+    if (!t.receivers.valid[i] ||
+        std::abs(t.receivers.position[i].y + t.receivers.camera.y - kPlaneY) > 1e-6)
+      continue;
+    flux += r.localIrradiance[i] * footprint;
+  }
+  SphereCaster sphere;
+  sphere.centre = kSphereCentre;
+  sphere.radius = kSphereRadius;
+  sphere.ior = double(material.ior) / 1.333;
+  sphere.absorption = glm::dvec3(material.absorption);
+  LocalLightSource source;
+  source.position = light.position;
+  source.intensity = light.intensity;
+  const LocalCausticReference exact = traceSphereFromLight(
+      sphere, source, floorBins(kSphereCentre, kPlaneY, 4.0, 8), desc.waterAbsorption, 600);
+  const glm::dvec3 expected = exact.fluxInBins + exact.fluxOutside;
+  std::printf("point light: frame flux (%.4f, %.4f, %.4f), exact (%.4f, %.4f, %.4f)\n", flux.x,
+              flux.y, flux.z, expected.x, expected.y, expected.z);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(flux[c] / expected[c], 1.0, 0.03) << "channel " << c;
 }
 
 TEST(FrameReferenceCasters, ObjectLightIsTheSameForAnyThreadCount) {

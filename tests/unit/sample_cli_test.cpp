@@ -675,6 +675,42 @@ TEST_F(SampleCli, ReferenceTracesTheGlassOfAModel) {
   EXPECT_GT(sum[1], 1.5 * sum[0]);
 }
 
+// Issue 28, item 5: a local light's object caustics are traced too. The night dive (the sun
+// below the horizon, a torch shining through the glass sphere) has nothing else to compare; the
+// plugin's caustic under the sphere agrees with the traced one.
+TEST_F(SampleCli, ReferenceTracesATorchThroughTheGlass) {
+  const std::string scene = " --preset torch --width 96 --height 54 --water-resolution 16 ";
+  const fs::path plugin = dir_ / "p.exr", base = dir_ / "b.exr", ref = dir_ / "r.exr";
+  ASSERT_EQ(runSample("render" + scene + "--out " + plugin.string(), dir_).exitCode, 0);
+  ASSERT_EQ(
+      runSample("render --no-caustics --no-object-caustics" + scene + "--out " + base.string(),
+                dir_)
+          .exitCode,
+      0);
+  const RunResult traced = runSample("reference" + scene + "--out " + ref.string(), dir_);
+  ASSERT_EQ(traced.exitCode, 0) << traced.stderrText;
+  EXPECT_NE(traced.stdoutText.find("1 local light(s) traced through the casters"),
+            std::string::npos)
+      << traced.stdoutText;
+  const RunResult compared =
+      runSample("compare --plugin " + plugin.string() + " --reference " + ref.string() +
+                    " --base " + base.string() + " --out " + (dir_ / "side.png").string(),
+                dir_);
+  ASSERT_EQ(compared.exitCode, 0) << compared.stderrText;
+  EXPECT_NE(compared.stdoutText.find("no sunlit underwater pixel"), std::string::npos);
+  const size_t at = compared.stdoutText.find("falls): correlation ");
+  ASSERT_NE(at, std::string::npos) << compared.stdoutText;
+  double correlation = 0.0, rmse = 0.0, flux = 0.0;
+  ASSERT_EQ(std::sscanf(compared.stdoutText.c_str() + at,
+                        "falls): correlation %lf, relative RMSE %lf, flux plugin / reference %lf",
+                        &correlation, &rmse, &flux),
+            3)
+      << compared.stdoutText;
+  EXPECT_GT(correlation, 0.8);
+  EXPECT_GT(flux, 0.8);
+  EXPECT_LT(flux, 1.25);
+}
+
 // view's own flags are refused before a window would open: no display is needed for that.
 TEST_F(SampleCli, ViewScreenshotRefusedWithoutAWindow) {
   unsetenv("DISPLAY");
