@@ -148,6 +148,70 @@ TEST(FrameReferenceCasters, GlassSphereFluxIsTheExactTracesAndABubbleDiffersAsIt
   EXPECT_LT(peaks[1], 1.0) << "a bubble spreads its light";
 }
 
+TEST(FrameReferenceCasters, GlassSphereFocusesWhereTheExactTraceDoes) {
+  // The caustic's centroid and brightest point on the plane: the frame against the exact sphere
+  // trace binned on the same plane (2 cm bins). (The oblique plane cuts the converging beam
+  // unevenly, so the centroid is not on the refracted ray through the centre.)
+  const postfx::CasterMaterial material = glass(1.5f);
+  const SphereFrame s = traceSphere(material);
+  const glm::dvec3 down = refractSunRay(kTowardSun, 0.0, 0.0, 1.333);
+  const glm::dvec3 axis = kSphereCentre + down * ((kPlaneY - kSphereCentre.y) / down.y);
+  const FrameReceivers& r = s.traced.receivers;
+  glm::dvec3 centroid(0.0), brightest(0.0);
+  double total = 0.0, peak = 0.0;
+  for (size_t i = 0; i < r.size(); ++i) {
+    const glm::dvec3 p = r.position[i] + r.camera;
+    if (!r.valid[i] || std::abs(p.y - kPlaneY) > 1e-6) continue;
+    const double e = s.traced.result.objectIrradiance[i].y;
+    centroid += e * p;
+    total += e;
+    if (e > peak) {
+      peak = e;
+      brightest = p;
+    }
+  }
+  ASSERT_GT(total, 0.0);
+  centroid /= total;
+
+  SphereCaster sphere;
+  sphere.centre = kSphereCentre;
+  sphere.radius = kSphereRadius;
+  sphere.ior = 1.5 / 1.333;
+  postfx::ObjectCausticMap bins;
+  bins.size = 150;
+  bins.origin = axis - glm::dvec3(1.5, 0.0, 1.5);
+  bins.axisU = {3.0, 0.0, 0.0};
+  bins.axisV = {0.0, 0.0, 3.0};
+  const CausticReference exact = traceSphereReference(sphere, -down, kPlaneY, bins, 800);
+  glm::dvec3 exactCentroid(0.0), exactBrightest(0.0);
+  double exactTotal = 0.0, exactPeak = 0.0;
+  for (int j = 0; j < bins.size; ++j) {
+    for (int i = 0; i < bins.size; ++i) {
+      const double e = exact.irradiance[static_cast<size_t>(j) * bins.size + i].y;
+      const glm::dvec3 p =
+          bins.origin + (i + 0.5) / bins.size * bins.axisU + (j + 0.5) / bins.size * bins.axisV;
+      exactCentroid += e * p;
+      exactTotal += e;
+      if (e > exactPeak) {
+        exactPeak = e;
+        exactBrightest = p;
+      }
+    }
+  }
+  ASSERT_GT(exactTotal, 0.0);
+  exactCentroid /= exactTotal;
+  const double pixel = 2.0 * (kEye.y - kPlaneY) * std::tan(0.5 * kFovY) / kHeight;
+  std::printf(
+      "focus: centroid frame (%.3f, %.3f) exact (%.3f, %.3f); brightest frame (%.3f, "
+      "%.3f) exact (%.3f, %.3f); pixel %.3f m\n",
+      centroid.x, centroid.z, exactCentroid.x, exactCentroid.z, brightest.x, brightest.z,
+      exactBrightest.x, exactBrightest.z, pixel);
+  EXPECT_LT(glm::length(glm::dvec2(centroid.x - exactCentroid.x, centroid.z - exactCentroid.z)),
+            0.25 * pixel);
+  EXPECT_LT(glm::length(glm::dvec2(brightest.x - exactBrightest.x, brightest.z - exactBrightest.z)),
+            1.5 * pixel);
+}
+
 TEST(FrameReferenceCasters, IndexMatchedSphereRefillsItsShadow) {
   // Glass of the water's own index bends nothing and reflects nothing: its light lands exactly
   // where its shadow is, so shadow + object light is flat water's light everywhere.

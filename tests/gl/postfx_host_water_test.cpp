@@ -1,0 +1,145 @@
+// Issue 26: the default model's pattern on water this project did not make. A host's own sea,
+// a sum of Gerstner (trochoidal) waves with their exact heights and slopes on the texture's
+// grid, drives the TileIrradiance pass on the report's flat seabed, against converged light
+// tracing through the same texture (report/caustic_rows.h). On a flat seabed the irradiance
+// relative to flat water is the pattern itself (nothing else varies), so the correlation here
+// is a pattern correlation. The numbers are printed for the record (docs/measurements.md): the
+// ripples, resolved by the texture but not by the pass's grid of this one 16 m cascade, are
+// spread as unresolved slopes, and the pattern comes out too soft (contrast 0.26 against the
+// trace's 0.69 at 3 m). The floors hold today's agreement so that a regression shows; the flux
+// is exact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <caustic_rows.h>
+#include <error_metrics.h>
+
+#include "gl_fixture.h"
+#include "postfx_physical_util.h"
+#include "postfx_test_util.h"
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+// One trochoidal wave with whole periods per tile: (kx, kz) cycles per tile, amplitude (m),
+// steepness q in [0, 1) (q = 1: the crest forms a cusp), phase.
+struct GerstnerWave {
+  int kx, kz;
+  double amplitude, steepness, phase;
+};
+
+// The host's sea on a tile of `tile` metres: RGBA32F texels (dh/dx, dh/dz, h, 1) at texel
+// centres. A Gerstner surface moves each water parcel a to a + D(a); the height at world x is
+// h(a) with a + D(a) = x (found by fixed-point iteration, a contraction for sum q < 1), its
+// slope J^-T grad_a h with J = I + dD/da.
+std::vector<glm::vec4> gerstnerTexels(const std::vector<GerstnerWave>& waves, double tile,
+                                      int size) {
+  std::vector<glm::vec4> texels(static_cast<size_t>(size) * size);
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const glm::dvec2 world((x + 0.5) / size * tile, (y + 0.5) / size * tile);
+      glm::dvec2 a = world;
+      for (int iteration = 0; iteration < 60; ++iteration) {
+        glm::dvec2 d(0.0);
+        for (const GerstnerWave& w : waves) {
+          const glm::dvec2 k = kTwoPi / tile * glm::dvec2(w.kx, w.kz);
+          const double kl = glm::length(k);
+          d += -(w.steepness / kl) * (k / kl) * std::sin(glm::dot(k, a) + w.phase);
+        }
+        a = world - d;
+      }
+      double h = 0.0;
+      glm::dvec2 gradA(0.0);
+      glm::dmat2 jacobian(1.0);
+      for (const GerstnerWave& w : waves) {
+        const glm::dvec2 k = kTwoPi / tile * glm::dvec2(w.kx, w.kz);
+        const double kl = glm::length(k), theta = glm::dot(k, a) + w.phase;
+        h += w.amplitude * std::cos(theta);
+        gradA += -w.amplitude * std::sin(theta) * k;
+        // d/da of -(q / |k|) (k / |k|) sin(theta) = -(q / |k|^2) cos(theta) k k^T.
+        jacobian -= (w.steepness / (kl * kl)) * std::cos(theta) * glm::outerProduct(k, k);
+      }
+      const glm::dvec2 slope = glm::inverse(glm::transpose(jacobian)) * gradA;
+      texels[static_cast<size_t>(y) * size + x] =
+          glm::vec4(float(slope.x), float(slope.y), float(h), 1.0f);
+    }
+  }
+  return texels;
+}
+
+GLuint uploadWater(const std::vector<glm::vec4>& texels, int size) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+  int levels = 1;
+  for (int s = size; s > 1; s >>= 1) ++levels;
+  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
+  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
+  glGenerateTextureMipmap(t);
+  return t;
+}
+
+class PostfxHostWaterTest : public testsupport::GlTest {};
+
+TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
+  // A 16 m tile of swell, chop and ripples: wavelengths 16 m to 0.42 m (the ripples' slopes
+  // about 0.08 each), crests sharpened by the trochoid.
+  const double tile = 16.0;
+  const int size = 512;
+  const std::vector<GerstnerWave> waves = {
+      {1, 0, 0.20, 0.30, 0.0},    {2, 1, 0.08, 0.30, 1.3},     {-3, 2, 0.05, 0.30, 2.1},
+      {5, -4, 0.025, 0.25, 0.4},  {-7, -6, 0.015, 0.20, 5.0},  {10, 3, 0.010, 0.15, 3.3},
+      {17, -9, 0.0106, 0.3, 0.7}, {-23, 14, 0.0076, 0.3, 2.9}, {31, 22, 0.0053, 0.3, 4.4}};
+  const GLuint water = uploadWater(gerstnerTexels(waves, tile, size), size);
+  struct Case {
+    double elevation, depth;
+    double minCorrelation;
+  } cases[] = {{60.0, 3.0, 0.65}, {60.0, 8.0, 0.72}};
+  for (const Case& c : cases) {
+    postfx::FrameDesc frame;
+    frame.water.texture = {water, GL_RGBA32F};
+    frame.water.cascadeCount = 1;
+    frame.water.tileSize[0] = tile;
+    const double e = glm::radians(c.elevation), azimuth = glm::radians(30.0);
+    frame.sun.direction = {std::cos(e) * std::cos(azimuth), std::sin(e),
+                           std::cos(e) * std::sin(azimuth)};
+    frame.camera.position = {8.0, -1.0, 8.0};
+    ocean::report::CausticReportSettings settings;
+    settings.width = 128;
+    settings.height = 96;
+    settings.binPixels = 4;
+    settings.referenceError = 0.05;
+    settings.receiverDepth = c.depth;
+    ocean::report::FlatSeabedComparison seabed;
+    std::string error;
+    ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;
+    ASSERT_TRUE(seabed.reference().converged);
+    postfx::CreateDesc create;
+    ocean::report::PassRun run;
+    std::vector<double> tileLight;
+    postfx::CausticsSettings caustics;  // the default: TileIrradiance
+    ASSERT_TRUE(seabed.run(create, caustics, 1, run, tileLight, error)) << error;
+    const ocean::report::ErrorStats s =
+        ocean::report::compareWithReference(tileLight, seabed.truth());
+    const double meanRatio = postfxtest::mean(tileLight) / postfxtest::mean(seabed.truth());
+    auto contrast = [](const std::vector<double>& v) {
+      const double m = postfxtest::mean(v);
+      double var = 0.0;
+      for (double x : v) var += (x - m) * (x - m);
+      return std::sqrt(var / double(v.size())) / m;
+    };
+    std::printf(
+        "Gerstner sea, sun %.0f deg, %.0f m: pattern correlation %.3f, relative RMSE %.3f, "
+        "contrast plugin %.3f trace %.3f, mean / traced %.4f\n",
+        c.elevation, c.depth, s.correlation, s.relativeRmse, contrast(tileLight),
+        contrast(seabed.truth()), meanRatio);
+    EXPECT_GT(s.correlation, c.minCorrelation) << c.elevation << " deg, " << c.depth << " m";
+    EXPECT_NEAR(meanRatio, 1.0, 0.05) << "flux";
+  }
+  glDeleteTextures(1, &water);
+}
+
+}  // namespace
