@@ -5,6 +5,8 @@
 #include "atomic_file.h"
 
 #include <unistd.h>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -54,12 +56,12 @@ bool writeFlipped(const std::string& path, int width, int height, const T* pixel
 bool checkOutputPath(const std::string& path, std::string& error) {
   const std::string extension = extensionOf(path);
   const std::string name = std::filesystem::path(path).filename().string();
-  if (extension.empty() && (name == ".png" || name == ".exr")) {
+  if (extension.empty() && (name == ".png" || name == ".exr" || name == ".gif")) {
     error = "output '" + path + "' has no file name before its extension";
     return false;
   }
-  if (extension != ".png" && extension != ".exr") {
-    error = "output '" + path + "' must end in .png or .exr";
+  if (extension != ".png" && extension != ".exr" && extension != ".gif") {
+    error = "output '" + path + "' must end in .png, .exr or .gif";
     return false;
   }
   std::filesystem::path directory = std::filesystem::path(path).parent_path();
@@ -104,6 +106,68 @@ bool writeImage(const std::string& path, int width, int height, const std::vecto
   }
   return writeFlipped(path, width, height, rgba8.data(), OIIO::TypeDesc::UINT8, error, nullptr,
                       attributes);
+}
+
+double animationFps(double fps) {
+  const double delay = std::max(1.0, std::round(100.0 / fps));  // centiseconds
+  return 100.0 / delay;
+}
+
+bool writeAnimation(const std::string& path, int width, int height,
+                    const std::vector<std::vector<uint8_t>>& frames, double fps,
+                    std::string& error) {
+  if (!checkOutputPath(path, error)) return false;
+  if (extensionOf(path) != ".gif") {
+    error = "an animation is written as .gif, got '" + path + "'";
+    return false;
+  }
+  const size_t bytes = size_t(width) * size_t(height) * 4;
+  if (frames.empty() || width <= 0 || height <= 0) {
+    error = "cannot write '" + path + "': no frames";
+    return false;
+  }
+  for (const std::vector<uint8_t>& frame : frames) {
+    if (frame.size() != bytes) {
+      error = "cannot write '" + path + "': a frame of the wrong size";
+      return false;
+    }
+  }
+  auto output = OIIO::ImageOutput::create(path);
+  if (!output || !output->supports("multiimage")) {
+    error = "cannot write '" + path + "' as an animation: " + OIIO::geterror();
+    return false;
+  }
+  const int delay = int(std::lround(100.0 / animationFps(fps)));
+  return writeThroughTemporary(
+      path,
+      [&](const std::string& temporary, std::string& why) {
+        OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+        const int rate[2] = {100, delay};
+        spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
+        spec.attribute("oiio:Movie", 1);
+        spec.attribute("oiio:LoopCount", 0);
+        std::vector<OIIO::ImageSpec> specs(frames.size(), spec);
+        const auto rowBytes = OIIO::stride_t(4 * width);
+        for (size_t f = 0; f < frames.size(); ++f) {
+          const bool opened =
+              f == 0 ? output->open(temporary, int(specs.size()), specs.data())
+                     : output->open(temporary, spec, OIIO::ImageOutput::AppendSubimage);
+          // GL rows are bottom-up; images are top-down: start at the last row.
+          const uint8_t* lastRow = frames[f].data() + size_t(height - 1) * size_t(rowBytes);
+          if (!opened ||
+              !output->write_image(OIIO::TypeDesc::UINT8, lastRow, OIIO::AutoStride, -rowBytes)) {
+            why = "cannot write '" + path + "': " + output->geterror();
+            output->close();
+            return false;
+          }
+        }
+        if (!output->close()) {
+          why = "cannot write '" + path + "': " + output->geterror();
+          return false;
+        }
+        return true;
+      },
+      error);
 }
 
 }  // namespace ocean

@@ -25,7 +25,17 @@ bool writeExrChannels(const std::string& path, int width, int height,
                       const std::vector<float>& interleaved, std::string& error,
                       const ImageAttributes& attributes = {});
 
-// Checks the output path before any rendering: known extension, writable directory.
+// An animated GIF (`path` ends in .gif) of `frames`, each RGBA8 bottom row first, shown at
+// `fps` frames per second and looping forever. GIF stores each frame's delay in whole
+// hundredths of a second: the file holds animationFps(fps).
+bool writeAnimation(const std::string& path, int width, int height,
+                    const std::vector<std::vector<uint8_t>>& frames, double fps,
+                    std::string& error);
+// The rate a GIF stores for `fps`: 100 / round(100 / fps), its delays being whole centiseconds.
+double animationFps(double fps);
+
+// Checks the output path before any rendering: known extension (.png, .exr, or .gif for an
+// animation), writable directory.
 bool checkOutputPath(const std::string& path, std::string& error);
 
 }  // namespace ocean

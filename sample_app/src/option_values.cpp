@@ -261,7 +261,8 @@ const std::array kValueOptions{
                   return true;
                 }},
     ValueOption{"--frames", "N",
-                "bench: measured frames; render: frames of a sequence; view: frames, then quit",
+                "bench: measured frames; render: frames of a sequence (one animated GIF with --out "
+                "X.gif); view: frames, then quit",
                 false,
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 1, 100000, o.frames, "--frames", error);

@@ -1,8 +1,9 @@
 // ocean_sample render: one headless frame to an image, or with --frames N an image sequence
-// with time running (and the camera on its slow path), each frame's change from the one before
-// on stdout.
+// (or one animated GIF, when --out ends in .gif) with time running (and the camera on its slow
+// path), each frame's change from the one before on stdout.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include <glcontext/context.h>
 
@@ -33,12 +34,25 @@ bool renderChecked(HeadlessSession& session, const FrameInput& input, std::strin
 
 int runRender(const Options& options) {
   std::string error;
-  const bool sequence = options.frames > 1;
+  std::string extension = std::filesystem::path(options.out).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const bool animation = extension == ".gif";
+  const bool sequence = options.frames > 1 && !animation;
   // Checked before any work so a bad path fails fast and leaves nothing behind (every frame of
   // a sequence goes to the same directory with the same extension).
   const std::string firstName =
       sequence ? sequenceFrameName(options.out, 0, options.frames) : options.out;
   if (!checkOutputPath(firstName, error)) return commandFailed(error);
+  // An animation is held in memory until it is written whole.
+  constexpr double kMaxAnimationBytes = 2.0 * 1024 * 1024 * 1024;
+  const double animationBytes =
+      4.0 * double(options.width) * double(options.height) * double(options.frames);
+  if (animation && animationBytes > kMaxAnimationBytes)
+    return commandFailed("an animated GIF of " + std::to_string(options.frames) + " frames of " +
+                         std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " needs " + std::to_string(std::llround(animationBytes / 1048576.0)) +
+                         " MiB in memory, over 2048: fewer --frames or a smaller size");
+  std::vector<std::vector<uint8_t>> animationFrames;
   HeadlessSession session;
   if (!openHeadlessSession(options, /*debug=*/true, /*benchmarkFloor=*/false, session, error)) {
     return commandFailed(error);
@@ -61,6 +75,18 @@ int runRender(const Options& options) {
                            options.timeSeconds + (options.freezeTime ? 0.0 : seconds)};
     if (!renderChecked(session, input, error)) return commandFailed(error);
     std::vector<float> radiance = renderer.readRadiance();
+    if (animation) {
+      animationFrames.push_back(renderer.readColor());
+      if (!previous.empty()) {
+        const double change = relativeFrameChange(previous, radiance);
+        changeSum += change;
+        changeMax = std::max(changeMax, change);
+      }
+      std::printf("frame %d of %d\n", frame + 1, options.frames);
+      std::fflush(stdout);
+      previous = std::move(radiance);
+      continue;
+    }
     const std::string name =
         sequence ? sequenceFrameName(options.out, frame, options.frames) : options.out;
     // What lit the frame, for compare's check that its frames belong together.
@@ -81,7 +107,14 @@ int runRender(const Options& options) {
     }
     previous = std::move(radiance);
   }
-  if (sequence) {
+  if (animation) {
+    if (!writeAnimation(options.out, options.width, options.height, animationFrames, options.fps,
+                        error))
+      return commandFailed(error);
+    std::printf("%s: %d frames at %g fps (GIF stores whole hundredths of a second)\n",
+                options.out.c_str(), options.frames, animationFps(options.fps));
+  }
+  if (sequence || (animation && options.frames > 1)) {
     std::printf(
         "frame-to-frame change: mean %.5f, max %.5f (mean |luminance difference| / mean "
         "luminance) over %d frames at %g fps\n",

@@ -711,6 +711,54 @@ TEST_F(SampleCli, ReferenceTracesATorchThroughTheGlass) {
   EXPECT_LT(flux, 1.25);
 }
 
+// Issue 27, item 4: motion a browser shows. --frames N with a .gif output writes one looping
+// animation of N frames at the stated rate (GIF's whole hundredths of a second), and the
+// caustics move between its frames.
+TEST_F(SampleCli, RenderWritesAnAnimatedGif) {
+  const fs::path out = dir_ / "loop.gif";
+  const RunResult result =
+      runSample("render --width 64 --height 36 --water-resolution 16 --frames 3 --fps 20 --out " +
+                    out.string(),
+                dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  EXPECT_NE(result.stdoutText.find("3 frames at 20 fps"), std::string::npos) << result.stdoutText;
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in);
+  int subimages = 0;
+  std::vector<std::vector<uint8_t>> frames;
+  while (in->seek_subimage(subimages, 0)) {
+    const OIIO::ImageSpec& spec = in->spec();
+    EXPECT_EQ(spec.width, 64);
+    EXPECT_EQ(spec.height, 36);
+    const OIIO::ParamValue* rate = spec.find_attribute("FramesPerSecond", OIIO::TypeRational);
+    ASSERT_NE(rate, nullptr);
+    const int* r = static_cast<const int*>(rate->data());
+    EXPECT_DOUBLE_EQ(double(r[0]) / double(r[1]), 20.0);
+    std::vector<uint8_t> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+    ASSERT_TRUE(
+        in->read_image(subimages, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, pixels.data()));
+    frames.push_back(std::move(pixels));
+    ++subimages;
+  }
+  EXPECT_EQ(subimages, 3);
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_NE(frames.front(), frames.back()) << "time runs: the light moves";
+  // A rate GIF cannot store exactly is rounded to whole hundredths of a second, and said so.
+  const RunResult thirty =
+      runSample("render --width 64 --height 36 --water-resolution 16 --frames 2 --fps 30 --out " +
+                    (dir_ / "thirty.gif").string(),
+                dir_);
+  ASSERT_EQ(thirty.exitCode, 0) << thirty.stderrText;
+  EXPECT_NE(thirty.stdoutText.find("2 frames at 33.3333 fps"), std::string::npos)
+      << thirty.stdoutText;
+  // Too large to hold: refused before any frame, nothing written.
+  const RunResult big = runSample(
+      "render --width 4096 --height 4096 --frames 40 --out " + (dir_ / "big.gif").string(), dir_);
+  EXPECT_EQ(big.exitCode, 1);
+  EXPECT_NE(big.stderrText.find("MiB in memory, over 2048"), std::string::npos) << big.stderrText;
+  EXPECT_FALSE(fs::exists(dir_ / "big.gif"));
+}
+
 // view's own flags are refused before a window would open: no display is needed for that.
 TEST_F(SampleCli, ViewScreenshotRefusedWithoutAWindow) {
   unsetenv("DISPLAY");
