@@ -208,6 +208,19 @@ const std::array kValueOptions{
                   error = "--caustics-lookup must be full or half" + got(text);
                   return false;
                 }},
+    ValueOption{"--tile-resolution", "N",
+                "tile model's irradiance texels per cascade tile side, a power of two in "
+                "32..1024 (default 128)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (!intIn(text, 32, 1024, o.tileResolution, "--tile-resolution", error))
+                    return false;
+                  if ((o.tileResolution & (o.tileResolution - 1)) != 0) {
+                    error = "--tile-resolution must be a power of two" + got(text);
+                    return false;
+                  }
+                  return true;
+                }},
     ValueOption{"--god-rays-resolution", "RES", "full, half or quarter (default)", false,
                 [](std::string_view text, Options& o, std::string& error) {
                   const std::array<std::pair<std::string_view, int>, 3> names{

@@ -51,6 +51,9 @@ struct Options {
   bool triplanarWalls = false;
   // Tile-irradiance lookup resolution divisor: 1 full, 2 half; 0 keeps the plugin's default.
   int causticsLookup = 0;
+  // Tile-irradiance texels per cascade tile side (CausticsSettings::tileResolution); 0 keeps
+  // the plugin's default.
+  int tileResolution = 0;
   // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
   int godRayResolution = 0;
   int waterResolution = 256;

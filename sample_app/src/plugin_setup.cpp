@@ -49,6 +49,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   // once (fog before dispatch), not twice.
   setup->godRays_.intensity = 0.3f;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
+  if (options.tileResolution > 0) setup->caustics_.tileResolution = options.tileResolution;
   if (options.causticsLookup > 0)
     setup->caustics_.tileLookupResolution =
         static_cast<postfx::CausticsLookupResolution>(options.causticsLookup);

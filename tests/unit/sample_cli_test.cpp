@@ -138,6 +138,8 @@ TEST_F(SampleCli, NotANumber) {
 }
 TEST_F(SampleCli, UnknownGodRayResolution) {
   expectRejected("--god-rays-resolution eighth", "--god-rays-resolution");
+  expectRejected("--tile-resolution 100", "--tile-resolution must be a power of two");
+  expectRejected("--tile-resolution 2048", "--tile-resolution");
 }
 TEST_F(SampleCli, MissingModel) {
   expectRejected("--model " + (dir_ / "missing.glb").string(), "missing.glb");

@@ -108,7 +108,9 @@ struct CausticsSettings {
   // Irradiance texels per side of each cascade's tile, a power of two in kTileResolutionRange.
   // GPU memory:
   // tileResolution^2 * (8 bytes * 4/3 + 4 bytes) * tileDepthLayers / 4 per cascade with
-  // waves that focus (128, 4 layers: 0.44 MB per cascade).
+  // waves that focus (128, 4 layers: 0.44 MB per cascade). A host whose cascade holds waves
+  // only a few texels long (ripples in a coarse tile) needs more: docs/measurements.md,
+  // "A host's own water"; finer than its waves need makes the pattern too sharp.
   int tileResolution = 128;
   // Refracted water points per irradiance texel and side, 1 or 2: each point carries the mean
   // slope and height of its cell of the water texture (the mip level of the cell's size). 2
