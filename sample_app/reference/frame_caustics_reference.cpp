@@ -10,6 +10,7 @@
 
 #include "shared_math.h"  // the plugin's own spot cone and submerged length (shaders/shared)
 
+#include "local_light_launch.h"
 #include "photon_launch_plan.h"
 
 namespace ocean::reference {
@@ -73,14 +74,6 @@ std::vector<int> searchWindows(const std::vector<int>& reach, int width, int hei
       for (int k = std::max(y - radius, 0); k <= std::min(y + radius, height - 1); ++k)
         out[at(x, y)] = std::max(out[at(x, y)], rows[at(x, k)]);
   return out;
-}
-
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  const size_t k = std::min(values.size() - 1,
-                            static_cast<size_t>(q * static_cast<double>(values.size() - 1) + 0.5));
-  std::nth_element(values.begin(), values.begin() + static_cast<long>(k), values.end());
-  return values[k];
 }
 
 struct Frame {
@@ -181,26 +174,6 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
                              random, land);
     }
   }
-}
-
-// The cone of directions from a local light to one caster's bounding sphere, stratified in
-// solid angle: strata x strata photons per batch, each of solid angle solidAngle / strata^2.
-struct LightCap {
-  const TracedLight* light = nullptr;
-  glm::dvec3 position{0.0};  // the light, relative to the camera
-  int mesh = -1;
-  glm::dvec3 axis{0.0}, u{0.0}, v{0.0};  // toward the sphere's centre, and across it
-  double cosHalf = 1.0, solidAngle = 0.0;
-  int strata = 0;
-  std::uint64_t index = 0;  // for the photons' random streams
-};
-
-double spotFactor(const TracedLight& light, const glm::dvec3& dir) {
-  if (!light.spot) return 1.0;
-  const double angle = std::acos(std::clamp(glm::dot(dir, light.axis), -1.0, 1.0));
-  return double(postfx::shared::spotConeFalloff(static_cast<float>(angle),
-                                                static_cast<float>(light.outerHalfAngle),
-                                                static_cast<float>(light.innerHalfAngle)));
 }
 
 // Metres of the segment a -> b below the water level (camera-relative heights).
@@ -378,78 +351,10 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   std::vector<double> localUnit;
   if (lights) {
     result.localIrradiance.assign(count, glm::dvec3(0.0));
-    result.localDirect.assign(count, 0.0);
-    const double level = f.casterPath.waterLevel;
-    for (const TracedLight& light : desc.lights) {
-      const glm::dvec3 position = light.position - receivers.camera;
-      if (!(position.y < level)) continue;  // above the water: not traced
-      const double absorption =
-          (desc.waterAbsorption.x + desc.waterAbsorption.y + desc.waterAbsorption.z) / 3.0;
-      const double intensity = (light.intensity.x + light.intensity.y + light.intensity.z) / 3.0;
-      for (size_t i = 0; i < count; ++i) {
-        if (!receivers.valid[i] || !(receivers.position[i].y < level)) continue;
-        const glm::dvec3 toLight = position - receivers.position[i];
-        const double d = glm::length(toLight);
-        const double cosN = glm::dot(receivers.normal[i], toLight) / std::max(d, 1e-9);
-        const double spot = spotFactor(light, -toLight / std::max(d, 1e-9));
-        if (!(cosN > 0.0) || !(spot > 0.0)) continue;
-        const double direct = intensity * spot * cosN / (d * d) * std::exp(-absorption * d);
-        result.localDirect[i] += direct;
-        const glm::dvec3 from = receivers.position[i] +
-                                receivers.normal[i] * std::max(1e-3, 1e-4 * glm::length(toLight));
-        RayHit hit;
-        if (scene.intersect(from, toLight / d, 0.0, d, hit) && isCaster(desc.casters, hit.mesh))
-          result.casterShadow[i] = 1;
-      }
-      for (size_t mesh = 0; mesh < desc.casters.size() && mesh < scene.meshCount(); ++mesh) {
-        if (!desc.casters[mesh]) continue;
-        LightCap cap;
-        double radius = 0.0;
-        glm::dvec3 centre;
-        scene.meshBoundingSphere(mesh, centre, radius);
-        const double distance = glm::length(centre - position);
-        if (!(radius > 0.0) || !(distance > radius * 1.001) || distance > light.range) continue;
-        cap.light = &light;
-        cap.position = position;
-        cap.mesh = static_cast<int>(mesh);
-        cap.axis = (centre - position) / distance;
-        const glm::dvec3 ref =
-            std::abs(cap.axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-        cap.u = glm::normalize(glm::cross(ref, cap.axis));
-        cap.v = glm::cross(cap.axis, cap.u);
-        cap.cosHalf = std::sqrt(1.0 - (radius / distance) * (radius / distance));
-        cap.solidAngle = 2.0 * kPi * (1.0 - cap.cosHalf);
-        // Photons per steradian that the kernels behind the caster need for kernelPhotons
-        // each under unfocused light: a kernel of radius r at distance d facing the light at
-        // cos c spans pi r^2 c / d^2 steradians. The 99th percentile of them: the noise
-        // target is a 99th percentile too.
-        std::vector<double> need;
-        for (size_t i = 0; i < count; ++i) {
-          if (!receivers.valid[i]) continue;
-          const glm::dvec3 out = receivers.position[i] - position;
-          const double d = glm::length(out);
-          if (!(d > distance - radius) || glm::dot(out, cap.axis) < cap.cosHalf * d) continue;
-          const double c = std::max(std::abs(glm::dot(receivers.normal[i], out)) / d, 0.25);
-          need.push_back(kernelPhotons * d * d / (kPi * f.radiusSquared[i] * c));
-        }
-        if (need.empty()) continue;  // nothing the camera sees lies behind it
-        const double photons = std::clamp(
-            cap.solidAngle * quantile(need, 0.99), 1e4,
-            static_cast<double>(std::max<std::uint64_t>(desc.maxLightPhotonsPerBatch, 1)));
-        cap.strata = static_cast<int>(std::ceil(std::sqrt(photons)));
-        cap.index = caps.size();
-        caps.push_back(cap);
-        result.lightPhotonsPerBatch += static_cast<std::uint64_t>(cap.strata) * cap.strata;
-      }
-    }
-    // The noise unit: the direct light, at least a fifth of its median over the pixels it
-    // reaches (as kNoiseFloor for the sun's).
-    std::vector<double> reached;
-    for (double d : result.localDirect)
-      if (d > 0.0) reached.push_back(d);
-    const double floor = reached.empty() ? 1.0 : kNoiseFloor * quantile(reached, 0.5);
-    localUnit.resize(count);
-    for (size_t i = 0; i < count; ++i) localUnit[i] = std::max(result.localDirect[i], floor);
+    caps = planLightCaps(scene, receivers, desc, f.radiusSquared, result.localDirect,
+                         result.casterShadow, localUnit);
+    for (const LightCap& cap : caps)
+      result.lightPhotonsPerBatch += static_cast<std::uint64_t>(cap.strata) * cap.strata;
   }
   for (std::uint8_t s : result.casterShadow) result.casterShadowPixels += s;
 
