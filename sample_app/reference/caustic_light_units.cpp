@@ -24,6 +24,17 @@ CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame) {
   return units;
 }
 
+namespace {
+
+// The plugin's ViewExtinction::Plugin factor: the submerged part of the view ray, attenuated.
+glm::vec3 viewTransmittance(const CausticLightUnits& units, float depth, double viewDistance) {
+  return glm::exp(-units.viewExtinction *
+                  postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
+                                                      units.levelRelative));
+}
+
+}  // namespace
+
 glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
                                 double depthBelow, double tracedIrradiance, double viewDistance) {
   const float depth = static_cast<float>(depthBelow);
@@ -31,9 +42,7 @@ glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3&
   return postfx::shared::sanitizeAlbedo(albedo) * units.lightScale *
          postfx::shared::causticTransmittance(units.absorptionPerDepth, depth) *
          (bracket * postfx::shared::causticSurfaceFade(depth, units.fadeDepth)) *
-         glm::exp(-units.viewExtinction *
-                  postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
-                                                      units.levelRelative));
+         viewTransmittance(units, depth, viewDistance);
 }
 
 glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
@@ -43,9 +52,7 @@ glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm:
   const glm::vec3 bracket(tracedIrradiance * units.upY);
   return postfx::shared::sanitizeAlbedo(albedo) * units.objectLightScale *
          postfx::shared::causticTransmittance(units.absorptionPerDepth, depth) * bracket *
-         glm::exp(-units.viewExtinction *
-                  postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
-                                                      units.levelRelative));
+         viewTransmittance(units, depth, viewDistance);
 }
 
 glm::vec3 referenceLocalCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
@@ -53,10 +60,7 @@ glm::vec3 referenceLocalCausticLight(const CausticLightUnits& units, const glm::
                                      double viewDistance) {
   const float depth = static_cast<float>(depthBelow);
   return postfx::shared::sanitizeAlbedo(albedo) * units.objectIntensity *
-         glm::vec3(tracedIrradiance) *
-         glm::exp(-units.viewExtinction *
-                  postfx::shared::submergedViewLength(static_cast<float>(viewDistance), depth,
-                                                      units.levelRelative));
+         glm::vec3(tracedIrradiance) * viewTransmittance(units, depth, viewDistance);
 }
 
 }  // namespace ocean::reference

@@ -352,7 +352,7 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   if (lights) {
     result.localIrradiance.assign(count, glm::dvec3(0.0));
     caps = planLightCaps(scene, receivers, desc, f.radiusSquared, result.localDirect,
-                         result.casterShadow, localUnit);
+                         result.casterShadow, localUnit, result.localDirectMedian);
     for (const LightCap& cap : caps)
       result.lightPhotonsPerBatch += static_cast<std::uint64_t>(cap.strata) * cap.strata;
   }

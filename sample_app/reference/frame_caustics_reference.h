@@ -134,6 +134,7 @@ struct FrameTraceResult {
   // (mean of the channels, same units: the unit of their noise). Empty without lights.
   std::vector<glm::dvec3> localIrradiance;
   std::vector<double> localDirect;
+  double localDirectMedian = 0.0;  // of localDirect over the pixels the lights reach
   std::uint64_t lightPhotonsPerBatch = 0;
   // 1 where flat-water sunlight reaches the point: valid, facing the refracted sun, and no
   // triangle on the unperturbed refracted ray up to the water nor above it toward the sun.

@@ -37,7 +37,7 @@ std::vector<LightCap> planLightCaps(const EmbreeScene& scene, const FrameReceive
                                     const std::vector<double>& radiusSquared,
                                     std::vector<double>& localDirect,
                                     std::vector<std::uint8_t>& casterShadow,
-                                    std::vector<double>& localUnit) {
+                                    std::vector<double>& localUnit, double& directMedian) {
   const size_t count = receivers.size();
   std::vector<LightCap> caps;
   localDirect.assign(count, 0.0);
@@ -107,7 +107,8 @@ std::vector<LightCap> planLightCaps(const EmbreeScene& scene, const FrameReceive
   std::vector<double> reached;
   for (double d : localDirect)
     if (d > 0.0) reached.push_back(d);
-  const double floor = reached.empty() ? 1.0 : kDirectFloorShare * quantile(reached, 0.5);
+  directMedian = quantile(reached, 0.5);
+  const double floor = reached.empty() ? 1.0 : kDirectFloorShare * directMedian;
   localUnit.resize(count);
   for (size_t i = 0; i < count; ++i) localUnit[i] = std::max(localDirect[i], floor);
   return caps;

@@ -34,14 +34,15 @@ double spotFactor(const TracedLight& light, const glm::dvec3& dir);
 // The caps of every light under the water and caster of desc.casters within its range whose
 // cone holds a receiver behind the caster. Fills, per receiver, `localDirect` (the lights'
 // direct light without casters, mean of the channels, intensity / m^2), sets `casterShadow` where
-// a caster hides a light that would reach it, and `localUnit` (localDirect, at least a fifth of
-// its median over the receivers it reaches). `radiusSquared`: each receiver's kernel radius^2.
+// a caster hides a light that would reach it, `directMedian` (localDirect's median over the
+// receivers it reaches, 0 for none) and `localUnit` (localDirect, at least a fifth of that
+// median). `radiusSquared`: each receiver's kernel radius^2.
 std::vector<LightCap> planLightCaps(const EmbreeScene& scene, const FrameReceivers& receivers,
                                     const FrameTraceDesc& desc,
                                     const std::vector<double>& radiusSquared,
                                     std::vector<double>& localDirect,
                                     std::vector<std::uint8_t>& casterShadow,
-                                    std::vector<double>& localUnit);
+                                    std::vector<double>& localUnit, double& directMedian);
 
 // The nearest-rank q-quantile of `values` (0 when empty).
 double quantile(std::vector<double> values, double q);

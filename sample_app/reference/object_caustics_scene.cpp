@@ -50,9 +50,8 @@ postfx::CasterMesh GlMesh::caster(const glm::dmat4& modelToWorld,
   return m;
 }
 
-GlMesh makeSphereMesh(double radius, int slices, int stacks) {
-  std::vector<glm::vec3> p, n;
-  std::vector<std::uint32_t> idx;
+UvSphere uvSphere(double radius, int slices, int stacks) {
+  UvSphere sphere;
   const double pi = 3.14159265358979323846;
   for (int j = 0; j <= stacks; ++j) {
     const double theta = pi * j / stacks;
@@ -60,17 +59,24 @@ GlMesh makeSphereMesh(double radius, int slices, int stacks) {
       const double phi = 2.0 * pi * i / slices;
       const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta),
                          std::sin(theta) * std::sin(phi));
-      n.emplace_back(d);
-      p.emplace_back(d * radius);
+      sphere.normals.push_back(d);
+      sphere.positions.push_back(d * radius);
     }
   }
   for (int j = 0; j < stacks; ++j) {
     for (int i = 0; i < slices; ++i) {
       const std::uint32_t a = j * (slices + 1) + i, b = a + slices + 1;
-      idx.insert(idx.end(), {a, b, a + 1, a + 1, b, b + 1});
+      sphere.indices.insert(sphere.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
     }
   }
-  return GlMesh(p, n, idx);
+  return sphere;
+}
+
+GlMesh makeSphereMesh(double radius, int slices, int stacks) {
+  const UvSphere sphere = uvSphere(radius, slices, stacks);
+  const std::vector<glm::vec3> p(sphere.positions.begin(), sphere.positions.end());
+  const std::vector<glm::vec3> n(sphere.normals.begin(), sphere.normals.end());
+  return GlMesh(p, n, sphere.indices);
 }
 
 GlMesh makeRingMesh(double inner, double outer, double height, int segments) {

@@ -31,7 +31,14 @@ class GlMesh {
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };
 
-// UV sphere of `radius` around the origin with exact vertex normals.
+// UV sphere of `radius` around the origin with exact vertex normals: (slices + 1) x (stacks + 1)
+// vertices from the north pole down, two triangles per quad (those at the poles degenerate).
+struct UvSphere {
+  std::vector<glm::dvec3> positions, normals;
+  std::vector<std::uint32_t> indices;
+};
+UvSphere uvSphere(double radius, int slices, int stacks);
+// The same in host-owned GL buffers.
 GlMesh makeSphereMesh(double radius, int slices, int stacks);
 // Open-topped ring: inner wall (normals toward the axis), outer wall, top and bottom annuli;
 // axis y, from y = 0 to `height`.

@@ -111,16 +111,7 @@ int runReference(const Options& options) {
   std::vector<float> pixels(n * channels.size(), 0.0f);
   // Local lights' caustics count toward the region where they reach this share of the lights'
   // direct light (or of its median, where the direct light is dimmer).
-  double directMedian = 0.0;
-  {
-    std::vector<double> reached;
-    for (double d : result.localDirect)
-      if (d > 0.0) reached.push_back(d);
-    if (!reached.empty()) {
-      std::nth_element(reached.begin(), reached.begin() + long(reached.size() / 2), reached.end());
-      directMedian = reached[reached.size() / 2];
-    }
-  }
+  const double directMedian = result.localDirectMedian;
   for (size_t i = 0; i < n; ++i) {
     float* out = &pixels[i * channels.size()];
     for (int c = 0; c < 4; ++c) out[c] = radiance[4 * i + static_cast<size_t>(c)];

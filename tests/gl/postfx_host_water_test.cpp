@@ -105,10 +105,7 @@ TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
     frame.water.texture = {water, GL_RGBA32F};
     frame.water.cascadeCount = 1;
     frame.water.tileSize[0] = tile;
-    const double e = glm::radians(c.elevation), azimuth = glm::radians(30.0);
-    frame.sun.direction = {std::cos(e) * std::cos(azimuth), std::sin(e),
-                           std::cos(e) * std::sin(azimuth)};
-    frame.camera.position = {8.0, -1.0, 8.0};
+    postfxtest::flatSeabedView(frame, c.elevation);
     ocean::report::CausticReportSettings settings;
     settings.width = 128;
     settings.height = 96;

@@ -134,15 +134,18 @@ inline void useOcean(postfx::FrameDesc& frame, const postfx::water::Ocean& ocean
 
 // The frame both flat-seabed comparisons with traced light use (report/caustic_rows.h): the
 // ocean's water at level 0, the sun `elevationDegrees` up at 30 degrees azimuth, the camera 1 m
-// under the level above (8, 8).
-inline postfx::FrameDesc flatSeabedFrame(const postfx::water::Ocean& ocean,
-                                         double elevationDegrees) {
-  postfx::FrameDesc frame;
-  useOcean(frame, ocean);
+// under the level above (8, 8) (flatSeabedView: the sun and camera alone, for any water).
+inline void flatSeabedView(postfx::FrameDesc& frame, double elevationDegrees) {
   const double e = glm::radians(elevationDegrees), azimuth = glm::radians(30.0);
   frame.sun.direction = {std::cos(e) * std::cos(azimuth), std::sin(e),
                          std::cos(e) * std::sin(azimuth)};
   frame.camera.position = {8.0, -1.0, 8.0};
+}
+inline postfx::FrameDesc flatSeabedFrame(const postfx::water::Ocean& ocean,
+                                         double elevationDegrees) {
+  postfx::FrameDesc frame;
+  useOcean(frame, ocean);
+  flatSeabedView(frame, elevationDegrees);
   return frame;
 }
 

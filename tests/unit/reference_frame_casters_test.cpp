@@ -12,6 +12,7 @@
 
 #include "object_caustics_local_light.h"
 #include "object_caustics_reference.h"
+#include "object_caustics_scene.h"
 #include "reference_test_frames.h"
 #include "reference_test_surfaces.h"
 
@@ -30,26 +31,14 @@ const glm::dvec3 kEye(0.0, -0.5, 0.0);
 constexpr int kWidth = 96, kHeight = 64;
 constexpr double kFovY = 0.9;
 
-// UV sphere with exact vertex normals, outward, counter-clockwise seen from outside.
+// The shared UV sphere (object_caustics_scene.h) as a traced mesh around `centre`.
 TriangleMesh sphereMesh(const glm::dvec3& centre, double radius, int slices, int stacks) {
+  const UvSphere sphere = uvSphere(radius, slices, stacks);
   TriangleMesh m;
-  for (int j = 0; j <= stacks; ++j) {
-    const double theta = kPi * j / stacks;
-    for (int i = 0; i <= slices; ++i) {
-      const double phi = 2.0 * kPi * i / slices;
-      const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
-                         std::sin(theta) * std::sin(phi));
-      m.positions.push_back(centre + radius * n);
-      m.normals.push_back(n);
-    }
-  }
-  const auto at = [slices](int i, int j) { return static_cast<unsigned>(j * (slices + 1) + i); };
-  for (int j = 0; j < stacks; ++j) {
-    for (int i = 0; i < slices; ++i) {
-      if (j > 0) m.triangles.emplace_back(at(i, j), at(i + 1, j), at(i, j + 1));
-      if (j + 1 < stacks) m.triangles.emplace_back(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  }
+  for (const glm::dvec3& p : sphere.positions) m.positions.push_back(centre + p);
+  m.normals = sphere.normals;
+  for (size_t t = 0; t + 2 < sphere.indices.size(); t += 3)
+    m.triangles.emplace_back(sphere.indices[t], sphere.indices[t + 1], sphere.indices[t + 2]);
   return m;
 }
 
@@ -148,6 +137,21 @@ TEST(FrameReferenceCasters, GlassSphereFluxIsTheExactTracesAndABubbleDiffersAsIt
   EXPECT_LT(peaks[1], 1.0) << "a bubble spreads its light";
 }
 
+// The irradiance-weighted centroid and the brightest point of a caustic on the plane.
+struct Focus {
+  glm::dvec3 weighted{0.0}, brightest{0.0};
+  double total = 0.0, peak = 0.0;
+  void add(const glm::dvec3& p, double e) {
+    weighted += e * p;
+    total += e;
+    if (e > peak) {
+      peak = e;
+      brightest = p;
+    }
+  }
+  glm::dvec3 centroid() const { return weighted / total; }
+};
+
 TEST(FrameReferenceCasters, GlassSphereFocusesWhereTheExactTraceDoes) {
   // The caustic's centroid and brightest point on the plane: the frame against the exact sphere
   // trace binned on the same plane (2 cm bins). (The oblique plane cuts the converging beam
@@ -157,21 +161,14 @@ TEST(FrameReferenceCasters, GlassSphereFocusesWhereTheExactTraceDoes) {
   const glm::dvec3 down = refractSunRay(kTowardSun, 0.0, 0.0, 1.333);
   const glm::dvec3 axis = kSphereCentre + down * ((kPlaneY - kSphereCentre.y) / down.y);
   const FrameReceivers& r = s.traced.receivers;
-  glm::dvec3 centroid(0.0), brightest(0.0);
-  double total = 0.0, peak = 0.0;
+  Focus frame;
   for (size_t i = 0; i < r.size(); ++i) {
     const glm::dvec3 p = r.position[i] + r.camera;
     if (!r.valid[i] || std::abs(p.y - kPlaneY) > 1e-6) continue;
-    const double e = s.traced.result.objectIrradiance[i].y;
-    centroid += e * p;
-    total += e;
-    if (e > peak) {
-      peak = e;
-      brightest = p;
-    }
+    frame.add(p, s.traced.result.objectIrradiance[i].y);
   }
-  ASSERT_GT(total, 0.0);
-  centroid /= total;
+  ASSERT_GT(frame.total, 0.0);
+  const glm::dvec3 centroid = frame.centroid(), brightest = frame.brightest;
 
   SphereCaster sphere;
   sphere.centre = kSphereCentre;
@@ -183,23 +180,14 @@ TEST(FrameReferenceCasters, GlassSphereFocusesWhereTheExactTraceDoes) {
   bins.axisU = {3.0, 0.0, 0.0};
   bins.axisV = {0.0, 0.0, 3.0};
   const CausticReference exact = traceSphereReference(sphere, -down, kPlaneY, bins, 800);
-  glm::dvec3 exactCentroid(0.0), exactBrightest(0.0);
-  double exactTotal = 0.0, exactPeak = 0.0;
-  for (int j = 0; j < bins.size; ++j) {
-    for (int i = 0; i < bins.size; ++i) {
-      const double e = exact.irradiance[static_cast<size_t>(j) * bins.size + i].y;
-      const glm::dvec3 p =
-          bins.origin + (i + 0.5) / bins.size * bins.axisU + (j + 0.5) / bins.size * bins.axisV;
-      exactCentroid += e * p;
-      exactTotal += e;
-      if (e > exactPeak) {
-        exactPeak = e;
-        exactBrightest = p;
-      }
-    }
-  }
-  ASSERT_GT(exactTotal, 0.0);
-  exactCentroid /= exactTotal;
+  Focus traced;
+  for (int j = 0; j < bins.size; ++j)
+    for (int i = 0; i < bins.size; ++i)
+      traced.add(
+          bins.origin + (i + 0.5) / bins.size * bins.axisU + (j + 0.5) / bins.size * bins.axisV,
+          exact.irradiance[static_cast<size_t>(j) * bins.size + i].y);
+  ASSERT_GT(traced.total, 0.0);
+  const glm::dvec3 exactCentroid = traced.centroid(), exactBrightest = traced.brightest;
   const double pixel = 2.0 * (kEye.y - kPlaneY) * std::tan(0.5 * kFovY) / kHeight;
   std::printf(
       "focus: centroid frame (%.3f, %.3f) exact (%.3f, %.3f); brightest frame (%.3f, "
