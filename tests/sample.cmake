@@ -1,6 +1,9 @@
 postfx_add_test(sample_render_tests GL
   SOURCES gl/sample_render_test.cpp
   LIBS ocean_host)
+postfx_add_test(sample_physical_light_tests GL
+  SOURCES gl/sample_physical_light_test.cpp
+  LIBS ocean_host)
 postfx_add_test(sample_cli_tests
   SOURCES unit/sample_cli_test.cpp
   LIBS ocean_host nlohmann_json::nlohmann_json)

@@ -44,7 +44,7 @@ namespace {
 Preset makePreset(std::string_view name, std::string_view description, glm::dvec3 position,
                   double yawDegrees, double pitchDegrees, double sunElevationDegrees,
                   double sunAzimuthDegrees) {
-  Preset preset{name, description, {}, {}, {}};
+  Preset preset{name, description, {}, {}, {}, 0.0};
   preset.camera.position = position;
   preset.camera.yaw = glm::radians(yawDegrees);
   preset.camera.pitch = glm::radians(pitchDegrees);
@@ -85,17 +85,29 @@ Preset torchPreset() {
   return preset;
 }
 
+Preset exposed(Preset preset, double stops) {
+  preset.exposureStops = stops;
+  return preset;
+}
+
+// Exposures chosen by eye at 1280x720 for each view's light: the seabed at 10 m gets ~1/4 of
+// the sun above it (absorption, 1 - Fresnel, Lambert's 1/pi at an oblique sun), looking up
+// meets Snell's window, and from above the sky dominates.
 const std::array<Preset, 5>& presets() {
   static const std::array<Preset, 5> all = {
-      makePreset("seabed", "underwater, looking down at the seabed, pillar and arch",
-                 {2.0, -4.5, 14.0}, 8.0, -22.0, 62.0, 200.0),
-      makePreset("sunward", "underwater, looking up toward the sun through Snell's window",
-                 {0.0, -7.0, 6.0}, 200.0, 38.0, 62.0, 200.0),
-      makePreset("above", "above the water, looking down into it", {0.0, 6.0, 22.0}, 0.0, -28.0,
-                 48.0, 150.0),
-      makePreset("waterline", "camera 3 cm above the mean water plane, half in, half out",
-                 {0.0, 0.03, 16.0}, 5.0, -4.0, 40.0, 170.0),
-      torchPreset(),
+      exposed(makePreset("seabed", "underwater, looking down at the seabed, pillar and arch",
+                         {2.0, -4.5, 14.0}, 8.0, -22.0, 62.0, 200.0),
+              1.5),
+      exposed(makePreset("sunward", "underwater, looking up toward the sun through Snell's window",
+                         {0.0, -7.0, 6.0}, 200.0, 38.0, 62.0, 200.0),
+              1.0),
+      exposed(makePreset("above", "above the water, looking down into it", {0.0, 6.0, 22.0}, 0.0,
+                         -28.0, 48.0, 150.0),
+              0.5),
+      exposed(makePreset("waterline", "camera 3 cm above the mean water plane, half in, half out",
+                         {0.0, 0.03, 16.0}, 5.0, -4.0, 40.0, 170.0),
+              0.5),
+      exposed(torchPreset(), 0.5),
   };
   return all;
 }

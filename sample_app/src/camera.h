@@ -37,6 +37,10 @@ struct Preset {
   Camera camera;
   Sun sun;
   std::vector<SceneLight> lights;  // point and spot lights (--light adds to them)
+  // Exposure in stops (EV) before the tone curve, as a photographer sets it for the scene's
+  // light: the physically lit water below the surface is ~1/4 as bright as sunlit sand
+  // above it. --exposure replaces it.
+  double exposureStops = 0.0;
 };
 
 // Returns false when the name is unknown; `known` lists the valid names for the message.

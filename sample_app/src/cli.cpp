@@ -37,7 +37,8 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--camera-look-at",
                                               "--fov",
                                               "--sun-azimuth",
-                                              "--sun-elevation"};
+                                              "--sun-elevation",
+                                              "--exposure"};
 
 constexpr std::string_view kSceneFooter = R"(
 presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward

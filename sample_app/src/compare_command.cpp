@@ -22,6 +22,7 @@ struct ExrImage {
   std::vector<float> pixels;  // interleaved, top row first (as the file stores it)
   // What lit it (render and reference write these; "" for a file without them).
   std::string caustics, objectCaustics;
+  float exposure = 1.0f;  // the sample's, "ocean:exposure" (1 for a file without it)
 
   int channel(const std::string& name) const {
     const auto it = std::find(names.begin(), names.end(), name);
@@ -47,6 +48,7 @@ bool readExr(const std::string& what, const std::string& path, ExrImage& image,
   image.names = spec.channelnames;
   image.caustics = spec.get_string_attribute("ocean:caustics");
   image.objectCaustics = spec.get_string_attribute("ocean:objectCaustics");
+  image.exposure = exposureFromAttribute(spec.get_string_attribute("ocean:exposure"));
   if (image.width <= 0 || image.height <= 0 || image.channels <= 0) {
     error = what + " '" + path + "' has no pixels";
     return false;
@@ -74,7 +76,7 @@ double luminance(const glm::vec3& c) {
   return 0.2126 * double(c.r) + 0.7152 * double(c.g) + 0.0722 * double(c.b);
 }
 
-// The sample's tone mapping (shaders/sample/tonemap.frag at exposure 1): ACES fit, then sRGB.
+// The sample's tone mapping (shaders/sample/tonemap.frag, after the exposure): ACES fit, sRGB.
 float srgbEncode(float c) {
   c = std::clamp(c, 0.0f, 1.0f);
   return c < 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
@@ -233,9 +235,10 @@ int runCompare(const Options& options) {
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
-      put(0, 0, x, y, toneMap(glm::max(rgb(plugin, i), glm::vec3(0.0f))));
-      put(1, 0, x, y, toneMap(glm::max(rgb(traced, i), glm::vec3(0.0f))));
-      put(2, 0, x, y, toneMap(glm::max(rgb(base, i), glm::vec3(0.0f))));
+      // All three at the plugin frame's exposure: one scale for the eye to compare.
+      put(0, 0, x, y, toneMap(glm::max(rgb(plugin, i), glm::vec3(0.0f)) * plugin.exposure));
+      put(1, 0, x, y, toneMap(glm::max(rgb(traced, i), glm::vec3(0.0f)) * plugin.exposure));
+      put(2, 0, x, y, toneMap(glm::max(rgb(base, i), glm::vec3(0.0f)) * plugin.exposure));
       put(0, 1, x, y, grey(methodLight[i], scale));
       put(1, 1, x, y, grey(referenceLight[i], scale));
       put(2, 1, x, y, signedColour(methodLight[i] - referenceLight[i], scale));

@@ -1,5 +1,7 @@
 #include "headless_session.h"
 
+#include <cmath>
+
 #include "scene_setup.h"
 #include "view_flags.h"
 
@@ -23,6 +25,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
   settings.width = options.width;
   settings.height = options.height;
   settings.waterResolution = options.waterResolution;
+  settings.exposure = float(std::exp2(session.preset.exposureStops));
   session.renderer = Renderer::create(settings, scene, error);
   if (!session.renderer) return false;
   session.renderer->setLights(session.preset.lights);

@@ -7,10 +7,26 @@
 #include <unistd.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
 namespace ocean {
+
+std::string exposureAttribute(float exposure) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.9g", double(exposure));
+  return text;
+}
+
+float exposureFromAttribute(const std::string& text) {
+  char* end = nullptr;
+  const float value = std::strtof(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || !(value > 0))
+    return 1.0f;
+  return value;
+}
 namespace {
 
 std::string extensionOf(const std::string& path) {

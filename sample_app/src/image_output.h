@@ -12,6 +12,12 @@ namespace ocean {
 // what produced the pixels, so that `compare` can refuse frames that do not belong together.
 using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
 
+// "ocean:exposure": the linear exposure the frame was tone mapped with (9 significant digits),
+// so that compare's side by side shows it as the sample did; exposureFromAttribute reads it
+// back, 1 for a file without it or with a value that is not a positive finite number.
+std::string exposureAttribute(float exposure);
+float exposureFromAttribute(const std::string& text);
+
 // RGBA8 pixels, bottom row first (GL order); `.png` (or any 8-bit format OIIO knows) by
 // extension; `.exr` gets the linear float buffer instead when one is given.
 bool writeImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba8,

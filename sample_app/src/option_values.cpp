@@ -268,6 +268,12 @@ const std::array kValueOptions{
                   return doubleIn(text, 1.0, 90.0, o.sunElevationDegrees, "--sun-elevation",
                                   "a number of degrees in [1, 90]", error);
                 }},
+    ValueOption{"--exposure", "EV",
+                "exposure in stops before the tone curve, -16..16 (default: the preset's)", false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return doubleIn(text, -16.0, 16.0, o.exposureStops, "--exposure",
+                                  "a number of stops in [-16, 16]", error);
+                }},
     ValueOption{"--out", "PATH", "output file (or directory for report)", false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.out = text;  // checked by the command that writes it, before any work

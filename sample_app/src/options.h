@@ -62,6 +62,7 @@ struct Options {
   std::optional<glm::dvec3> cameraPosition, cameraLookAt;  // metres, y up, water at y = 0
   std::optional<double> fovDegrees;                        // vertical field of view
   std::optional<double> sunAzimuthDegrees, sunElevationDegrees;
+  std::optional<double> exposureStops;  // EV before the tone curve (Preset::exposureStops)
   // render --frames: the camera's slow path, metres per second (with a look-at it keeps turning
   // to the target)
   std::optional<glm::dvec3> cameraVelocity;

@@ -2,6 +2,7 @@
 #include <postfx/testing.h>
 
 #include "caster_admission.h"
+#include "sun_light.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,11 @@
 namespace ocean {
 
 namespace {
+
+// Lambert's 1/pi: the plugin's caustic light is irradiance times albedo (docs/integration.md).
+constexpr float kLambertian = 0.318309886f;
+// An isotropic phase function, 1 / (4 pi) per steradian.
+constexpr float kIsotropicPhase = 0.0795774715f;
 
 // The ocean's cascades the plugin is given: the context is created for exactly these.
 int pluginCascades(const postfx::water::Ocean& ocean) {
@@ -43,11 +49,20 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   }
   setup->createDesc_ = desc;
   setup->caustics_.enabled = options.caustics;
+  // The plugin's caustics are the sample's underwater sun (lighting.frag lights none below the
+  // level): given the beam below the surface (dispatch), 1/pi makes its caustic copy the
+  // Lambertian direct light, and no surface fade, since a fade would darken the sun itself
+  // near the surface, not only its pattern (which tends to flat water's there anyway).
+  setup->caustics_.intensity = kLambertian;
+  setup->caustics_.surfaceFadeDepth = 0.0f;
+  // The light through and off the casters is the same sun's (and the lights'), in the same
+  // units: their shadows in the host's map remove what they block, this adds back what passes.
+  setup->objectCaustics_.intensity = kLambertian;
   setup->godRays_.enabled = options.godRays;
-  // The sample lights its water column with its own ambient in-scattering too; a fifth of the
-  // plugin's default keeps the shafts from washing out the seabed now that they are attenuated
-  // once (fog before dispatch), not twice.
-  setup->godRays_.intensity = 0.3f;
+  // The sun's single scattering with an isotropic phase function, 1 / (4 pi) per steradian,
+  // as the sample's fog scatters the sky's light (sample_optics.h): the shafts in the same
+  // units as the seabed's light.
+  setup->godRays_.intensity = kIsotropicPhase;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
   if (options.tileResolution > 0) setup->caustics_.tileResolution = options.tileResolution;
   if (options.causticsLookup > 0)
@@ -83,7 +98,9 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   desc.camera.view = frame.input.camera.viewRotation();
   desc.camera.projection = glm::mat4(frame.projection);
   desc.sun.direction = frame.input.sun.direction();
-  desc.sun.irradiance = frame.input.sun.irradiance;
+  // The beam below the surface (atmosphere and 1 - Fresnel), not the sun above the air: the
+  // plugin's light then equals the sample's own sun, which it replaces under the water.
+  desc.sun.irradiance = sunIrradianceBelowSurface(frame.input.sun, frame.optics.ior);
   desc.water.level = frame.optics.level;
   desc.water.texture = {ocean.slopeTexture(), GL_RGBA16F};
   desc.water.cascadeCount = pluginCascades(ocean);

@@ -143,7 +143,8 @@ int runReference(const Options& options) {
   }
   const ImageAttributes attributes = {
       {"ocean:caustics", "traced"},
-      {"ocean:objectCaustics", options.objectCaustics ? "traced" : "off"}};
+      {"ocean:objectCaustics", options.objectCaustics ? "traced" : "off"},
+      {"ocean:exposure", exposureAttribute(renderer.settings().exposure)}};
   if (!writeExrChannels(options.out, options.width, options.height, channels, pixels, error,
                         attributes))
     return commandFailed(error);

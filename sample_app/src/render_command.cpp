@@ -92,7 +92,8 @@ int runRender(const Options& options) {
     // What lit the frame, for compare's check that its frames belong together.
     const ImageAttributes attributes = {
         {"ocean:caustics", options.caustics ? "plugin" : "off"},
-        {"ocean:objectCaustics", options.objectCaustics ? "plugin" : "off"}};
+        {"ocean:objectCaustics", options.objectCaustics ? "plugin" : "off"},
+        {"ocean:exposure", exposureAttribute(renderer.settings().exposure)}};
     if (!writeImage(name, options.width, options.height, renderer.readColor(), &radiance, error,
                     attributes))
       return commandFailed(error);

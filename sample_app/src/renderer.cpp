@@ -10,6 +10,7 @@
 #include "shared/sample_frame.h"
 #include "shared/sample_lights.h"
 #include "shared/sample_optics.h"
+#include "sun_light.h"
 
 namespace ocean_sample {
 const glkit::ShaderLibrary& shaderLibrary();
@@ -169,8 +170,6 @@ glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
   // The beam under water: refracted through the mean surface.
   const glm::dvec3 travel = glm::refract(-toSun, glm::dvec3(0, 1, 0), 1.0 / ior);
   const glm::dvec3 toSunUnderwater = toSun.y > 0.0 ? -travel : glm::dvec3(0, 1, 0);
-  const float transmission =
-      1.0f - shared::fresnelReflectance(float(std::max(toSun.y, 0.0)), 1.0f, float(ior));
   shadowWorldToClip_ =
       shadowMap_.fit(camera.position, glm::vec3(toSunUnderwater), settings_.shadowRadius);
 
@@ -184,12 +183,8 @@ glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
   frame.projectionZ = glm::vec4(params.z, float(gbuffer::DepthConvention::ReverseZ), 0.0f);
   frame.cameraHeight = glm::vec4(float(camera.position.y - optics_.level), 0.0f, 0.0f, 0.0f);
   frame.sunDirection = glm::vec4(glm::vec3(toSun), toSun.y > 0.0 ? 1.0f : 0.0f);
-  // Irradiance on a surface facing the sun scales with nothing else; the atmosphere reddens
-  // and dims a low sun.
-  const float airMass = float(1.0 / std::max(toSun.y, 0.02));
-  const glm::vec3 atmosphere = glm::exp(-glm::vec3(0.02f, 0.035f, 0.07f) * (airMass - 1.0f));
-  frame.sunIrradiance = glm::vec4(input.sun.irradiance * atmosphere, 0.0f);
-  frame.refractedSun = glm::vec4(glm::vec3(toSunUnderwater), transmission);
+  frame.sunIrradiance = glm::vec4(sunIrradianceAboveWater(input.sun), 0.0f);
+  frame.refractedSun = glm::vec4(glm::vec3(toSunUnderwater), sunTransmission(input.sun, ior));
   const float skyLight = 0.25f + 0.6f * float(std::max(toSun.y, 0.0));
   frame.ambient = glm::vec4(glm::vec3(0.45f, 0.6f, 0.85f) * skyLight, 0.0f);
   frame.absorption = glm::vec4(optics_.absorption.r, optics_.absorption.g, optics_.absorption.b, 0);

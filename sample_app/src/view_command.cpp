@@ -6,6 +6,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -189,6 +190,7 @@ int runView(const Options& options) {
     settings.width = options.width;
     settings.height = options.height;
     settings.waterResolution = options.waterResolution;
+    settings.exposure = float(std::exp2(state.preset.exposureStops));
     auto renderer = Renderer::create(settings, scene, error);
     // The start preset's lights (with --light) stay when keys switch presets.
     if (renderer) renderer->setLights(state.preset.lights);

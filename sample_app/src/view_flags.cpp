@@ -41,6 +41,7 @@ bool resolveView(const Options& options, Preset& preset, std::string& error) {
   if (options.sunAzimuthDegrees) preset.sun.azimuth = glm::radians(*options.sunAzimuthDegrees);
   if (options.sunElevationDegrees)
     preset.sun.elevation = glm::radians(*options.sunElevationDegrees);
+  if (options.exposureStops) preset.exposureStops = *options.exposureStops;
   return true;
 }
 

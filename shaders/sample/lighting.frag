@@ -1,7 +1,7 @@
 #version 450 core
-// Deferred lighting: sun (refracted and attenuated under water, shadowed), point and spot
-// lights (inverse square, cone, extinction along their path under water, shadowed) and sky
-// ambient.
+// Deferred lighting: the sun above the water (shadowed; below it the plugin's caustics are the
+// sun), point and spot lights (inverse square, cone, extinction along their path under water,
+// shadowed) and sky ambient.
 // No fog here: the composite pass fogs this light, then the plugin adds its own (attenuated).
 #include "shared/gbuffer_codec.h"
 #include "shared/sample_frame.h"
@@ -94,17 +94,12 @@ void main() {
   vec3 sigmaT = absorption.rgb + scattering.rgb;
 
   vec3 light = vec3(0.0);
-  if (sunDirection.w > 0.0) {
-    vec3 toSun = height < 0.0 ? refractedSun.xyz : sunDirection.xyz;
-    float cosine = max(dot(normal, toSun), 0.0);
-    vec3 transmitted = sunIrradiance.rgb;
-    if (height < 0.0) {
-      // Beam through the surface (1 - Fresnel) and down the slanted path to this depth.
-      float path = -height / max(refractedSun.y, 1e-3);
-      transmitted *= refractedSun.w * exp(-sigmaT * path);
-    }
-    light += transmitted * cosine * sunShadow(relative, normal);
-  }
+  // Under the water the sun's light is the plugin's: its caustics, at intensity 1/pi with the
+  // sun's beam below the surface (sun_light.h), are the direct underwater sun, flat water's
+  // exactly and a wavy sea's redistributed. Lighting it here too would count the sun twice.
+  if (sunDirection.w > 0.0 && height >= 0.0)
+    light += sunIrradiance.rgb * max(dot(normal, sunDirection.xyz), 0.0) *
+             sunShadow(relative, normal);
   light += localLights(relative, normal, height, sigmaT);
   // Sky light from above, attenuated with depth, weighted toward up-facing surfaces.
   float skyFacing = 0.5 + 0.5 * normal.y;

@@ -27,10 +27,13 @@ SHARED_FN float submergedLength(float segmentLength, float heightA, float height
   return segmentLength * below / abs(heightA - heightB);
 }
 
-// Light in the water column that the view ray scatters toward the camera per unit radiance,
-// as an infinitely deep water colour: sigma_s / sigma_t times the ambient light at depth.
+// Radiance the sky's light scatters toward the camera from infinitely deep water at `depth`:
+// single scattering of the downwelling `ambient` irradiance, sigma_s / sigma_t of it, taken as
+// a uniform hemisphere of radiance E / pi (scalar irradiance 2 E) through an isotropic phase
+// function 1 / (4 pi): E / (2 pi). The sun's own in-scattering is the plugin's god rays.
 SHARED_FN vec3 waterInscatter(vec3 sigmaS, vec3 sigmaT, vec3 ambient, float depth) {
-  return sigmaS / max(sigmaT, vec3(1e-6f)) * ambient * exp(-sigmaT * max(depth, 0.0f));
+  return sigmaS / max(sigmaT, vec3(1e-6f)) * ambient *
+         (0.159154943f * exp(-sigmaT * max(depth, 0.0f)));
 }
 
 // A simple sky: zenith-to-horizon gradient plus the sun's disc and glow. dir is unit.

@@ -118,12 +118,15 @@ double meanRadiance(const Frame& frame, Keep keep) {
 
 // Sand under a higher sun gets more light: it meets the water more squarely (less Fresnel
 // loss), the refracted light meets the sand more squarely (n.l) and crosses less water. The
-// plugin's own light is left out so the sample's direct sun alone is compared.
+// direct sun under the water is the plugin's flat-water light (no pattern to compare).
 TEST(SampleViewFlags, HigherSunLightsTheSandMore) {
   double previous = 0.0;
   for (double elevation : {20.0, 45.0, 80.0}) {
     ocean::Options options;
-    options.caustics = options.godRays = options.objectCaustics = false;
+    // Under the water the sun is the plugin's light: flat water's (ray deviation at tau 0).
+    options.godRays = options.objectCaustics = false;
+    options.rayDeviationCaustics = true;
+    options.tau = 0.0;
     options.sunElevationDegrees = elevation;
     const Frame frame = renderFrame(options, 129, 73);
     EXPECT_NEAR(glm::degrees(frame.sun.elevation), elevation, 1e-9);
@@ -141,7 +144,10 @@ TEST(SampleViewFlags, HigherSunLightsTheSandMore) {
 TEST(SampleViewFlags, SunAzimuthLightsTheWallsFacingIt) {
   auto render = [](double azimuth) {
     ocean::Options options;
-    options.caustics = options.godRays = options.objectCaustics = false;
+    // Under the water the sun is the plugin's light: flat water's (ray deviation at tau 0).
+    options.godRays = options.objectCaustics = false;
+    options.rayDeviationCaustics = true;
+    options.tau = 0.0;
     options.cameraPosition = glm::dvec3(ocean_scene::features::kPillarXZ.x, -3.5,
                                         ocean_scene::features::kPillarXZ.y + 6.0);
     options.cameraLookAt =

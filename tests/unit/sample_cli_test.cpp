@@ -348,6 +348,39 @@ TEST_F(SampleCli, RenderWithLightsWritesAnImage) {
   EXPECT_TRUE(fs::exists(out));
 }
 
+// --exposure scales only what the tone curve sees: the EXR's radiance is the same, its header
+// says the exposure, the PNG is brighter; a bad value is refused before any work.
+TEST_F(SampleCli, ExposureOnlyChangesTheToneMappedImage) {
+  expectRejected("--exposure nan", "--exposure must be a number of stops in [-16, 16]");
+  expectRejected("--exposure 17", "--exposure");
+  const std::string scene = "render --width 64 --height 36 --water-resolution 16 --out ";
+  for (const char* stops : {"0", "2"}) {
+    const std::string name = std::string("exposure") + stops;
+    for (const char* extension : {".exr", ".png"}) {
+      const RunResult result =
+          runSample(scene + (dir_ / (name + extension)).string() + " --exposure " + stops, dir_);
+      ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    }
+  }
+  EXPECT_EQ(exrChannel(dir_ / "exposure0.exr", "G"), exrChannel(dir_ / "exposure2.exr", "G"));
+  auto header = [](const fs::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    return in ? std::string(in->spec().get_string_attribute("ocean:exposure")) : "(unreadable)";
+  };
+  EXPECT_EQ(header(dir_ / "exposure0.exr"), "1");
+  EXPECT_EQ(header(dir_ / "exposure2.exr"), "4");
+  auto meanByte = [](const fs::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) return -1.0;
+    std::vector<uint8_t> bytes(size_t(in->spec().image_pixels()) * size_t(in->spec().nchannels));
+    if (!in->read_image(0, 0, 0, -1, OIIO::TypeDesc::UINT8, bytes.data())) return -1.0;
+    double sum = 0.0;
+    for (uint8_t b : bytes) sum += b;
+    return sum / double(bytes.size());
+  };
+  EXPECT_GT(meanByte(dir_ / "exposure2.png"), meanByte(dir_ / "exposure0.png") + 20.0);
+}
+
 // Parse errors exit 2 (as before CLI11), failures of the command itself 1; one line each.
 TEST_F(SampleCli, ExitCodesAndOneLineErrors) {
   RunResult result = runSample("render --width", dir_);
