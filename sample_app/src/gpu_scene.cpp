@@ -4,6 +4,8 @@
 
 #include <glkit/program.h>
 
+#include <cmath>
+
 namespace ocean {
 
 bool isCausticCaster(const ocean_scene::Material& material) {
@@ -47,11 +49,17 @@ void GpuScene::upload(const ocean_scene::Model& model) {
   for (const ocean_scene::Instance& instance : model.instances) {
     const ocean_scene::Mesh& mesh = model.meshes[instance.mesh];
     const bool known = mesh.material < model.materials.size();
-    const glm::vec3 albedo = known ? model.materials[mesh.material].baseColor : glm::vec3(0.5f);
+    ocean_scene::Material material;
+    if (known)
+      material = model.materials[mesh.material];
+    else {
+      material.baseColor = glm::vec3(0.5f);
+      material.metallic = 0.0f;
+    }
     const bool caster = instance.castsCaustics && known &&
                         isCausticCaster(model.materials[mesh.material]) &&
                         meshes_[instance.mesh].indexCount >= 3;
-    instances_.push_back({instance.mesh, glm::dmat4(instance.transform), albedo, caster});
+    instances_.push_back({instance.mesh, glm::dmat4(instance.transform), material, caster});
     if (caster) {
       const GpuMesh& gpu = meshes_[instance.mesh];
       casters_.push_back({gpu.vertices.id(), gpu.indices.id(), gpu.vertexCount, gpu.indexCount,
@@ -61,12 +69,40 @@ void GpuScene::upload(const ocean_scene::Model& model) {
   }
 }
 
+bool GpuScene::inSet(const GpuInstance& instance, DrawSet set) {
+  const bool refractive = instance.material.isRefractive();
+  switch (set) {
+    case DrawSet::All:
+      return true;
+    case DrawSet::NonCasters:
+      return !instance.caster;
+    case DrawSet::Opaque:
+      return !refractive;
+    case DrawSet::Refractive:
+      return refractive;
+    case DrawSet::Metal:
+      return !refractive && instance.material.metallic >= 0.5f;
+  }
+  return false;
+}
+
+bool GpuScene::has(DrawSet set) const {
+  for (const GpuInstance& instance : instances_)
+    if (inSet(instance, set)) return true;
+  return false;
+}
+
 void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet set) const {
   const GLint modelLocation = glGetUniformLocation(program, "modelRelative");
   const GLint normalLocation = glGetUniformLocation(program, "normalMatrix");
   const GLint albedoLocation = glGetUniformLocation(program, "albedo");
+  const GLint baseColorLocation = glGetUniformLocation(program, "baseColor");
+  const GLint iorLocation = glGetUniformLocation(program, "materialIor");
+  const GLint roughnessLocation = glGetUniformLocation(program, "roughness");
+  const GLint absorptionLocation = glGetUniformLocation(program, "glassAbsorption");
   for (const GpuInstance& instance : instances_) {
-    if (set == DrawSet::NonCasters && instance.caster) continue;
+    if (!inSet(instance, set)) continue;
+    const ocean_scene::Material& material = instance.material;
     glm::dmat4 relative = instance.transform;
     relative[3] -= glm::dvec4(cameraPosition, 0.0);  // in double: far worlds stay precise
     const glm::mat4 model(relative);
@@ -74,7 +110,24 @@ void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet se
     glUniformMatrix4fv(modelLocation, 1, GL_FALSE, glm::value_ptr(model));
     if (normalLocation >= 0)
       glUniformMatrix3fv(normalLocation, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    if (albedoLocation >= 0) glUniform3fv(albedoLocation, 1, glm::value_ptr(instance.albedo));
+    if (albedoLocation >= 0) {
+      const glm::vec3 diffuse =
+          material.baseColor * (1.0f - glm::clamp(material.metallic, 0.0f, 1.0f));
+      glUniform3fv(albedoLocation, 1, glm::value_ptr(diffuse));
+    }
+    if (baseColorLocation >= 0)
+      glUniform3fv(baseColorLocation, 1, glm::value_ptr(material.baseColor));
+    // KHR_materials_ior's 0 is an infinite IOR: a mirror.
+    if (iorLocation >= 0) glUniform1f(iorLocation, material.ior > 0.0f ? material.ior : 1e4f);
+    if (roughnessLocation >= 0) glUniform1f(roughnessLocation, material.roughness);
+    if (absorptionLocation >= 0) {
+      // Beer-Lambert: attenuationColor remains after attenuationDistance metres.
+      glm::vec3 sigma(0.0f);
+      if (std::isfinite(material.attenuationDistance) && material.attenuationDistance > 0.0f)
+        sigma = -glm::log(glm::max(material.attenuationColor, glm::vec3(1e-4f))) /
+                material.attenuationDistance;
+      glUniform3fv(absorptionLocation, 1, glm::value_ptr(sigma));
+    }
     const GpuMesh& mesh = meshes_[instance.mesh];
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);

@@ -28,13 +28,19 @@ struct CasterInstance {
 
 class GpuScene {
  public:
-  enum class DrawSet { All, NonCasters };
+  // All: every instance (shadow maps). NonCasters: without the caustic casters (the receiver
+  // map the plugin intersects with). Opaque: without the refractive instances (the G-buffer:
+  // glass is drawn forward over the lit frame, as deferred engines draw transparency).
+  // Refractive: only those. Metal: only metallic (>= 0.5) instances.
+  enum class DrawSet { All, NonCasters, Opaque, Refractive, Metal };
 
   void upload(const ocean_scene::Model& model);
-  // Draws every instance with `program` bound; sets its modelRelative, normalMatrix and albedo
-  // uniforms (those it has).
-  // NonCasters leaves out the caustic casters (the receiver map the plugin intersects with).
+  // Draws the set's instances with `program` bound; sets the uniforms it has of modelRelative,
+  // normalMatrix, albedo (the diffuse albedo: baseColor * (1 - metallic), glTF's), and for the
+  // forward passes baseColor, materialIor, roughness and glassAbsorption (1/m, from
+  // KHR_materials_volume).
   void draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet set = DrawSet::All) const;
+  bool has(DrawSet set) const;
   const std::vector<CasterInstance>& casters() const { return casters_; }
 
  private:
@@ -47,9 +53,10 @@ class GpuScene {
   struct GpuInstance {
     size_t mesh;
     glm::dmat4 transform;
-    glm::vec3 albedo;
+    ocean_scene::Material material;
     bool caster;
   };
+  static bool inSet(const GpuInstance& instance, DrawSet set);
   std::vector<GpuMesh> meshes_;
   std::vector<GpuInstance> instances_;
   std::vector<CasterInstance> casters_;

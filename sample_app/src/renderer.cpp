@@ -85,7 +85,17 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
                                    "sample.output");
   outputFbo_ = glkit::createFramebuffer({});
   glNamedFramebufferTexture(outputFbo_.id(), GL_COLOR_ATTACHMENT0, output_.id(), 0);
-  for (GLuint fbo : {foggedFbo_.id(), outputFbo_.id()}) {
+  if (!casterSurfaces_.create(scene_, settings_.width, settings_.height, error)) return false;
+  std::vector<GLuint> framebuffers = {foggedFbo_.id(), outputFbo_.id()};
+  if (casterSurfaces_.hasGlass()) {
+    displayDepth_ = glkit::createTexture2D(GL_DEPTH_COMPONENT32F, settings_.width, settings_.height,
+                                           GL_NEAREST, "sample.display_depth");
+    displayFbo_ = glkit::createFramebuffer({});
+    glNamedFramebufferTexture(displayFbo_.id(), GL_COLOR_ATTACHMENT0, fogged_.id(), 0);
+    glNamedFramebufferTexture(displayFbo_.id(), GL_DEPTH_ATTACHMENT, displayDepth_.id(), 0);
+    framebuffers.push_back(displayFbo_.id());
+  }
+  for (GLuint fbo : framebuffers) {
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       error = "sample framebuffer incomplete";
       return false;
@@ -246,7 +256,7 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glClear(GL_DEPTH_BUFFER_BIT);
   glDepthFunc(GL_GREATER);
   glUseProgram(geometry_.id());
-  scene_.draw(geometry_.id(), eye);
+  scene_.draw(geometry_.id(), eye, GpuScene::DrawSet::Opaque);
   glPopDebugGroup();
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.lighting");
@@ -295,7 +305,20 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
   }
 
+  glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_.id());
+  glViewport(0, 0, width, height);
+  casterSurfaces_.drawMetal(scene_, eye, shadowMap_.texture());
+  const bool glass = casterSurfaces_.hasGlass();
+  if (glass) {
+    glCopyImageSubData(targets_.depth(), GL_TEXTURE_2D, 0, 0, 0, 0, displayDepth_.id(),
+                       GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+    casterSurfaces_.drawGlass(scene_, eye, fogged_.id(), displayFbo_.id(), targets_.depth(),
+                              shadowMap_.texture());
+  }
+  const GLuint surfaceDepth = glass ? displayDepth_.id() : targets_.depth();
+
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.water_surface");
+  glBindFramebuffer(GL_FRAMEBUFFER, glass ? displayFbo_.id() : foggedFbo_.id());
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_FALSE);
@@ -307,7 +330,7 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glUseProgram(water_.id());
   const GLuint waterInputs[] = {ocean_->displacementTexture(), ocean_->slopeTexture()};
   glBindTextures(4, 2, waterInputs);
-  const GLuint refractionInputs[] = {targets_.depth(), sceneBelow_.id()};
+  const GLuint refractionInputs[] = {surfaceDepth, sceneBelow_.id()};
   glBindTextures(0, 2, refractionInputs);
   waterGrid_.draw();
   glDisable(GL_BLEND);

@@ -1,7 +1,8 @@
 #pragma once
 // The sample host: a small deferred renderer of the ocean scene. Per frame: ocean update, sun
-// shadow map, G-buffer, deferred lighting into RGBA16F, [the plugin's passes], underwater fog,
-// the water surface, tone mapping into RGBA8.
+// shadow map, G-buffer (without glass), deferred lighting into RGBA16F, underwater fog, [the
+// plugin's passes], metal and glass drawn forward (caster_surfaces.h), the water surface, tone
+// mapping into RGBA8.
 #include <epoxy/gl.h>
 
 #include <functional>
@@ -17,6 +18,7 @@
 #include <scene/model.h>
 
 #include "camera.h"
+#include "caster_surfaces.h"
 #include "gpu_scene.h"
 #include "light_shadow_maps.h"
 #include "shadow_map.h"
@@ -117,6 +119,11 @@ class Renderer {
   glkit::VertexArray emptyVao_;
   glkit::Texture fogged_;  // RGBA16F: the frame after fog, plus the water surface
   glkit::Framebuffer foggedFbo_;
+  CasterSurfaces casterSurfaces_;
+  // With glass: the G-buffer's depth plus the glass, which the surface pass then tests against
+  // (the G-buffer itself stays as the plugin and the references read it), and the frame on it.
+  glkit::Texture displayDepth_;
+  glkit::Framebuffer displayFbo_;
   glkit::Texture sceneBelow_;  // RGBA16F copy of the fogged frame the surface refracts
   glkit::Texture output_;      // RGBA8 tone-mapped image
   glkit::Framebuffer outputFbo_;

@@ -15,7 +15,6 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec3 radiance = texelFetch(radianceTexture, pixel, 0).rgb;
   float depth = texelFetch(depthTexture, pixel, 0).r;
-  vec3 sigmaT = absorption.rgb + scattering.rgb;
   if (isSkyDepth(depth, int(projectionZ.z))) {
     // Nothing was drawn. A ray that enters the water and meets no geometry (past the seabed's
     // edge, or level under water) sees infinitely deep water: pure in-scattering. From above,
@@ -25,11 +24,7 @@ void main() {
     outRadiance = vec4(entersWater ? deepWaterColour() : radiance, 1.0);
     return;
   }
-  vec3 relative = reconstructRelative(uv, depth);
-  float heightA = cameraHeight.x, heightB = cameraHeight.x + relative.y;
-  float path = submergedLength(length(relative), heightA, heightB);
-  vec3 transmittance = exp(-sigmaT * path);
-  float meanDepth = -0.5 * (min(heightA, 0.0) + min(heightB, 0.0));
-  vec3 inscatter = waterInscatter(scattering.rgb, sigmaT, ambient.rgb, meanDepth);
-  outRadiance = vec4(radiance * transmittance + inscatter * (1.0 - transmittance), 1.0);
+  vec3 transmittance, inscatter;
+  viewFog(reconstructRelative(uv, depth), transmittance, inscatter);
+  outRadiance = vec4(radiance * transmittance + inscatter, 1.0);
 }

@@ -8,6 +8,7 @@
 #include "shared/sample_lights.h"
 #include "shared/sample_optics.h"
 #include "sample/reconstruct.glsl"
+#include "sample/sun_shadow.glsl"
 in vec2 uv;
 layout(binding = 0) uniform sampler2D depthTexture;
 layout(binding = 1) uniform sampler2D normalTexture;
@@ -15,21 +16,6 @@ layout(binding = 2) uniform sampler2D albedoTexture;
 layout(binding = 3) uniform sampler2DShadow shadowMap;
 layout(binding = 4) uniform sampler2DShadow lightShadowMaps[SAMPLE_MAX_LIGHTS];
 out vec4 outRadiance;
-
-float sunShadow(vec3 relative, vec3 normal) {
-  // Normal offset by a texel hides acne on slopes without peter-panning.
-  vec3 biased = relative + normal * waterParams.y * 1.5;
-  vec4 clip = shadowViewProjection * vec4(biased, 1.0);
-  vec3 coord = clip.xyz / clip.w;
-  coord.xy = coord.xy * 0.5 + 0.5;
-  if (any(lessThan(coord, vec3(0.0))) || any(greaterThan(coord, vec3(1.0)))) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
-  float lit = 0.0;
-  for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x)
-      lit += texture(shadowMap, vec3(coord.xy + vec2(x, y) * texel, coord.z - 0.0005));
-  return lit / 9.0;
-}
 
 // Lit share of light i at `relative` (camera-relative), 1 outside its shadow map's view.
 float lightShadow(int i, vec3 relative, vec3 normal, vec3 toLight, float distance) {
@@ -99,7 +85,7 @@ void main() {
   // exactly and a wavy sea's redistributed. Lighting it here too would count the sun twice.
   if (sunDirection.w > 0.0 && height >= 0.0)
     light += sunIrradiance.rgb * max(dot(normal, sunDirection.xyz), 0.0) *
-             sunShadow(relative, normal);
+             sunShadow(shadowMap, relative, normal);
   light += localLights(relative, normal, height, sigmaT);
   // Sky light from above, attenuated with depth, weighted toward up-facing surfaces.
   float skyFacing = 0.5 + 0.5 * normal.y;
