@@ -33,7 +33,6 @@ bool CasterSurfaces::create(const GpuScene& scene, int width, int height, std::s
   backFaces_ = glkit::createTexture2D(GL_RGBA16F, width, height, GL_NEAREST, "sample.glass_back");
   backDepth_ = glkit::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST,
                                       "sample.glass_back_depth");
-  frameCopy_ = glkit::createTexture2D(GL_RGBA16F, width, height, GL_NEAREST, "sample.behind_glass");
   backFbo_ = glkit::createFramebuffer("sample.glass_back");
   glNamedFramebufferTexture(backFbo_.id(), GL_COLOR_ATTACHMENT0, backFaces_.id(), 0);
   glNamedFramebufferTexture(backFbo_.id(), GL_DEPTH_ATTACHMENT, backDepth_.id(), 0);
@@ -64,11 +63,10 @@ void CasterSurfaces::drawMetal(const GpuScene& scene, const glm::dvec3& eye,
 }
 
 void CasterSurfaces::drawGlass(const GpuScene& scene, const glm::dvec3& eye, GLuint frame,
-                               GLuint frameFbo, GLuint sceneDepth, GLuint shadowMap) const {
+                               GLuint frameCopy, GLuint frameFbo, GLuint sceneDepth,
+                               GLuint shadowMap) const {
   if (glass_.id() == 0) return;
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.glass_surface");
-  GLint framebuffer = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_GREATER);  // reverse-Z: the nearest far side
@@ -80,16 +78,15 @@ void CasterSurfaces::drawGlass(const GpuScene& scene, const glm::dvec3& eye, GLu
   glUseProgram(glassBack_.id());
   scene.draw(glassBack_.id(), eye, GpuScene::DrawSet::Refractive);
 
-  glCopyImageSubData(frame, GL_TEXTURE_2D, 0, 0, 0, 0, frameCopy_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                     width_, height_, 1);
+  glCopyImageSubData(frame, GL_TEXTURE_2D, 0, 0, 0, 0, frameCopy, GL_TEXTURE_2D, 0, 0, 0, 0, width_,
+                     height_, 1);
   glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
   glUseProgram(glass_.id());
-  const GLuint inputs[] = {frameCopy_.id(), sceneDepth, backFaces_.id(), shadowMap};
+  const GLuint inputs[] = {frameCopy, sceneDepth, backFaces_.id(), shadowMap};
   glBindTextures(0, 4, inputs);
   scene.draw(glass_.id(), eye, GpuScene::DrawSet::Refractive);
   glBindTextures(0, 4, nullptr);
   glDisable(GL_DEPTH_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
   glPopDebugGroup();
 }
 

@@ -31,14 +31,15 @@ class CasterSurfaces {
   // depth attached). Frame constants at binding 0.
   void drawMetal(const GpuScene& scene, const glm::dvec3& eye, GLuint shadowMap) const;
   // Draws the glass into `frameFbo` (its colour `frame`, with a depth buffer holding the
-  // G-buffer's depth, which the glass then writes), refracting a copy of the frame.
-  void drawGlass(const GpuScene& scene, const glm::dvec3& eye, GLuint frame, GLuint frameFbo,
-                 GLuint sceneDepth, GLuint shadowMap) const;
+  // G-buffer's depth, which the glass then writes), refracting the frame as copied into
+  // `frameCopy` (same size and format). Leaves `frameFbo` bound.
+  void drawGlass(const GpuScene& scene, const glm::dvec3& eye, GLuint frame, GLuint frameCopy,
+                 GLuint frameFbo, GLuint sceneDepth, GLuint shadowMap) const;
 
  private:
   int width_ = 0, height_ = 0;
   glkit::Program metal_, glassBack_, glass_;
-  glkit::Texture backFaces_, backDepth_, frameCopy_;
+  glkit::Texture backFaces_, backDepth_;
   glkit::Framebuffer backFbo_;
 };
 

@@ -56,15 +56,13 @@ void GpuScene::upload(const ocean_scene::Model& model) {
       material.baseColor = glm::vec3(0.5f);
       material.metallic = 0.0f;
     }
-    const bool caster = instance.castsCaustics && known &&
-                        isCausticCaster(model.materials[mesh.material]) &&
+    const bool caster = instance.castsCaustics && known && isCausticCaster(material) &&
                         meshes_[instance.mesh].indexCount >= 3;
     instances_.push_back({instance.mesh, glm::dmat4(instance.transform), material, caster});
     if (caster) {
       const GpuMesh& gpu = meshes_[instance.mesh];
       casters_.push_back({gpu.vertices.id(), gpu.indices.id(), gpu.vertexCount, gpu.indexCount,
-                          gpu.boundsMin, gpu.boundsMax, glm::dmat4(instance.transform),
-                          model.materials[mesh.material]});
+                          gpu.boundsMin, gpu.boundsMax, glm::dmat4(instance.transform), material});
     }
   }
 }

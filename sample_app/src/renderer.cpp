@@ -312,8 +312,8 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   if (glass) {
     glCopyImageSubData(targets_.depth(), GL_TEXTURE_2D, 0, 0, 0, 0, displayDepth_.id(),
                        GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
-    casterSurfaces_.drawGlass(scene_, eye, fogged_.id(), displayFbo_.id(), targets_.depth(),
-                              shadowMap_.texture());
+    casterSurfaces_.drawGlass(scene_, eye, fogged_.id(), sceneBelow_.id(), displayFbo_.id(),
+                              targets_.depth(), shadowMap_.texture());
   }
   const GLuint surfaceDepth = glass ? displayDepth_.id() : targets_.depth();
 

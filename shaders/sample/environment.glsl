@@ -15,11 +15,10 @@ vec3 environmentRadiance(vec3 dir, float height) {
     return f * skyRadiance(reflect(dir, vec3(0.0, 1.0, 0.0)), noSun) + (1.0 - f) * deep;
   }
   if (dir.y <= 0.0) return deep;
-  // Up to the surface: Snell's window shows the sky, outside it the water reflects itself.
-  float f = fresnelReflectance(dir.y, ior, 1.0);
-  vec3 sky = f < 1.0 ? skyRadiance(refract(dir, vec3(0.0, -1.0, 0.0), ior), noSun) : vec3(0.0);
+  // Up to the (mean) surface, through the water in between.
+  vec3 surface = belowSurfaceRadiance(dir, vec3(0.0, -1.0, 0.0), noSun, deep);
   vec3 transmittance = exp(-sigmaT * (-height / max(dir.y, 1e-3)));
-  return deep + transmittance * ((1.0 - f) * sky + f * deep - deep);
+  return deep + transmittance * (surface - deep);
 }
 
 // The sun reflected by a surface of GGX roughness toward the camera (radiance): n unit normal,

@@ -12,5 +12,5 @@ invariant gl_Position;
 void main() {
   worldNormal = normalMatrix * inNormal;
   relativePosition = (modelRelative * vec4(inPosition, 1.0)).xyz;
-  gl_Position = viewProjection * (modelRelative * vec4(inPosition, 1.0));
+  gl_Position = viewProjection * vec4(relativePosition, 1.0);
 }

@@ -21,6 +21,7 @@ layout(binding = 2) uniform sampler2D backFaces;    // glass_back_faces.frag's o
 layout(binding = 3) uniform sampler2DShadow shadowMap;
 out vec4 outColor;
 
+// The pixel a camera-relative point projects to; false off screen or behind the camera.
 bool toScreen(vec3 relative, out ivec2 pixel) {
   vec4 clip = viewProjection * vec4(relative, 1.0);
   if (!(clip.w > 1e-4)) return false;
@@ -30,28 +31,31 @@ bool toScreen(vec3 relative, out ivec2 pixel) {
   return true;
 }
 
-// Does the point lie behind what the frame shows at its pixel?
-bool behindScene(vec3 p, out ivec2 pixel) {
-  if (!toScreen(p, pixel)) return false;
+const int kOffScreen = -1, kInFront = 0, kBehind = 1;
+// Where the point lies against what the frame shows at its pixel.
+int againstScene(vec3 p, out ivec2 pixel) {
+  if (!toScreen(p, pixel)) return kOffScreen;
   float depth = texelFetch(sceneDepth, pixel, 0).r;
-  if (isSkyDepth(depth, int(projectionZ.z))) return false;
+  if (isSkyDepth(depth, int(projectionZ.z))) return kInFront;
   vec2 uv = (vec2(pixel) + 0.5) / vec2(textureSize(sceneDepth, 0));
-  return length(p) >= length(reconstructRelative(uv, depth));
+  return length(p) >= length(reconstructRelative(uv, depth)) ? kBehind : kInFront;
 }
 
 // What the ray from `origin` along `dir` meets in the frame: marched in screen space against
 // the G-buffer's depth in growing steps, the crossing refined by bisection. Where the ray
-// leaves the screen or meets nothing, the environment, seen through the water to the camera.
-vec3 sceneAlong(vec3 origin, vec3 dir, float height) {
+// leaves the screen or meets nothing, the environment, seen through the water to the camera
+// (the glass's own view fog).
+vec3 sceneAlong(vec3 origin, vec3 dir, float height, vec3 transmittance, vec3 inscatter) {
   float previous = 0.0, t = 0.03;
   ivec2 pixel;
   for (int i = 0; i < 28; ++i) {
-    vec3 p = origin + dir * t;
-    if (behindScene(p, pixel)) {
+    int where = againstScene(origin + dir * t, pixel);
+    if (where == kOffScreen) break;
+    if (where == kBehind) {
       for (int j = 0; j < 5; ++j) {
         float middle = 0.5 * (previous + t);
         ivec2 at;
-        if (behindScene(origin + dir * middle, at)) {
+        if (againstScene(origin + dir * middle, at) == kBehind) {
           t = middle;
           pixel = at;
         } else {
@@ -60,13 +64,9 @@ vec3 sceneAlong(vec3 origin, vec3 dir, float height) {
       }
       return texelFetch(sceneColour, pixel, 0).rgb;
     }
-    ivec2 unused;
-    if (!toScreen(p, unused)) break;
     previous = t;
     t *= 1.3;
   }
-  vec3 transmittance, inscatter;
-  viewFog(relativePosition, transmittance, inscatter);
   return environmentRadiance(dir, height) * transmittance + inscatter;
 }
 
@@ -77,12 +77,15 @@ void main() {
   float height = cameraHeight.x + relativePosition.y;
   float outside = height < 0.0 ? waterParams.x : 1.0;  // the medium around the glass
   float fFront = fresnelReflectance(-dot(v, n), outside, materialIor);
+  vec3 transmittance, inscatter;
+  viewFog(relativePosition, transmittance, inscatter);
 
   vec3 inside = refract(v, n, outside / materialIor);
   vec4 back = texelFetch(backFaces, ivec2(gl_FragCoord.xy), 0);
   vec3 transmitted;
   if (back.w <= 0.0) {
-    transmitted = sceneAlong(relativePosition, v, height);  // an open sheet: thin glass
+    // An open sheet: thin glass.
+    transmitted = sceneAlong(relativePosition, v, height, transmittance, inscatter);
   } else {
     // Wyman's estimate of the path inside: the far side's distance along the view, less ours.
     float thickness = max(back.w - length(relativePosition), 0.0);
@@ -98,12 +101,10 @@ void main() {
       leaving = reflect(inside, -nBack);
       fBack = 0.0;
     }
-    transmitted = sceneAlong(exitPoint, leaving, height) * (1.0 - fBack) *
+    transmitted = sceneAlong(exitPoint, leaving, height, transmittance, inscatter) * (1.0 - fBack) *
                   exp(-glassAbsorption * thickness);
   }
 
-  vec3 transmittance, inscatter;
-  viewFog(relativePosition, transmittance, inscatter);
   float f0 = pow((materialIor - outside) / (materialIor + outside), 2.0);
   vec3 reflected = environmentRadiance(reflect(v, n), height) * fFront +
                    sunSpecular(n, v, vec3(f0), roughness, height,

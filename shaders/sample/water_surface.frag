@@ -67,11 +67,7 @@ void main() {
   }
   // From below: the surface normal faces away from us. Outside Snell's window F = 1 (total
   // internal reflection) and we see the deep water reflected.
-  vec3 nb = -n;
-  float f = fresnelReflectance(max(-dot(view, nb), 0.0), ior, 1.0);
-  vec3 sky = vec3(0.0);
-  if (f < 1.0) sky = skyRadiance(normalize(refract(view, nb, ior)), sunDirection.xyz);
-  vec3 color = (1.0 - f) * sky + f * deepColor;
+  vec3 color = belowSurfaceRadiance(view, -n, sunDirection.xyz, deepColor);
   vec3 transmittance = exp(-sigmaT * length(relativePosition));
   // The fog pass already wrote deepColor (plus any light the plugin added in the water column)
   // here: add only the difference the surface makes, so that added light survives.
