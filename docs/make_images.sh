@@ -10,8 +10,11 @@ sample=./build/sample_app/ocean_sample
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-echo "make_images: docs/side_by_side.png (default scene, 320x180, traced reference)"
-size="--width 320 --height 180"
+echo "make_images: docs/hero.png (the default command at 1280x720)"
+"$sample" render --out docs/hero.png > /dev/null
+
+echo "make_images: docs/side_by_side.png (seabed preset, 320x180, traced reference)"
+size="--preset seabed --width 320 --height 180"
 "$sample" render $size --out "$work/plugin.exr" > /dev/null
 "$sample" render $size --no-caustics --no-object-caustics --out "$work/base.exr" > /dev/null
 "$sample" render $size --caustics-model ray-deviation --tau 0 --no-object-caustics \

@@ -33,3 +33,6 @@ postfx_add_test(sample_view_flags_tests GL
 postfx_add_test(sample_stability_tests GL
   SOURCES gl/sample_stability_test.cpp
   LIBS ocean_host)
+postfx_add_test(sample_glass_refraction_tests GL
+  SOURCES gl/sample_glass_refraction_test.cpp
+  LIBS ocean_host)

@@ -85,6 +85,28 @@ Preset torchPreset() {
   return preset;
 }
 
+// The hero view: a calm, clear morning over the sandbank's reef (scene_features.h), 3 m of
+// water over sand, the sun high and ahead-right: the glass sphere's focus on the sand below
+// it, the brass ring's cardioid, god rays from the same surface.
+Preset shallowPreset() {
+  using namespace ocean_scene::features;
+  const double sand = ocean_scene::seabedHeight(kShallowSphereXZ.x, kShallowSphereXZ.y);
+  const glm::dvec3 sphere(kShallowSphereXZ.x, sand + kShallowSphereHeightAboveSand,
+                          kShallowSphereXZ.y);
+  Preset preset = makePreset("shallow",
+                             "a calm sea over a sandbank reef 3 m deep: the glass sphere's focus, "
+                             "the ring's cardioid",
+                             glm::dvec3(kShallowSphereXZ.x + 0.9, -0.8, kShallowSphereXZ.y + 4.6),
+                             0.0, 0.0, 66.0, -35.0);
+  preset.windSpeed = 4.0;
+  // Aim between the sphere and the sand under it, where its caustic lands.
+  const glm::dvec3 target(sphere.x, 0.5 * (sphere.y + sand), sphere.z);
+  const glm::dvec3 view = glm::normalize(target - preset.camera.position);
+  preset.camera.pitch = std::asin(view.y);
+  preset.camera.yaw = std::atan2(-view.x, -view.z);
+  return preset;
+}
+
 Preset exposed(Preset preset, double stops) {
   preset.exposureStops = stops;
   return preset;
@@ -93,8 +115,8 @@ Preset exposed(Preset preset, double stops) {
 // Exposures chosen by eye at 1280x720 for each view's light: the seabed at 10 m gets ~1/4 of
 // the sun above it (absorption, 1 - Fresnel, Lambert's 1/pi at an oblique sun), looking up
 // meets Snell's window, and from above the sky dominates.
-const std::array<Preset, 5>& presets() {
-  static const std::array<Preset, 5> all = {
+const std::array<Preset, 6>& presets() {
+  static const std::array<Preset, 6> all = {
       exposed(makePreset("seabed", "underwater, looking down at the seabed, pillar and arch",
                          {2.0, -4.5, 14.0}, 8.0, -22.0, 62.0, 200.0),
               1.5),
@@ -108,6 +130,7 @@ const std::array<Preset, 5>& presets() {
                          {0.0, 0.03, 16.0}, 5.0, -4.0, 40.0, 170.0),
               0.5),
       exposed(torchPreset(), 0.5),
+      exposed(shallowPreset(), 0.5),
   };
   return all;
 }

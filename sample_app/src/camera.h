@@ -41,6 +41,10 @@ struct Preset {
   // light: the physically lit water below the surface is ~1/4 as bright as sunlit sand
   // above it. --exposure replaces it.
   double exposureStops = 0.0;
+  // Wind over the sea, m/s at 10 m (postfx::water::OceanDesc::windSpeed): the sea state the
+  // preset is lit through. 10 is a fresh breeze; the shallow reef's 4 is a calm sea, whose
+  // traced light at 3 m is a crisp network.
+  double windSpeed = 10.0;
 };
 
 // Returns false when the name is unknown; `known` lists the valid names for the message.

@@ -98,6 +98,7 @@ void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet se
   const GLint iorLocation = glGetUniformLocation(program, "materialIor");
   const GLint roughnessLocation = glGetUniformLocation(program, "roughness");
   const GLint absorptionLocation = glGetUniformLocation(program, "glassAbsorption");
+  const GLint detailLocation = glGetUniformLocation(program, "surfaceDetail");
   for (const GpuInstance& instance : instances_) {
     if (!inSet(instance, set)) continue;
     const ocean_scene::Material& material = instance.material;
@@ -118,6 +119,7 @@ void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet se
     // KHR_materials_ior's 0 is an infinite IOR: a mirror.
     if (iorLocation >= 0) glUniform1f(iorLocation, material.ior > 0.0f ? material.ior : 1e4f);
     if (roughnessLocation >= 0) glUniform1f(roughnessLocation, material.roughness);
+    if (detailLocation >= 0) glUniform1f(detailLocation, material.proceduralRock ? 1.0f : 0.0f);
     if (absorptionLocation >= 0) {
       // Beer-Lambert: attenuationColor remains after attenuationDistance metres.
       glm::vec3 sigma(0.0f);

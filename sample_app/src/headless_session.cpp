@@ -26,6 +26,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
   settings.height = options.height;
   settings.waterResolution = options.waterResolution;
   settings.exposure = float(std::exp2(session.preset.exposureStops));
+  settings.windSpeed = session.preset.windSpeed;
   session.renderer = Renderer::create(settings, scene, error);
   if (!session.renderer) return false;
   session.renderer->setLights(session.preset.lights);

@@ -101,8 +101,8 @@ std::string causticsModelList() {
 }
 
 const std::array kValueOptions{
-    ValueOption{"--preset", "NAME", "seabed, sunward, above, waterline or torch (default seabed)",
-                false,
+    ValueOption{"--preset", "NAME",
+                "shallow, seabed, sunward, above, waterline or torch (default shallow)", false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.preset = text;  // checked against the presets when the scene is built
                   return true;

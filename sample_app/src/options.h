@@ -18,7 +18,7 @@ enum class Command { Help, Render, View, Bench, Report, Reference, Compare };
 
 struct Options {
   Command command = Command::Help;
-  std::string preset = "seabed";
+  std::string preset = "shallow";  // the hero view (camera.cpp); README leads with it
   int width = 1280, height = 720;
   double timeSeconds = 0.0;
   // Extra glTF files placed in the scene: each --model (FILE[@x,y,z][:fit=M|none]), then each

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace ocean {
 
@@ -20,6 +21,32 @@ constexpr float kIsotropicPhase = 0.0795774715f;
 // The ocean's cascades the plugin is given: the context is created for exactly these.
 int pluginCascades(const postfx::water::Ocean& ocean) {
   return std::min(ocean.cascadeCount(), postfx::kMaxCascades);
+}
+
+// True when some corner of the caster's world box lands inside a light map's square: a caster
+// beyond every map lights no receiver this frame. Left out, it neither costs the plugin a
+// caster nor widens the sun's caster map, whose fit spans all the casters it is given (the
+// shallow reef's pair, 60 m from the deep presets, would blur their caustics 5x).
+bool insideLightMap(const CasterInstance& c, const glm::dmat4& worldToClip) {
+  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-lo);
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 p((i & 1) ? c.boundsMax.x : c.boundsMin.x,
+                       (i & 2) ? c.boundsMax.y : c.boundsMin.y,
+                       (i & 4) ? c.boundsMax.z : c.boundsMin.z);
+    const glm::dvec4 clip = worldToClip * (c.transform * glm::dvec4(p, 1.0));
+    if (!(clip.w > 0.0)) return true;  // behind a local light's eye: let the plugin decide
+    lo = glm::min(lo, glm::dvec2(clip) / clip.w);
+    hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+  }
+  return hi.x >= -1.0 && lo.x <= 1.0 && hi.y >= -1.0 && lo.y <= 1.0;
+}
+
+bool lightsAReceiver(const CasterInstance& c, const HostFrame& frame) {
+  if (insideLightMap(c, frame.shadowWorldToClip)) return true;
+  for (const HostLight& light : frame.lights) {
+    if (light.receiverMap != 0 && insideLightMap(c, light.worldToClip)) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -130,6 +157,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   for (const CasterInstance& c : frame.casters) {
     // buildScene's admitCasters already kept the casters within budget (with a warning).
     if (int(casters_.size()) == postfx::kMaxCasters) break;
+    if (!lightsAReceiver(c, frame)) continue;
     postfx::CasterMesh mesh;
     mesh.vertexBuffer = c.vertices;
     mesh.indexBuffer = c.indices;

@@ -49,6 +49,7 @@ bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   }
   postfx::water::OceanDesc oceanDesc;
   oceanDesc.resolution = settings_.waterResolution;
+  oceanDesc.windSpeed = settings_.windSpeed;
   if (postfx::water::Ocean::create(oceanDesc, ocean_, error) != postfx::water::Result::Ok)
     return false;
 
@@ -256,6 +257,8 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glClear(GL_DEPTH_BUFFER_BIT);
   glDepthFunc(GL_GREATER);
   glUseProgram(geometry_.id());
+  glUniform3fv(glGetUniformLocation(geometry_.id(), "cameraWorld"), 1,
+               glm::value_ptr(glm::vec3(eye)));
   scene_.draw(geometry_.id(), eye, GpuScene::DrawSet::Opaque);
   glPopDebugGroup();
 

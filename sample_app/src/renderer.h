@@ -33,6 +33,7 @@ struct RenderSettings {
   int lightMapSize = 1024;         // texels per side of each point/spot light's depth maps
   double shadowRadius = 40.0;      // metres around the camera the shadow map covers
   float exposure = 1.0f;
+  double windSpeed = 10.0;  // m/s at 10 m height: the sea state (OceanDesc::windSpeed)
 };
 
 struct FrameInput {

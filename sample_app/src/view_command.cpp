@@ -43,7 +43,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   // A text field of the overlay has the keyboard: the keys are its characters.
   if (state->overlay != nullptr && state->overlayVisible && state->overlay->capturesKeyboard())
     return;
-  static const char* const kPresets[] = {"seabed", "sunward", "above", "waterline"};
+  static const char* const kPresets[] = {"seabed", "sunward", "above", "waterline", "shallow"};
   if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
   if (key == GLFW_KEY_T) state->paused = !state->paused;
   if (key == GLFW_KEY_H) state->overlayVisible = !state->overlayVisible;
@@ -56,7 +56,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     state->settings.edited.godRays.enabled = !state->settings.edited.godRays.enabled;
     state->settings.untried = true;
   }
-  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) {
+  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_5) {
     state->presetName = kPresets[key - GLFW_KEY_1];
     state->presetRequested = true;
   }
@@ -191,6 +191,9 @@ int runView(const Options& options) {
     settings.height = options.height;
     settings.waterResolution = options.waterResolution;
     settings.exposure = float(std::exp2(state.preset.exposureStops));
+    // The start preset's sea: switching presets with the keys keeps it (the FFT ocean is made
+    // once per window).
+    settings.windSpeed = state.preset.windSpeed;
     auto renderer = Renderer::create(settings, scene, error);
     // The start preset's lights (with --light) stay when keys switch presets.
     if (renderer) renderer->setLights(state.preset.lights);

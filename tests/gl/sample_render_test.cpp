@@ -26,8 +26,8 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
   };
 
   // lights: the preset's point and spot lights (the torch's), or none.
-  Frame render(const char* presetName, double time, bool objectCaustics = true,
-               bool lights = true) {
+  Frame render(const char* presetName, double time, bool objectCaustics = true, bool lights = true,
+               const ocean_scene::Model& scene = sampletest::defaultScene()) {
     ocean::Preset preset;
     std::string known, error;
     EXPECT_TRUE(ocean::findPreset(presetName, preset, known));
@@ -36,7 +36,8 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     settings.height = 144;
     settings.waterResolution = 64;
     settings.shadowMapSize = 512;
-    auto renderer = ocean::Renderer::create(settings, sampletest::defaultScene(), error);
+    settings.windSpeed = preset.windSpeed;
+    auto renderer = ocean::Renderer::create(settings, scene, error);
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
     if (lights) renderer->setLights(preset.lights);
@@ -81,13 +82,14 @@ TEST_P(SampleRender, ObjectCausticsOnlyAddLight) {
       "difference %.3g\n",
       GetParam(), added, brighter, lowest);
   EXPECT_GE(lowest, -1e-5);
-  if (std::string(GetParam()) == "seabed") {
+  if (std::string(GetParam()) == "seabed" || std::string(GetParam()) == "shallow") {
     EXPECT_GT(brighter, 0u);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, SampleRender,
-                         ::testing::Values("seabed", "sunward", "above", "waterline", "torch"));
+                         ::testing::Values("seabed", "sunward", "above", "waterline", "torch",
+                                           "shallow"));
 
 class SampleTorch : public SampleRender {};
 
@@ -128,6 +130,23 @@ TEST_F(SampleTorch, CausticLiesInsideTheSphereShadow) {
   EXPECT_GT(focus, 4u);
   EXPECT_LT(directThere, 0.05 * directPeak);
   EXPECT_GE(lowest, -1e-5);
+}
+
+// The shallow reef's glass sphere and ring lie 60 m from the deep presets: outside their shadow
+// maps, so the sample hands them to the plugin only on the reef. The seabed preset renders bit
+// for bit the same without them (with them passed, the sun's caster map would span both sites).
+TEST_F(SampleRender, FarReefCastersChangeNothingTheSeabedSees) {
+  ocean_scene::Model withoutReef = sampletest::defaultScene();
+  std::vector<ocean_scene::Instance> kept;
+  for (const ocean_scene::Instance& instance : withoutReef.instances) {
+    if (instance.name.rfind("shallow_", 0) != 0) kept.push_back(instance);
+  }
+  ASSERT_EQ(kept.size() + 2, withoutReef.instances.size()) << "the reef's sphere and ring";
+  withoutReef.instances = kept;
+  const Frame all = render("seabed", 12.5);
+  const Frame deep = render("seabed", 12.5, true, true, withoutReef);
+  ASSERT_FALSE(all.radiance.empty());
+  EXPECT_TRUE(all.radiance == deep.radiance);
 }
 
 }  // namespace

@@ -446,7 +446,7 @@ TEST_F(SampleCli, BenchJsonParses) {
   ASSERT_FALSE(parsed.is_discarded()) << "not JSON";
   EXPECT_EQ(parsed.value("width", 0), 32);
   EXPECT_EQ(parsed.value("height", 0), 18);
-  EXPECT_EQ(parsed.value("preset", ""), "seabed");
+  EXPECT_EQ(parsed.value("preset", ""), "shallow");  // the default
   EXPECT_TRUE(parsed["device"].is_string());
   ASSERT_TRUE(parsed["passes"].is_array());
   bool caustics = false;
@@ -683,7 +683,8 @@ TEST_F(SampleCli, ReferenceTracesTheGlassOfAModel) {
     const fs::path out = dir_ / ("ref" + std::to_string(k) + ".exr");
     // Near the seabed camera, 1 m across, 0.8 m over the sand: its shadow is in view.
     const RunResult traced = runSample(
-        "reference --width 96 --height 54 --water-resolution 16 --max-batches 4 --model " +
+        "reference --preset seabed --width 96 --height 54 --water-resolution 16 "
+        "--max-batches 4 --model " +
             model.string() + "@3.5,0.8,9.5:fit=1 --out " + out.string(),
         dir_);
     ASSERT_EQ(traced.exitCode, 0) << traced.stderrText;

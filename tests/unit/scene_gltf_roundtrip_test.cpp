@@ -223,14 +223,18 @@ TEST(SceneGltf, DefaultSceneIncludesTheModelsOnTheSand) {
     const Instance& instance = scene.instances[i];
     const Mesh& mesh = scene.meshes[instance.mesh];
     if (scene.materials[mesh.material].isRefractive()) ++refractive;
+    // Near the origin, or on the shallow reef's sandbank; under the water's wave crests.
+    const bool reef = instance.name.rfind("shallow_", 0) == 0;
+    const glm::vec2 site = reef ? glm::vec2(kSandbankXZ) : glm::vec2(0.0f);
     for (const glm::vec3& p : mesh.positions) {
       const glm::vec4 w = instance.transform * glm::vec4(p, 1.0f);
-      ASSERT_LT(w.y, -1.0f) << instance.name;
-      ASSERT_LT(std::abs(w.x), 30.0f) << instance.name;
-      ASSERT_LT(std::abs(w.z), 30.0f) << instance.name;
+      ASSERT_LT(w.y, reef ? -0.8f : -1.0f) << instance.name;
+      ASSERT_LT(std::abs(w.x - site.x), reef ? 5.0f : 30.0f) << instance.name;
+      ASSERT_LT(std::abs(w.z - site.y), reef ? 5.0f : 30.0f) << instance.name;
+      if (reef) ASSERT_GT(w.y, float(seabedHeight(w.x, w.z)) - 0.05f) << instance.name;
     }
   }
-  EXPECT_EQ(refractive, 2);  // sphere and bottle
+  EXPECT_EQ(refractive, 3);  // sphere, bottle and the reef's sphere
 }
 
 TEST(SceneGltf, MissingAssetDirectoryFailsCleanly) {

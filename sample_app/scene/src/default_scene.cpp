@@ -27,14 +27,16 @@ std::vector<Material> defaultMaterials() {
   sand.roughness = 0.9f;
   Material rock;
   rock.name = "rock";
-  rock.baseColor = {0.16f, 0.15f, 0.13f};
+  rock.baseColor = {0.30f, 0.27f, 0.22f};  // wet limestone; the renderer adds its noise
   rock.metallic = 0.0f;
   rock.roughness = 0.85f;
+  rock.proceduralRock = true;
   Material stone;
   stone.name = "stone";
   stone.baseColor = {0.36f, 0.35f, 0.32f};
   stone.metallic = 0.0f;
   stone.roughness = 0.75f;
+  stone.proceduralRock = true;
   return {sand, rock, stone};
 }
 
@@ -58,12 +60,14 @@ constexpr std::array<RockSpot, 8> kNearRocks = {
     RockSpot{-13.0, -3.0, 2.0}, RockSpot{11.0, -11.0, 1.4}, RockSpot{-6.0, 13.0, 1.1},
     RockSpot{2.0, -13.0, 2.4},  RockSpot{-17.0, 11.0, 1.3}};
 
+// heightScale: 1 for the low boulders of the deep scene, more for the reef's taller heads.
 void addRock(Model& scene, const DefaultSceneParams& params, std::uint32_t rockSeed, double x,
-             double z, double radius, const std::string& name) {
+             double z, double radius, const std::string& name, double heightScale = 1.0) {
   HashRng rng(rockSeed);
   RockParams rock;
   rock.radius = radius;
-  rock.stretch = {rng.uniform(0.9, 1.25), rng.uniform(0.55, 0.8), rng.uniform(0.85, 1.2)};
+  rock.stretch = {rng.uniform(0.9, 1.25), heightScale * rng.uniform(0.55, 0.8),
+                  rng.uniform(0.85, 1.2)};
   rock.roughness = rng.uniform(0.3, 0.45);
   rock.subdivisions = params.rockSubdivisions;
   rock.seed = rockSeed;
@@ -80,6 +84,14 @@ void addRocks(Model& scene, const DefaultSceneParams& params) {
     const RockSpot& spot = kNearRocks[i];
     const std::uint32_t rockSeed = hashCombine(params.seed, static_cast<std::uint32_t>(i));
     addRock(scene, params, rockSeed, spot.x, spot.z, spot.radius, "rock_" + std::to_string(i));
+  }
+  int reef = 0;
+  for (const features::ReefRock& spot : features::kReefRocks) {
+    const std::uint32_t rockSeed =
+        hashCombine(params.seed, 500U + static_cast<std::uint32_t>(reef));
+    addRock(scene, params, rockSeed, spot.x, spot.z, spot.radius,
+            "reef_rock_" + std::to_string(reef), 1.6);
+    ++reef;
   }
   HashRng layout(hashCombine(params.seed, 0xfa7U));
   for (int i = 0; i < params.farRockCount; ++i) {

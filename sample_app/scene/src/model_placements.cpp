@@ -41,6 +41,12 @@ std::vector<ModelPlacement> defaultModelPlacements() {
                             glm::rotate(glm::mat4(1.0f), 30.0f * kDegrees, {0.0f, 1.0f, 0.0f}) *
                             glm::rotate(glm::mat4(1.0f), 82.0f * kDegrees, {0.0f, 0.0f, 1.0f}) *
                             glm::translate(glm::mat4(1.0f), {0.0f, -0.36f, 0.0f})});
+  // The shallow reef's pair (scene_features.h): the same assets, a high sun's focus.
+  placements.push_back({"shallow_glass_sphere", "glass_sphere.glb",
+                        onSand(kShallowSphereXZ, kShallowSphereHeightAboveSand)});
+  placements.push_back({"shallow_metal_ring", "metal_ring.glb",
+                        onSand(kShallowRingXZ, 0.04) *
+                            glm::rotate(glm::mat4(1.0f), -10.0f * kDegrees, {0.0f, 1.0f, 0.0f})});
   return placements;
 }
 

@@ -15,7 +15,8 @@ struct DuneTrain {
 };
 
 // Amplitudes sum to 1.95 m; with the slope term (<= 0.75 m at the mesh edge, clamped beyond)
-// and ripples the surface stays inside [kSeabedMinHeight, kSeabedMaxHeight].
+// and ripples the surface stays inside [kSeabedMinHeight, kSeabedMaxHeight] away from the
+// sandbank (whose top the dense-sample test bounds).
 constexpr std::array<DuneTrain, 3> kDunes = {DuneTrain{1.0, 47.0, 20.0, 0.7},
                                              DuneTrain{0.6, 29.0, 75.0, 2.1},
                                              DuneTrain{0.35, 17.0, -35.0, 4.4}};
@@ -29,6 +30,10 @@ constexpr double kRippleWarpAmplitude = 0.6;  // metres of crest-line meander
 constexpr glm::dvec2 kRippleWarpFrequency{0.23, 0.11};
 constexpr double kRippleWarpPhase = 1.3;
 
+// The sandbank's dunes are flattened by this share at its top: a bank is the sea's own
+// levelling of the sand, and it keeps the shallow preset's depths within 2.5-4.5 m.
+constexpr double kSandbankDuneDamping = 0.6;
+
 glm::dvec2 direction(double degrees) {
   const double a = degrees * kTwoPi / 360.0;
   return {std::cos(a), std::sin(a)};
@@ -39,6 +44,18 @@ double rippleFade(double r, double& dFade) {
   const double span = kRippleFadeRadius - kRippleFieldRadius;
   const double t = std::clamp((r - kRippleFieldRadius) / span, 0.0, 1.0);
   dFade = (t > 0.0 && t < 1.0) ? -6.0 * t * (1.0 - t) / span : 0.0;
+  return 1.0 - t * t * (3.0 - 2.0 * t);
+}
+
+// The sandbank's share at p: 1 on its top, 0 beyond its foot (smoothstep in between), and
+// the gradient of that share.
+double sandbankShare(const glm::dvec2& p, glm::dvec2& gradient) {
+  const glm::dvec2 d = p - kSandbankXZ;
+  const double r = glm::length(d);
+  const double span = kSandbankFootRadius - kSandbankTopRadius;
+  const double t = std::clamp((r - kSandbankTopRadius) / span, 0.0, 1.0);
+  gradient =
+      (t > 0.0 && t < 1.0 && r > 0.0) ? (-6.0 * t * (1.0 - t) / span) * (d / r) : glm::dvec2(0.0);
   return 1.0 - t * t * (3.0 - 2.0 * t);
 }
 
@@ -56,12 +73,19 @@ double evaluate(double x, double z, glm::dvec2& gradient) {
   h += slopeTerm(z, dSlope);
   gradient = glm::dvec2(0.0, dSlope);
 
+  double dunes = 0.0;
+  glm::dvec2 dDunes(0.0);
   for (const DuneTrain& d : kDunes) {
     const glm::dvec2 k = direction(d.directionDeg) * (kTwoPi / d.wavelength);
     const double phase = glm::dot(k, p) + d.phase;
-    h += d.amplitude * std::sin(phase);
-    gradient += d.amplitude * std::cos(phase) * k;
+    dunes += d.amplitude * std::sin(phase);
+    dDunes += d.amplitude * std::cos(phase) * k;
   }
+  glm::dvec2 dBank;
+  const double bank = sandbankShare(p, dBank);
+  const double duneScale = 1.0 - kSandbankDuneDamping * bank;
+  h += duneScale * dunes + kSandbankLift * bank;
+  gradient += duneScale * dDunes + (kSandbankLift - kSandbankDuneDamping * dunes) * dBank;
 
   const double r = glm::length(p);
   double dFade = 0.0;

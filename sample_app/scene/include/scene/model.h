@@ -44,6 +44,10 @@ struct Material {
   float attenuationDistance = std::numeric_limits<float>::infinity();
   // KHR_materials_dispersion: 20 / Abbe number, >= 0 (0: none).
   float dispersion = 0.0f;
+  // The procedural scene's rock and stone: the renderer paints them with world-space noise
+  // (colour, weed, bumps) instead of a texture. Not part of glTF: a loaded material has false,
+  // and the glTF writer leaves it out.
+  bool proceduralRock = false;
 
   bool isRefractive() const { return transmission > 0.0f; }
 };

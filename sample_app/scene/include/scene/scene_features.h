@@ -45,4 +45,19 @@ inline constexpr glm::dvec2 kMetalRingXZ{2.7, 8.6};         // lying flat on the
 inline constexpr glm::dvec2 kGlassBottleXZ{-0.8, 8.4};      // standing on the sand
 inline constexpr glm::dvec2 kAmphoraXZ{-5.0, 2.5};          // on its side, half buried
 
+// The shallow preset's reef on the sandbank (seabed.h's kSandbankXZ, sand 2.5-4.5 m deep): a
+// second glass sphere, held kShallowSphereHeightAboveSand above the sand so that its 2.2 m
+// focus falls just under the sand (the tightest spot a high sun gives), a brass ring beside it
+// for the reflected cardioid, and reef rocks around them. Far from the origin so the deep
+// presets' casters and shadow maps never include them.
+inline constexpr glm::dvec2 kShallowSphereXZ{-45.6, 45.4};
+inline constexpr double kShallowSphereHeightAboveSand = 1.9;
+inline constexpr glm::dvec2 kShallowRingXZ{-44.0, 45.9};
+struct ReefRock {
+  double x, z, radius;
+};
+inline constexpr ReefRock kReefRocks[] = {{-48.0, 43.2, 1.1},  {-42.4, 43.8, 0.8},
+                                          {-47.6, 47.4, 0.55}, {-43.0, 41.5, 1.5},
+                                          {-49.5, 40.5, 1.8},  {-41.0, 46.8, 0.5}};
+
 }  // namespace ocean_scene::features

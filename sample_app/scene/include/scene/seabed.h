@@ -4,7 +4,8 @@
 //
 // Shape: base depth kSeabedBaseDepth, a gentle slope, three crossing dune trains (metres high,
 // 17-47 m wavelength) and a field of sand ripples (3 cm high, 0.9 m wavelength) within
-// kRippleFieldRadius of the origin, fading out by kRippleFadeRadius. Ripples finer than this
+// kRippleFieldRadius of the origin, fading out by kRippleFadeRadius; and one sandbank far from
+// the origin (the shallow preset's), whose top is 2.5-4.5 m deep. Ripples finer than this
 // are left to the renderer's normal perturbation; the mesh could not carry them.
 
 #include <glm/glm.hpp>
@@ -14,14 +15,24 @@
 namespace ocean_scene {
 
 inline constexpr double kSeabedBaseDepth = -10.0;  // metres, water level is y = 0
-// Everywhere: kSeabedMinHeight <= seabedHeight(x, z) <= kSeabedMaxHeight < 0 (proved by the
-// sum of the term amplitudes, checked by a test on a dense sample).
-inline constexpr double kSeabedMaxHeight = -6.5;
+// Everywhere: kSeabedMinHeight <= seabedHeight(x, z) <= kSeabedMaxHeight < 0 (the sum of the
+// term amplitudes away from the sandbank, its top's measured maximum plus margin on it;
+// checked by a test on a dense sample).
+inline constexpr double kSeabedMaxHeight = -2.5;
 inline constexpr double kSeabedMinHeight = -13.5;
 inline constexpr double kRippleAmplitude = 0.03;    // metres
 inline constexpr double kRippleWavelength = 0.9;    // metres
 inline constexpr double kRippleFieldRadius = 20.0;  // full-strength ripples inside this radius
 inline constexpr double kRippleFadeRadius = 35.0;   // no ripples beyond this radius
+
+// The sandbank: a flat-topped mound raised kSandbankLift metres over the seabed around it,
+// full height within kSandbankTopRadius of its centre, none beyond kSandbankFootRadius. It lies
+// 64 m from the origin, more than the shadow map's 40 m from every deep preset's camera, so
+// it changes nothing they see or light.
+inline constexpr glm::dvec2 kSandbankXZ{-45.0, 45.0};
+inline constexpr double kSandbankLift = 7.0;         // metres
+inline constexpr double kSandbankTopRadius = 10.0;   // metres
+inline constexpr double kSandbankFootRadius = 28.0;  // metres
 
 // Height y of the seabed at world (x, z), metres.
 double seabedHeight(double x, double z);
