@@ -23,9 +23,9 @@ int pluginCascades(const postfx::water::Ocean& ocean) {
   return std::min(ocean.cascadeCount(), postfx::kMaxCascades);
 }
 
-// True when some corner of the caster's world box lands inside a light map's square: a caster
-// beyond every map lights no receiver this frame. Left out, it neither costs the plugin a
-// caster nor widens the sun's caster map, whose fit spans all the casters it is given (the
+// True when the caster's world box, projected by a light map's matrix, overlaps the map's
+// square: a caster beyond every map lights no receiver this frame. Left out, it neither costs the
+// plugin a caster nor widens the sun's caster map, whose fit spans all the casters it is given (the
 // shallow reef's pair, 60 m from the deep presets, would blur their caustics 5x).
 bool insideLightMap(const CasterInstance& c, const glm::dmat4& worldToClip) {
   glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-lo);
@@ -35,8 +35,9 @@ bool insideLightMap(const CasterInstance& c, const glm::dmat4& worldToClip) {
                        (i & 4) ? c.boundsMax.z : c.boundsMin.z);
     const glm::dvec4 clip = worldToClip * (c.transform * glm::dvec4(p, 1.0));
     if (!(clip.w > 0.0)) return true;  // behind a local light's eye: let the plugin decide
-    lo = glm::min(lo, glm::dvec2(clip) / clip.w);
-    hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+    const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
   }
   return hi.x >= -1.0 && lo.x <= 1.0 && hi.y >= -1.0 && lo.y <= 1.0;
 }

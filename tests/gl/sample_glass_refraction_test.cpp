@@ -22,6 +22,7 @@
 #include "options.h"
 #include "plugin_setup.h"
 #include "renderer.h"
+#include "sample_flat_water.h"
 
 namespace {
 
@@ -83,13 +84,9 @@ class SampleGlassRefraction : public testsupport::GlTest {
     auto renderer = ocean::Renderer::create(settings, scene, error);
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
-    // Flat light on the wall (the ray-deviation model at tau 0), no light of the ball's own.
-    ocean::Options options;
-    options.rayDeviationCaustics = true;
-    options.tau = 0.0;
-    options.godRays = false;
-    options.objectCaustics = false;
-    auto plugin = ocean::PluginSetup::create(*renderer, options, false, error);
+    // Flat light on the wall, no light of the ball's own.
+    auto plugin =
+        ocean::PluginSetup::create(*renderer, sampletest::flatWaterOptions(), false, error);
     EXPECT_TRUE(plugin) << error;
     if (!plugin) return {};
     ocean::Sun sun;
@@ -104,7 +101,8 @@ class SampleGlassRefraction : public testsupport::GlTest {
 };
 
 double luminance(const std::vector<float>& image, size_t i) {
-  return 0.2126 * image[i * 4] + 0.7152 * image[i * 4 + 1] + 0.0722 * image[i * 4 + 2];
+  return 0.2126 * double(image[i * 4]) + 0.7152 * double(image[i * 4 + 1]) +
+         0.0722 * double(image[i * 4 + 2]);
 }
 
 // Pixels well inside the ball's silhouette (radial position 0.2..0.7 of its angular radius, away

@@ -22,6 +22,7 @@
 #include "plugin_setup.h"
 #include "renderer.h"
 #include "sample_default_scene.h"
+#include "sample_flat_water.h"
 #include "shared/sample_optics.h"
 #include "sun_light.h"
 
@@ -77,12 +78,8 @@ class SamplePhysicalLight : public testsupport::GlTest,
     auto renderer = ocean::Renderer::create(settings, diffuseScene(), error);
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
-    ocean::Options options;
+    ocean::Options options = sampletest::flatWaterOptions();
     options.caustics = caustics;
-    options.rayDeviationCaustics = true;
-    options.tau = 0.0;
-    options.godRays = false;
-    options.objectCaustics = false;
     auto plugin = ocean::PluginSetup::create(*renderer, options, false, error);
     EXPECT_TRUE(plugin) << error;
     if (!plugin) return {};

@@ -85,13 +85,11 @@ void addRocks(Model& scene, const DefaultSceneParams& params) {
     const std::uint32_t rockSeed = hashCombine(params.seed, static_cast<std::uint32_t>(i));
     addRock(scene, params, rockSeed, spot.x, spot.z, spot.radius, "rock_" + std::to_string(i));
   }
-  int reef = 0;
-  for (const features::ReefRock& spot : features::kReefRocks) {
-    const std::uint32_t rockSeed =
-        hashCombine(params.seed, 500U + static_cast<std::uint32_t>(reef));
-    addRock(scene, params, rockSeed, spot.x, spot.z, spot.radius,
-            "reef_rock_" + std::to_string(reef), 1.6);
-    ++reef;
+  for (std::size_t i = 0; i < std::size(features::kReefRocks); ++i) {
+    const features::ReefRock& spot = features::kReefRocks[i];
+    const std::uint32_t rockSeed = hashCombine(params.seed, 500U + static_cast<std::uint32_t>(i));
+    addRock(scene, params, rockSeed, spot.x, spot.z, spot.radius, "reef_rock_" + std::to_string(i),
+            1.6);
   }
   HashRng layout(hashCombine(params.seed, 0xfa7U));
   for (int i = 0; i < params.farRockCount; ++i) {
