@@ -1,9 +1,10 @@
 #pragma once
 // The god-ray pass: a full-screen march blended additively (ONE, ONE) into the host target, or
-// at half or quarter resolution into a plugin-owned RGBA16F texture (alpha = pixel distance)
-// followed by a depth-aware upsample that adds into the target. Runs under the state
-// CausticsPass::bindState set (units, samplers, caustics block, blend); adds its own block,
-// framebuffers and the reduced march's unit (POSTFX_UNIT_GODRAYS_REDUCED).
+// at half or quarter resolution into a plugin-owned GL_RG32UI texture (the light and the
+// pixel's distance as four packed halves) followed by a depth-aware upsample that adds into
+// the target. Runs under the state CausticsPass::bindState set (units, samplers, caustics
+// block, blend); adds its own block, framebuffers and the reduced march's unit
+// (POSTFX_UNIT_GODRAYS_REDUCED).
 #include <epoxy/gl.h>
 
 #include <string>

@@ -141,9 +141,12 @@ struct ObjectCausticsSettings {
   float footprintScale = 2.0f;
   // Multiplier on the sun irradiance for the added light, [0, 1e4].
   float intensity = 1.0f;
-  // Seed 003's temporal filter: each frame's map is blended with the previous one (weight
+  // Temporal filter: each frame's sun caustic map is blended with the previous one (weight
   // temporalWeight on the history), the history clamped to the new frame's 3x3 neighbourhood
-  // so that a moving caustic leaves no trail; reset whenever the sun's view moves.
+  // so that a moving caustic leaves no trail. The history lives in the map's texel grid, which
+  // is fitted around the casters every frame, so it is reset whenever that grid moves: when the
+  // sun turns or any caster moves (its bounds change). A moving caster is therefore never
+  // filtered; still casters under moving water are. Local lights' maps are not filtered.
   bool temporalFilter = false;
   float temporalWeight = 0.5f;  // [0, 0.95]
 };

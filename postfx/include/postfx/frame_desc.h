@@ -139,7 +139,7 @@ struct ObjectCausticsFrame {
   // Receiver depth from the sun WITHOUT the casters (any depth format, GL_TEXTURE_2D, any
   // orthographic or perspective projection that sees where the light lands): the refracted rays
   // are intersected with it in image space and the composite adds light only where a pixel lies
-  // on it (|depth difference| <= bias, window units). Cleared texels (far plane) are "no
+  // on it (within `bias` metres of it along the light). Cleared texels (far plane) are "no
   // receiver". Required while casterCount > 0 and sunCaustics.
   SunShadowMap receivers;
   ObjectCausticsSettings settings;

@@ -44,7 +44,7 @@ enum class Feature : std::uint32_t {
   ShadowMask = 1u << 4,      // mask caustics by the host's sun shadow map (FrameDesc::shadow)
   // 1u << 5 and 1u << 6: test and benchmark hooks, postfx/testing.h.
   PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio (seed 004); its pass
-                               // is timed as "caustics_irradiance"
+                               // is timed as Pass::CausticsIrradiance
   // Seed 002's full tri-planar lookup: steep surfaces (more than ~30 degrees from horizontal
   // at the default CausticsSettings::triplanarSharpness) also sample the water along the world
   // x and z axes, blended by the G-buffer normal. Without it every surface samples the water
@@ -113,12 +113,12 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // state is touched: on error nothing is drawn and GL state is exactly as it was. A pass with
 // nothing to do (caustics disabled, sun at/below the horizon, no part of the view frustum below
 // the water level) is skipped and reports 0 ms. With Feature::GodRays the god-ray pass (timed as
-// "god_rays"; at half resolution the march and the upsample together) runs after the caustics,
-// skipped on the same conditions with godRays.enabled. With Feature::ObjectCaustics the object
-// caustics (postfx/casters.h; the sun's timed as "object_caustics") run last, skipped (0 ms)
-// with no caster, objectCaustics.settings.enabled off, objectCaustics.sunCaustics off, the sun
-// at/below the horizon, or no caster inside the receiver map's view; then each local light
-// (postfx/lights.h) that reaches a caster, timed in stats().objectLight(i).
+// Pass::GodRays; below full resolution the march and the upsample together) runs after the
+// caustics, skipped on the same conditions with godRays.enabled. With Feature::ObjectCaustics
+// the object caustics (postfx/casters.h; the sun's timed as Pass::ObjectCaustics) run last,
+// skipped (0 ms) with no caster, objectCaustics.settings.enabled off, objectCaustics.sunCaustics
+// off, the sun at/below the horizon, or no caster inside the receiver map's view; then each local
+// light (postfx/lights.h) that reaches a caster, timed in stats().objectLight(i).
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
 // Deletes the context's GL objects (current GL context required; without one they are leaked

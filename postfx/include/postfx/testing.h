@@ -19,7 +19,10 @@ inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
 // target holding omega * (n.l) * shadow * fade (mean of R,G,B) — the caustic factor with N.L,
 // the shadow map and the surface fade, before albedo, irradiance, intensity and absorption
 // (flat water reads n.l, not 1); 0 where no caustics (sky, above water, back-facing, shadowed,
-// pass skipped). In [0, 1] in the RayDeviation model, [0, maxIrradiance] in WavefrontAreaRatio.
+// pass skipped). In [0, 1] in the RayDeviation model, [0, maxIrradiance] in WavefrontAreaRatio
+// (clamped to CausticsSettings::maxIrradiance), and in TileIrradiance (the default) the product
+// of the cascades' irradiances relative to flat water, each clamped to maxIrradiance: at most
+// maxIrradiance to the power of the cascades with irradiance.
 // 0 without the feature or before the first dispatch.
 GlName rawCausticTexture(const Context& context) noexcept;
 
