@@ -98,7 +98,12 @@ Result TileIrradiancePass::init(const std::string& defines, std::string& error) 
   return buildPrograms(defines,
                        {{scatter_,
                          "postfx.caustics_tile.scatter",
-                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}}},
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}},
+                         "#define POSTFX_TILE_FOOTPRINT 0\n"},
+                        {scatterFootprint_,
+                         "postfx.caustics_tile.scatter_footprint",
+                         {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_scatter.comp"}},
+                         "#define POSTFX_TILE_FOOTPRINT 1\n"},
                         {resolve_,
                          "postfx.caustics_tile.resolve",
                          {{GL_COMPUTE_SHADER, "postfx/tile_irradiance_resolve.comp"}}},
@@ -181,7 +186,11 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   for (int k = 0; k < l.layers; ++k)
     depths[k] = shared::tileLayerDepth(k, l.layers, static_cast<float>(l.maxDepth));
 
-  const GLuint scatter = scatter_.id();
+  // Points at least as dense as the water's texels resolve every slope it has: nothing
+  // unresolved softens the pattern, and where the light diverges the points' own footprints are
+  // wider than a texel (the bilinear split alone would leave a grid of dots in the dark).
+  const int waterSide = std::max(textures.water.width, textures.water.height);
+  const GLuint scatter = points >= waterSide ? scatterFootprint_.id() : scatter_.id();
   glProgramUniform4f(scatter, 2, static_cast<float>(sun.x), static_cast<float>(sun.y),
                      static_cast<float>(sun.z), water.ior);
   glProgramUniform4f(scatter, 3, static_cast<float>(flatDrift.x), static_cast<float>(flatDrift.y),
@@ -189,7 +198,6 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
                      static_cast<float>(perPoint * double(shared::TILE_FIXED_POINT)));
   glProgramUniform1i(scatter, 4, l.layers);
   glProgramUniform1fv(scatter, 5, shared::TILE_MAX_LAYERS, depths);
-  const int waterSide = std::max(textures.water.width, textures.water.height);
   glProgramUniform1f(scatter, 13,
                      textures.waterMipmapped && waterSide > points
                          ? static_cast<float>(std::log2(double(waterSide) / points))

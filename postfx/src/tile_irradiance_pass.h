@@ -82,7 +82,8 @@ class TileIrradiancePass {
   // The unresolved-slope spread: statistics, then per cascade the box passes of its blur.
   void drawSpread(const FrameDesc& frame, const float* depths);
 
-  glkit::Program scatter_, resolve_, downsample_;
+  // scatter_ splits each point's flux bilinearly, scatterFootprint_ over its refracted footprint.
+  glkit::Program scatter_, scatterFootprint_, resolve_, downsample_;
   glkit::Program spreadStatistics_, spreadBox_, spreadPack_;
   glkit::Texture texture_;
   glkit::Buffer accumulators_, spreadStatisticsBuffer_, blur_;

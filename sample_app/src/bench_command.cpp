@@ -26,6 +26,7 @@
 #include "headless_session.h"
 #include "plugin_setup.h"
 #include "renderer.h"
+#include "view_flags.h"
 #include "water_bench.h"
 
 namespace ocean {
@@ -57,12 +58,15 @@ struct Row {
 
 }  // namespace
 
-int runBench(const Options& options) {
+int runBench(const Options& commandOptions) {
   std::string error;
   HeadlessSession session;
-  if (!openHeadlessSession(options, /*debug=*/false, /*benchmarkFloor=*/true, session, error)) {
+  if (!openHeadlessSession(commandOptions, /*debug=*/false, /*benchmarkFloor=*/true, session,
+                           error)) {
     return commandFailed(error);
   }
+  // The variants start from the settings the preset is shown with.
+  const Options options = withPresetCaustics(commandOptions, session.preset);
   Renderer& renderer = *session.renderer;
   const Preset& preset = session.preset;
   const glcontext::HeadlessContext* context = session.context.get();

@@ -99,6 +99,10 @@ Preset shallowPreset() {
                              glm::dvec3(kShallowSphereXZ.x + 0.9, -0.8, kShallowSphereXZ.y + 4.6),
                              0.0, 0.0, 66.0, -35.0);
   preset.windSpeed = 4.0;
+  // Sand 2.5-4.5 m deep, rocks to 5 m; see Preset::maxReceiverDepth.
+  preset.maxReceiverDepth = 5.0;
+  preset.tileResolution = 512;
+  preset.causticsLookup = 1;
   // Aim between the sphere and the sand under it, where its caustic lands.
   const glm::dvec3 target(sphere.x, 0.5 * (sphere.y + sand), sphere.z);
   const glm::dvec3 view = glm::normalize(target - preset.camera.position);

@@ -45,6 +45,15 @@ struct Preset {
   // preset is lit through. 10 is a fresh breeze; the shallow reef's 4 is a calm sea, whose
   // traced light at 3 m is a crisp network.
   double windSpeed = 10.0;
+  // The plugin's caustic settings the view is shown with, each 0 for the plugin's default (the
+  // command line's --max-receiver-depth, --tile-resolution and --caustics-lookup win): the
+  // deepest receiver the view's irradiance layers must span (m below the level), and the tile
+  // grid and lookup resolution its pattern needs. The shallow reef's crisp pattern at 3 m needs
+  // layers over 5 m, 512 texels a tile and full-resolution lookups (docs/measurements.md,
+  // "Shallow preset"); the 10 m presets are right at the defaults.
+  double maxReceiverDepth = 0.0;
+  int tileResolution = 0;
+  int causticsLookup = 0;  // 1 full, 2 half
 };
 
 // Returns false when the name is unknown; `known` lists the valid names for the message.

@@ -31,6 +31,8 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--caustics-grid",
                                               "--caustics-lookup",
                                               "--tile-resolution",
+                                              "--max-receiver-depth",
+                                              "--tile-depth-layers",
                                               "--god-rays-resolution",
                                               "--triplanar-walls",
                                               "--camera-position",
@@ -41,9 +43,11 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--exposure"};
 
 constexpr std::string_view kSceneFooter = R"(
-presets: seabed (underwater, looking at the seabed), sunward (underwater, looking up toward
-the sun), above (above the water looking down), waterline (camera 3 cm above the water), torch
-(underwater at night, a diver's torch shining through the glass sphere onto the sand).
+presets: shallow (the default: a calm sea over a reef 3 m deep, shown with 512 tile texels,
+full-resolution lookups and irradiance layers to 5 m), seabed (underwater, looking at the
+seabed), sunward (underwater, looking up toward the sun), above (above the water looking
+down), waterline (camera 3 cm above the water), torch (underwater at night, a diver's torch
+shining through the glass sphere onto the sand).
 --camera-position and --camera-look-at replace the preset's camera (either alone keeps the
 other from the preset); the look-at point is centred in the image and must not be straight
 above or below the camera. --sun-azimuth/--sun-elevation replace the preset's sun.

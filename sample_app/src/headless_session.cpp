@@ -30,7 +30,8 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
   session.renderer = Renderer::create(settings, scene, error);
   if (!session.renderer) return false;
   session.renderer->setLights(session.preset.lights);
-  session.plugin = PluginSetup::create(*session.renderer, options, benchmarkFloor, error);
+  session.plugin = PluginSetup::create(
+      *session.renderer, withPresetCaustics(options, session.preset), benchmarkFloor, error);
   return session.plugin != nullptr;
 }
 

@@ -221,6 +221,24 @@ const std::array kValueOptions{
                   }
                   return true;
                 }},
+    ValueOption{"--max-receiver-depth", "M",
+                "deepest depth (m) the caustic irradiance is computed for, 0.5..1000 "
+                "(default: the preset's)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return doubleIn(text, 0.5, 1000.0, o.maxReceiverDepth, "--max-receiver-depth",
+                                  "a depth in metres in [0.5, 1000]", error);
+                }},
+    ValueOption{"--tile-depth-layers", "N",
+                "tile model's depth layers per cascade, 4 (default) or 8", false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (text == "4" || text == "8") {
+                    o.tileDepthLayers = text == "4" ? 4 : 8;
+                    return true;
+                  }
+                  error = "--tile-depth-layers must be 4 or 8" + got(text);
+                  return false;
+                }},
     ValueOption{"--god-rays-resolution", "RES", "full, half or quarter (default)", false,
                 [](std::string_view text, Options& o, std::string& error) {
                   const std::array<std::pair<std::string_view, int>, 3> names{

@@ -54,6 +54,12 @@ struct Options {
   // Tile-irradiance texels per cascade tile side (CausticsSettings::tileResolution); 0 keeps
   // the plugin's default.
   int tileResolution = 0;
+  // Deepest receiver layer of the caustic irradiance (CausticsSettings::maxReceiverDepth, m);
+  // 0 keeps the preset's (the plugin's default unless the preset says otherwise).
+  double maxReceiverDepth = 0.0;
+  // Tile-irradiance depth layers per cascade, 4 or 8 (CausticsSettings::tileDepthLayers); 0 keeps
+  // the plugin's default.
+  int tileDepthLayers = 0;
   // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
   int godRayResolution = 0;
   int waterResolution = 256;

@@ -93,6 +93,9 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   setup->godRays_.intensity = kIsotropicPhase;
   if (options.tau >= 0.0) setup->caustics_.tau = float(options.tau);
   if (options.tileResolution > 0) setup->caustics_.tileResolution = options.tileResolution;
+  if (options.maxReceiverDepth > 0.0)
+    setup->caustics_.maxReceiverDepth = float(options.maxReceiverDepth);
+  if (options.tileDepthLayers > 0) setup->caustics_.tileDepthLayers = options.tileDepthLayers;
   if (options.causticsLookup > 0)
     setup->caustics_.tileLookupResolution =
         static_cast<postfx::CausticsLookupResolution>(options.causticsLookup);

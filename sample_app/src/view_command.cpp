@@ -198,7 +198,8 @@ int runView(const Options& options) {
     // The start preset's lights (with --light) stay when keys switch presets.
     if (renderer) renderer->setLights(state.preset.lights);
     auto plugin = renderer
-                      ? PluginSetup::create(*renderer, options, /*benchmarkFloor=*/false, error)
+                      ? PluginSetup::create(*renderer, withPresetCaustics(options, state.preset),
+                                            /*benchmarkFloor=*/false, error)
                       : nullptr;
     glfwSetWindowUserPointer(window, &state);
     glfwSetKeyCallback(window, onKey);

@@ -16,6 +16,13 @@ bool lookAlong(const glm::dvec3& direction, double& yaw, double& pitch) {
   return true;
 }
 
+Options withPresetCaustics(Options options, const Preset& preset) {
+  if (options.maxReceiverDepth <= 0.0) options.maxReceiverDepth = preset.maxReceiverDepth;
+  if (options.tileResolution <= 0) options.tileResolution = preset.tileResolution;
+  if (options.causticsLookup <= 0) options.causticsLookup = preset.causticsLookup;
+  return options;
+}
+
 bool resolveView(const Options& options, Preset& preset, std::string& error) {
   std::string known;
   if (!findPreset(options.preset, preset, known)) {

@@ -12,6 +12,10 @@ namespace ocean {
 // (it is the camera's own position, or straight above or below it).
 bool resolveView(const Options& options, Preset& preset, std::string& error);
 
+// `options` with the preset's caustic settings (Preset::maxReceiverDepth, tileResolution,
+// causticsLookup) where the command line left the plugin's default.
+Options withPresetCaustics(Options options, const Preset& preset);
+
 // The yaw and pitch (radians, Camera's convention) that look along `direction`; false when it
 // is shorter than 1e-6 m or within 1 degree of vertical (Camera's basis needs a horizontal
 // component).

@@ -74,11 +74,7 @@ ocean::Camera camera() {
 class SampleGlassRefraction : public testsupport::GlTest {
  protected:
   std::vector<float> render(Ball ball) {
-    ocean::RenderSettings settings;
-    settings.width = kWidth;
-    settings.height = kHeight;
-    settings.waterResolution = 64;
-    settings.shadowMapSize = 1024;
+    const ocean::RenderSettings settings = sampletest::flatWaterRenderSettings(kWidth, kHeight);
     std::string error;
     const ocean_scene::Model scene = wallScene(ball);
     auto renderer = ocean::Renderer::create(settings, scene, error);

@@ -69,11 +69,7 @@ class SamplePhysicalLight : public testsupport::GlTest,
  protected:
   // caustics: the plugin's flat-water light on (true) or no plugin caustics at all.
   Frame render(const ocean::Preset& preset, bool caustics) {
-    ocean::RenderSettings settings;
-    settings.width = kWidth;
-    settings.height = kHeight;
-    settings.waterResolution = 64;
-    settings.shadowMapSize = 1024;
+    const ocean::RenderSettings settings = sampletest::flatWaterRenderSettings(kWidth, kHeight);
     std::string error;
     auto renderer = ocean::Renderer::create(settings, diffuseScene(), error);
     EXPECT_TRUE(renderer) << error;

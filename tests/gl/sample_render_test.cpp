@@ -15,6 +15,7 @@
 #include "renderer.h"
 #include "sample_default_scene.h"
 #include "scene_setup.h"
+#include "view_flags.h"
 
 namespace {
 
@@ -43,7 +44,9 @@ class SampleRender : public testsupport::GlTest, public ::testing::WithParamInte
     if (lights) renderer->setLights(preset.lights);
     ocean::Options options;
     options.objectCaustics = objectCaustics;
-    auto plugin = ocean::PluginSetup::create(*renderer, options, false, error);
+    // The settings the preset is shown with, as the commands apply them.
+    auto plugin = ocean::PluginSetup::create(*renderer, ocean::withPresetCaustics(options, preset),
+                                             false, error);
     EXPECT_TRUE(plugin) << error;
     EXPECT_TRUE(renderer->render({preset.camera, preset.sun, time}, error)) << error;
     expectNoGlErrors(presetName);
@@ -150,3 +153,44 @@ TEST_F(SampleRender, FarReefCastersChangeNothingTheSeabedSees) {
 }
 
 }  // namespace
+
+// A preset's caustic settings (Preset::maxReceiverDepth, tileResolution, causticsLookup) reach
+// the plugin where the command line left the default, and the command line's win; a preset
+// without any keeps the plugin's defaults.
+TEST_F(SampleRender, PresetCausticSettingsReachThePlugin) {
+  std::string known, error;
+  ocean::Preset shallow, seabed;
+  ASSERT_TRUE(ocean::findPreset("shallow", shallow, known));
+  ASSERT_TRUE(ocean::findPreset("seabed", seabed, known));
+  ocean::RenderSettings settings;
+  settings.width = 64;
+  settings.height = 36;
+  settings.waterResolution = 16;
+  settings.shadowMapSize = 256;
+  auto renderer = ocean::Renderer::create(settings, sampletest::defaultScene(), error);
+  ASSERT_TRUE(renderer) << error;
+  auto caustics = [&](const ocean::Options& options, const ocean::Preset& preset) {
+    auto plugin = ocean::PluginSetup::create(*renderer, ocean::withPresetCaustics(options, preset),
+                                             false, error);
+    EXPECT_TRUE(plugin) << error;
+    return plugin ? plugin->caustics() : postfx::CausticsSettings{};
+  };
+  const postfx::CausticsSettings defaults;
+  const postfx::CausticsSettings hero = caustics({}, shallow);
+  EXPECT_EQ(hero.maxReceiverDepth, 5.0f);
+  EXPECT_EQ(hero.tileResolution, 512);
+  EXPECT_EQ(hero.tileLookupResolution, postfx::CausticsLookupResolution::Full);
+  ocean::Options chosen;
+  chosen.maxReceiverDepth = 9.0;
+  chosen.tileResolution = 128;
+  chosen.causticsLookup = 2;
+  const postfx::CausticsSettings overridden = caustics(chosen, shallow);
+  EXPECT_EQ(overridden.maxReceiverDepth, 9.0f);
+  EXPECT_EQ(overridden.tileResolution, 128);
+  EXPECT_EQ(overridden.tileLookupResolution, postfx::CausticsLookupResolution::Half);
+  const postfx::CausticsSettings deep = caustics({}, seabed);
+  EXPECT_EQ(deep.maxReceiverDepth, defaults.maxReceiverDepth);
+  EXPECT_EQ(deep.tileResolution, defaults.tileResolution);
+  EXPECT_EQ(deep.tileLookupResolution, defaults.tileLookupResolution);
+  EXPECT_EQ(deep.tileDepthLayers, defaults.tileDepthLayers);
+}

@@ -140,6 +140,9 @@ TEST_F(SampleCli, UnknownGodRayResolution) {
   expectRejected("--god-rays-resolution eighth", "--god-rays-resolution");
   expectRejected("--tile-resolution 100", "--tile-resolution must be a power of two");
   expectRejected("--tile-resolution 2048", "--tile-resolution");
+  expectRejected("--max-receiver-depth 0.1", "--max-receiver-depth");
+  expectRejected("--max-receiver-depth nan", "--max-receiver-depth");
+  expectRejected("--tile-depth-layers 6", "--tile-depth-layers must be 4 or 8");
 }
 TEST_F(SampleCli, MissingModel) {
   expectRejected("--model " + (dir_ / "missing.glb").string(), "missing.glb");

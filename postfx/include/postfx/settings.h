@@ -28,7 +28,11 @@ enum class CausticsModel {
   // tileResolution^2 texels, independent of the screen). A pixel multiplies one filtered lookup
   // per cascade, each moved by the coarser cascades' refraction (their light lands displaced).
   // Any receiver shape and distance, no window, no edge; mip-filtered, so far pixels get their
-  // footprint's mean light.
+  // footprint's mean light. The product of per-cascade fields is an approximation of refracting
+  // through their sum: close where the cascades' scales are far apart, too contrasty where two
+  // cascades focus near the receiver's depth (measured: docs/measurements.md, "The pattern
+  // alone"). Its receivers should lie within maxReceiverDepth, whose depth layers it
+  // interpolates between.
   TileIrradiance,
   Seed002 [[deprecated("named for a paper: use RayDeviation")]] = RayDeviation,
 };
@@ -63,11 +67,14 @@ struct CausticsSettings {
   // Off: the pass is skipped (0 ms) and, with RawCausticOutput, the raw texture reads 0.
   bool enabled = true;
 
-  // Tightening τ of ω = exp(-τ·a²) (seed 002, eq. 1), unitless, kTauRange. Larger values give
-  // thinner, sharper caustic lines; 0 gives ω = 1 everywhere (uniform light).
+  // RayDeviation only (validated always; TileIrradiance and WavefrontAreaRatio ignore it, bit
+  // for bit, seabed and god rays alike): tightening τ of ω = exp(-τ·a²) (seed 002, eq. 1),
+  // unitless, kTauRange. Larger values give thinner, sharper caustic lines; 0 gives ω = 1
+  // everywhere (uniform light).
   float tau = 800.0f;
 
-  // Blend of the reflected ray's ω into the refracted one's, kUnitRange: 0 = refraction only.
+  // RayDeviation only, like tau: blend of the reflected ray's ω into the refracted one's,
+  // kUnitRange: 0 = refraction only.
   float reflectionWeight = 0.25f;
 
   // Multiplier on the sun's irradiance for the added caustic light, kIntensityRange. The light
@@ -110,7 +117,11 @@ struct CausticsSettings {
   // tileResolution^2 * (8 bytes * 4/3 + 4 bytes) * tileDepthLayers / 4 per cascade with
   // waves that focus (128, 4 layers: 0.44 MB per cascade). A host whose cascade holds waves
   // only a few texels long (ripples in a coarse tile) needs more: docs/measurements.md,
-  // "A host's own water"; finer than its waves need makes the pattern too sharp.
+  // "A host's own water"; finer than its waves need makes the pattern too sharp. Where
+  // tileResolution * tilePointsPerTexel reaches the water texture's side (nothing unresolved
+  // is left to soften the light), each point's flux covers its refracted cell, up to 4 texels
+  // wide, rather than a bilinear texel square: diverging light stays smooth, not a grid of
+  // dots (the pre-pass about 2x slower on a CPU rasteriser).
   int tileResolution = 128;
   // Refracted water points per irradiance texel and side, 1 or 2: each point carries the mean
   // slope and height of its cell of the water texture (the mip level of the cell's size). 2
@@ -224,10 +235,9 @@ struct GodRaySettings {
   // kMaxMarchDistanceRange.
   float maxDistance = 60.0f;
   // Quarter by default: as accurate as full and half resolution against a dense march of the
-  // same light (16 samples: relative RMSE 0.151 / 0.161 / 0.155), the march's own sampling
-  // error dominating, at 2.6x the floor pass instead of 7x at half (1280x720, llvmpipe; see the
-  // error-against-time table in docs/measurements.md). Silhouettes stay sharp (depth-aware
-  // upsample); the finest shafts are softer.
+  // same light, the march's own sampling error dominating, for a sixteenth of the full march
+  // (the error and cost of each: docs/measurements.md, "God-ray resolution"). Silhouettes stay
+  // sharp (depth-aware upsample); the finest shafts are softer.
   GodRayResolution resolution = GodRayResolution::Quarter;
   // Shift the grid per pixel by a 4x4 ordered-dither phase that is fixed on screen and in time:
   // breaks the banding of few samples into fine static noise, without temporal flicker.
