@@ -142,6 +142,69 @@ TEST_F(PostfxTileSpreadTest, WaterNoFinerThanThePointsHasNothingToSpread) {
   EXPECT_LT(maxDiff, 2e-3) << "R16F: ~11 bits";
 }
 
+// Plane waves along x and z with `periods` whole periods per tile and slope amplitude `slope`.
+GLuint makeRipples(int size, int periods, double slope) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+  int levels = 1;
+  for (int s = size; s > 1; s >>= 1) ++levels;
+  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
+  std::vector<glm::vec4> texels(static_cast<size_t>(size * size));
+  const double twoPi = 6.283185307179586;
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double px = twoPi * periods * (x + 0.5) / size;
+      const double pz = twoPi * (periods + 1) * (y + 0.5) / size;
+      texels[static_cast<size_t>(y * size + x)] =
+          glm::vec4(float(slope * std::cos(px)), float(slope * std::cos(pz)), 0.0f, 1.0f);
+    }
+  }
+  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
+  glGenerateTextureMipmap(t);
+  return t;
+}
+
+// Ripples far shorter than a point's cell, 8 m down (dozens of their focal lengths), scatter
+// the light as a diffuser does: it arrives near-uniform, as traced light through them does.
+// The points must read their cell's mean (the mip level), not alias the ripples into a pattern
+// of their own; the same waves long enough for the points to resolve do make one.
+TEST_F(PostfxTileSpreadTest, RipplesFinerThanThePointsGiveNearUniformLightAtDepth) {
+  auto contrast = [](int periods) {
+    postfxtest::SceneSpec spec;
+    spec.sphere = false;
+    spec.width = 160;
+    spec.height = 90;
+    spec.camera = {0.0, -1.0, 0.0};
+    spec.lookDirection = {0.0, -1.0, -1e-3};
+    spec.floorY = -8.0;
+    postfxtest::Scene scene(spec);
+    const GLuint water = makeRipples(256, periods, 0.1);
+    postfxtest::ContextPtr fx = postfxtest::makeContext(kRaw);
+    postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 1);
+    frame.water.tileSize[0] = 2.5;  // 256 texels of 1 cm; 32 points of 8 cm
+    frame.caustics.model = postfx::CausticsModel::TileIrradiance;
+    frame.caustics.tileResolution = 32;
+    frame.caustics.tileMinModulation = 0.0f;
+    EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+    const FloorStats stats = floorStats(
+        scene,
+        postfxtest::readRed(postfx::testing::rawCausticTexture(*fx), spec.width, spec.height));
+    glDeleteTextures(1, &water);
+    EXPECT_GT(stats.pixels, 10000);
+    return stats;
+  };
+  const FloorStats ripples = contrast(100);  // 2.5 cm waves: a third of a point's cell
+  const FloorStats waves = contrast(3);      // 83 cm waves: 10 points each
+  std::printf(
+      "8 m under ripples: mean %.4f, contrast %.4f; under resolved waves: mean %.4f, "
+      "contrast %.4f\n",
+      ripples.mean, ripples.std / ripples.mean, waves.mean, waves.std / waves.mean);
+  EXPECT_LT(ripples.std / ripples.mean, 0.03);
+  EXPECT_GT(waves.std / waves.mean, 0.2) << "the test needs waves the points resolve";
+  // Flat water's raw light is n.l of the floor facing the refracted sun; the ripples keep it.
+  EXPECT_NEAR(ripples.mean / waves.mean, 1.0, 0.03);
+}
+
 TEST_F(PostfxTileSpreadTest, SunDiscOutsideItsRangeIsRefusedAndChangesNothing) {
   SpreadScene s(64, -8.0);
   const postfxtest::Scene& scene = s.scene();
