@@ -21,14 +21,18 @@ layout(binding = 2) uniform sampler2D backFaces;    // glass_back_faces.frag's o
 layout(binding = 3) uniform sampler2DShadow shadowMap;
 out vec4 outColor;
 
-// The pixel a camera-relative point projects to; false off screen or behind the camera.
-bool toScreen(vec3 relative, out ivec2 pixel) {
-  vec4 clip = viewProjection * vec4(relative, 1.0);
+// The pixel a camera-relative point (w = 1) or a direction's vanishing point (w = 0)
+// projects to; false off screen or behind the camera.
+bool clipToScreen(vec4 clip, out ivec2 pixel) {
   if (!(clip.w > 1e-4)) return false;
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
   pixel = ivec2(uv * vec2(textureSize(sceneDepth, 0)));
   return true;
+}
+
+bool toScreen(vec3 relative, out ivec2 pixel) {
+  return clipToScreen(viewProjection * vec4(relative, 1.0), pixel);
 }
 
 const int kOffScreen = -1, kInFront = 0, kBehind = 1;
@@ -43,13 +47,15 @@ int againstScene(vec3 p, out ivec2 pixel) {
 
 // What the ray from `origin` along `dir` meets in the frame: marched in screen space against
 // the G-buffer's depth in growing steps, the crossing refined by bisection. Where the ray
-// leaves the screen or meets nothing, the environment, seen through the water to the camera
-// (the glass's own view fog).
+// meets nothing the frame holds, the water column or sky the frame shows along that direction
+// (at its vanishing point, fog and god rays included); where that is off screen too, the
+// environment, seen through the water to the camera (the glass's own view fog).
 vec3 sceneAlong(vec3 origin, vec3 dir, float height, vec3 transmittance, vec3 inscatter) {
   float previous = 0.0, t = 0.03;
   ivec2 pixel;
+  int where = kInFront;
   for (int i = 0; i < 28; ++i) {
-    int where = againstScene(origin + dir * t, pixel);
+    where = againstScene(origin + dir * t, pixel);
     if (where == kOffScreen) break;
     if (where == kBehind) {
       for (int j = 0; j < 5; ++j) {
@@ -66,6 +72,16 @@ vec3 sceneAlong(vec3 origin, vec3 dir, float height, vec3 transmittance, vec3 in
     }
     previous = t;
     t *= 1.3;
+  }
+  // Still in front of everything after the march (tens of metres): toward open water or
+  // something as far, whose light depends on the direction alone, as the frame's own pixel
+  // along that direction shows it.
+  if (where != kOffScreen && clipToScreen(viewProjection * vec4(dir, 0.0), pixel)) {
+    float depth = texelFetch(sceneDepth, pixel, 0).r;
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(textureSize(sceneDepth, 0));
+    if (isSkyDepth(depth, int(projectionZ.z)) ||
+        length(reconstructRelative(uv, depth)) > 0.5 * t)
+      return texelFetch(sceneColour, pixel, 0).rgb;
   }
   return environmentRadiance(dir, height) * transmittance + inscatter;
 }

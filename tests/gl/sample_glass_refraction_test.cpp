@@ -3,7 +3,8 @@
 // beyond the ball's focus (a ball lens of relative index n = 1.5 / 1.33 focuses
 // n r / (2 (n - 1)) = 2.2 m from its centre for r = 0.5 m), so the ball shows it upside down and
 // mirrored: the left of the silhouette sees the dark half, the right the pale half. The same
-// ball made opaque shows neither; without a ball the same pixels show the wall as it is.
+// ball made opaque shows neither; without a ball the same pixels show the wall as it is. In
+// open water the ball shows the water around it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,8 +34,9 @@ const glm::dvec3 kBall(0.0, -3.0, -3.0);  // 3 m ahead of the camera, which look
 constexpr double kWallZ = -11.0;          // 8 m behind the ball, 3.6 focal lengths
 
 enum class Ball { None, Glass, Opaque };
+enum class Backdrop { Wall, OpenWater };
 
-ocean_scene::Model wallScene(Ball ball) {
+ocean_scene::Model wallScene(Ball ball, Backdrop backdrop = Backdrop::Wall) {
   using namespace ocean_scene;
   Model model;
   auto addWall = [&](float centreX, glm::vec3 albedo, const std::string& name) {
@@ -49,8 +51,10 @@ ocean_scene::Model wallScene(Ball ball) {
                     glm::translate(glm::mat4(1.0f), glm::vec3(centreX, -3.0f, float(kWallZ))),
                     name);
   };
-  addWall(-6.0f, glm::vec3(0.9f), "pale_half");  // x in [-12, 0]
-  addWall(6.0f, glm::vec3(0.02f), "dark_half");  // x in [0, 12]
+  if (backdrop == Backdrop::Wall) {
+    addWall(-6.0f, glm::vec3(0.9f), "pale_half");  // x in [-12, 0]
+    addWall(6.0f, glm::vec3(0.02f), "dark_half");  // x in [0, 12]
+  }
   if (ball != Ball::None) {
     Model sphere = makeGlassSphereModel();
     if (ball == Ball::Opaque) {
@@ -73,16 +77,18 @@ ocean::Camera camera() {
 
 class SampleGlassRefraction : public testsupport::GlTest {
  protected:
-  std::vector<float> render(Ball ball) {
+  // godRays: the plugin's shafts in the water column too (they light the open water).
+  std::vector<float> render(Ball ball, Backdrop backdrop = Backdrop::Wall, bool godRays = false) {
     const ocean::RenderSettings settings = sampletest::flatWaterRenderSettings(kWidth, kHeight);
     std::string error;
-    const ocean_scene::Model scene = wallScene(ball);
+    const ocean_scene::Model scene = wallScene(ball, backdrop);
     auto renderer = ocean::Renderer::create(settings, scene, error);
     EXPECT_TRUE(renderer) << error;
     if (!renderer) return {};
     // Flat light on the wall, no light of the ball's own.
-    auto plugin =
-        ocean::PluginSetup::create(*renderer, sampletest::flatWaterOptions(), false, error);
+    ocean::Options options = sampletest::flatWaterOptions();
+    options.godRays = godRays;
+    auto plugin = ocean::PluginSetup::create(*renderer, options, false, error);
     EXPECT_TRUE(plugin) << error;
     if (!plugin) return {};
     ocean::Sun sun;
@@ -175,6 +181,24 @@ TEST_F(SampleGlassRefraction, GlassShowsTheWallBehindItFlipped) {
   std::printf("wall %.4f | %.4f, glass %.4f | %.4f, opaque %.4f | %.4f, glass - opaque %.4f\n",
               wallLeft, wallRight, glassLeft, glassRight, opaqueLeft, opaqueRight, differ);
   EXPECT_GT(differ, 0.25 * wallLeft) << "glass pixels must not be an opaque ball's";
+}
+
+// With nothing behind it but open water, the ball shows the water column around it, shafts
+// included: what a ray meets at tens of metres is the frame's own background along its
+// direction, not a darker stand-in (a weak lens bends the view by a few degrees, and open
+// water's light depends on the direction alone).
+TEST_F(SampleGlassRefraction, GlassInOpenWaterShowsTheWaterAroundIt) {
+  const std::vector<float> water = render(Ball::None, Backdrop::OpenWater, true);
+  const std::vector<float> glass = render(Ball::Glass, Backdrop::OpenWater, true);
+  ASSERT_EQ(water.size(), glass.size());
+  const Halves halves = ballHalves();
+  std::vector<size_t> pixels = halves.left;
+  pixels.insert(pixels.end(), halves.right.begin(), halves.right.end());
+  const double open = meanLuminance(water, pixels), through = meanLuminance(glass, pixels);
+  std::printf("open water %.4f, through the glass %.4f\n", open, through);
+  ASSERT_GT(open, 0.0);
+  EXPECT_GT(through, 0.75 * open);
+  EXPECT_LT(through, 1.25 * open);
 }
 
 }  // namespace
