@@ -124,6 +124,9 @@ int runFrames(GLFWwindow* window, const Options& options, ViewState& state, Rend
       // an edit is refused.
       state.settings.edited.sun = state.preset.sun;
       state.settings.accepted.sun = state.preset.sun;
+      // And the caustic settings its scene is shown with (the sea stays the start preset's).
+      applyPresetCaustics(options, state.preset, state.settings.edited.caustics);
+      state.settings.untried = true;
       state.presetRequested = false;
     }
     moveCamera(window, state, dt);

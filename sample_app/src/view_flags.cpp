@@ -23,6 +23,20 @@ Options withPresetCaustics(Options options, const Preset& preset) {
   return options;
 }
 
+void applyPresetCaustics(const Options& options, const Preset& preset,
+                         postfx::CausticsSettings& caustics) {
+  const Options chosen = withPresetCaustics(options, preset);
+  const postfx::CausticsSettings defaults;
+  caustics.maxReceiverDepth =
+      chosen.maxReceiverDepth > 0.0 ? float(chosen.maxReceiverDepth) : defaults.maxReceiverDepth;
+  caustics.tileResolution =
+      chosen.tileResolution > 0 ? chosen.tileResolution : defaults.tileResolution;
+  caustics.tileLookupResolution =
+      chosen.causticsLookup > 0
+          ? static_cast<postfx::CausticsLookupResolution>(chosen.causticsLookup)
+          : defaults.tileLookupResolution;
+}
+
 bool resolveView(const Options& options, Preset& preset, std::string& error) {
   std::string known;
   if (!findPreset(options.preset, preset, known)) {

@@ -193,4 +193,19 @@ TEST_F(SampleRender, PresetCausticSettingsReachThePlugin) {
   EXPECT_EQ(deep.tileResolution, defaults.tileResolution);
   EXPECT_EQ(deep.tileLookupResolution, defaults.tileLookupResolution);
   EXPECT_EQ(deep.tileDepthLayers, defaults.tileDepthLayers);
+
+  // `view` switching from the hero to seabed: its settings go back to the plugin's defaults,
+  // except what the command line chose; the other fields stay as they were.
+  postfx::CausticsSettings live = hero;
+  live.tau = 123.0f;
+  ocean::applyPresetCaustics({}, seabed, live);
+  EXPECT_EQ(live.maxReceiverDepth, defaults.maxReceiverDepth);
+  EXPECT_EQ(live.tileResolution, defaults.tileResolution);
+  EXPECT_EQ(live.tileLookupResolution, defaults.tileLookupResolution);
+  EXPECT_EQ(live.tau, 123.0f);
+  ocean::Options fixedGrid;
+  fixedGrid.tileResolution = 256;
+  ocean::applyPresetCaustics(fixedGrid, shallow, live);
+  EXPECT_EQ(live.tileResolution, 256);
+  EXPECT_EQ(live.maxReceiverDepth, 5.0f);
 }
