@@ -27,7 +27,7 @@ namespace postfx {
 
 inline constexpr int kMaxCasters = 64;  // casters per frame
 
-// Limits of the glTF-style glass fields of CasterMaterial (issue 17).
+// Limits of the glTF-style glass fields of CasterMaterial.
 // A rough surface spreads a ray's light over a cone; its splat grows with the distance to the
 // receiver up to this standard deviation (caster-map texels). The cap bounds the sprite
 // (2 * ceil(3 * 16) + 1 = 97 texels a side) and so the cost of a rough caster; beyond it the
@@ -54,7 +54,7 @@ struct CasterMaterial {
   // Reflective: specular colour at normal incidence (Schlick's F0), linear RGB, [0, 1].
   glm::vec3 reflectance{0.95f};
 
-  // glTF-style glass (KHR_materials_transmission, _volume, _dispersion; issue 17). The defaults
+  // glTF-style glass (KHR_materials_transmission, _volume, _dispersion). The defaults
   // are clear, smooth, solid glass: the behaviour before these fields existed.
   //
   // Refractive: the share of the light crossing the surface that goes on as a refracted ray,
@@ -125,9 +125,10 @@ struct ObjectCausticsSettings {
   // memory: 84 bytes per ray (the caster maps and where each ray lands; 148 with
   // Feature::Dispersion, which traces each colour alone): 5.3 MiB at 256.
   int gridSize = 256;
-  // Image-space hit iterations against the receivers (seed 000 eq. 1-4: 1 is the paper's
-  // choice, 5 gives a negligible error), [1, 8]. When the seed's step oscillates or leaves the
-  // bracketed root, a false-position/bisection step replaces it.
+  // Image-space hit iterations against the receivers (the caustics-mapping estimate of where a
+  // ray meets the receiver depth, refined: 1 is that method's own choice, 5 gives a negligible
+  // error), [1, 8]. When a step oscillates or leaves the bracketed root, a
+  // false-position/bisection step replaces it.
   int iterations = 1;
   // The same search for where a refracted ray leaves the glass through its back faces (Wyman's
   // double refraction), [1, 8]. Curved glass needs more than the receivers: a 1 m glass sphere

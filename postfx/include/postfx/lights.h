@@ -1,5 +1,5 @@
 #pragma once
-// Local lights for Feature::ObjectCaustics (issue 18): point and spot lights whose light the
+// Local lights for Feature::ObjectCaustics: point and spot lights whose light the
 // glass and metal casters (postfx/casters.h) focus, alongside the sun or instead of it
 // (ObjectCausticsFrame::lights, ::lightCount, ::sunCaustics).
 //

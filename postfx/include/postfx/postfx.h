@@ -37,15 +37,15 @@ namespace postfx {
 // Decided at create(): each becomes a shader #define, so a feature that is off costs nothing.
 enum class Feature : std::uint32_t {
   None = 0,
-  Caustics = 1u << 0,        // seabed caustics (seed 002, section 4)
-  GodRays = 1u << 1,         // underwater light shafts (seed 002, section 4, eq. 2)
+  Caustics = 1u << 0,        // seabed caustics (CausticsSettings)
+  GodRays = 1u << 1,         // underwater light shafts (GodRaySettings)
   ObjectCaustics = 1u << 2,  // light-map caustics of glass/metal casters (seeds 000, 003)
   Dispersion = 1u << 3,      // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
   ShadowMask = 1u << 4,      // mask caustics by the host's sun shadow map (FrameDesc::shadow)
   // 1u << 5 and 1u << 6: test and benchmark hooks, postfx/testing.h.
-  PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio (seed 004); its pass
+  PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio; its pass
                                // is timed as Pass::CausticsIrradiance
-  // Seed 002's full tri-planar lookup: steep surfaces (more than ~30 degrees from horizontal
+  // Full tri-planar water lookup: steep surfaces (more than ~30 degrees from horizontal
   // at the default CausticsSettings::triplanarSharpness) also sample the water along the world
   // x and z axes, blended by the G-buffer normal. Without it every surface samples the water
   // where its light entered, along the refracted sun: seamless across surfaces, and on slopes

@@ -9,12 +9,12 @@ namespace postfx {
 // What the caustics pass multiplies the sun light by.
 enum class CausticsModel {
   // omega = exp(-tau a^2), a the sine of the angle between the sun ray refracted (and
-  // reflected) by the local water normal and its flat-water ray (seed 002, section 4, with the
+  // reflected) by the local water normal and its flat-water ray (with the
   // whole deviation rather than its component across the plane of incidence, which streaked
   // the pattern along the sun's azimuth). One texture lookup per cascade and pixel, any receiver
   // shape; a pattern without absolute scale (flat water gives 1, waves only darken).
   RayDeviation,
-  // Seed 004: true caustic irradiance from the wavefront area ratio. Every frame a grid over
+  // True caustic irradiance from the wavefront area ratio. Every frame a grid over
   // the water surface is refracted onto a few receiver depths and its triangles are added up
   // (folds sum) with brightness = beam area / refracted area. Needs Feature::PhysicalCaustics.
   // Covers a camera-centred square window (windowSize); outside it, and across the window's
@@ -68,7 +68,7 @@ struct CausticsSettings {
   bool enabled = true;
 
   // RayDeviation only (validated always; TileIrradiance and WavefrontAreaRatio ignore it, bit
-  // for bit, seabed and god rays alike): tightening τ of ω = exp(-τ·a²) (seed 002, eq. 1),
+  // for bit, seabed and god rays alike): tightening τ of ω = exp(-τ·a²),
   // unitless, kTauRange. Larger values give thinner, sharper caustic lines; 0 gives ω = 1
   // everywhere (uniform light).
   float tau = 800.0f;
@@ -209,10 +209,10 @@ inline constexpr Range<float> kMaxMarchDistanceRange{0.1f, 1e5f};   // m
 // the caustics model's field at the sample's depth (CausticsSettings::model): TileIrradiance
 // (the default) reads the tile irradiance the seabed caustics read, WavefrontAreaRatio its
 // window's depth layers and, beyond the window, the tile irradiance, as the seabed does there;
-// RayDeviation keeps seed 002's factor from the water slopes at each sample (shafts that do not
+// RayDeviation keeps its factor ω from the water slopes at each sample (shafts that do not
 // line up with the seabed's pattern). Flat water gives the unmodulated shafts with every model.
-// Seed 002's factor is at most 1, so a pixel gets at most E * intensity * sigma_s / sigma_t; an
-// irradiance field focuses (its mean is flat water's 1), so a ray inside a bright sheet can get
+// Ray deviation's factor is at most 1, so a pixel gets at most E * intensity * sigma_s / sigma_t;
+// an irradiance field focuses (its mean is flat water's 1), so a ray inside a bright sheet can get
 // up to the field's clamp (CausticsSettings::maxIrradiance) times that.
 struct GodRaySettings {
   // Off: the pass is skipped (0 ms).

@@ -56,7 +56,7 @@ LightCausticMap lightCausticMap(const Context& context) noexcept;
 
 // How the god-ray march places its samples along each view ray.
 enum class GodRaySampling {
-  // Seed 002 section 4 (what every context does): where the ray crosses the planes of a
+  // What every context does: where the ray crosses the planes of a
   // world-snapped grid, so the samples stay put in the world when the camera moves.
   WorldGrid,
   // sampleCount points evenly spread along the ray: slides with the camera (flickers). For
