@@ -26,9 +26,9 @@ glm::dvec3 corner(const glm::vec3& lo, const glm::vec3& hi, int i) {
   return glm::dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
 }
 
-bool underwaterCasters(const FrameDesc& frame) {
+bool underwaterCasters(const FrameDesc& frame, std::uint64_t casters) {
   glm::dvec3 lo, hi;
-  casterWorldBounds(frame.objectCaustics, lo, hi);
+  casterWorldBounds(frame.objectCaustics, lo, hi, casters);
   return 0.5 * (lo.y + hi.y) < frame.water.level;
 }
 
@@ -139,16 +139,33 @@ bool castersInReceiverView(const ObjectCausticsFrame& objects, const SunShadowMa
   return any && ndcHi.x >= -1.0 && ndcLo.x <= 1.0 && ndcHi.y >= -1.0 && ndcLo.y <= 1.0;
 }
 
+namespace {
+
+// The casters whose bounds reach the sun's receiver map: only they light what it sees, and one
+// far from them would stretch the sun's map over empty water (coarser texels for every caster).
+// All of them when none does (the pass then draws nothing).
+std::uint64_t castersOverReceivers(const ObjectCausticsFrame& objects) {
+  std::uint64_t mask = 0;
+  for (int c = 0; c < objects.casterCount && c < kMaxCasters; ++c) {
+    const std::uint64_t bit = std::uint64_t(1) << c;
+    if (castersInReceiverView(objects, objects.receivers, bit)) mask |= bit;
+  }
+  return mask != 0 ? mask : ~std::uint64_t(0);
+}
+
+}  // namespace
+
 ObjectLightFrame fitObjectLightFrame(const FrameDesc& frame) {
   ObjectLightFrame f;
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
-  f.underwater = underwaterCasters(frame);
+  const std::uint64_t casters = castersOverReceivers(frame.objectCaustics);
+  f.underwater = underwaterCasters(frame, casters);
   f.outerIor = f.underwater ? double(frame.water.ior) : 1.0;
   f.direction = f.underwater ? glm::normalize(refractedSunDown(sun, frame.water.ior)) : -sun;
   lightAxes(f.direction, f.right, f.up);
 
   glm::dvec3 lo, hi;
-  casterWorldBounds(frame.objectCaustics, lo, hi);
+  casterWorldBounds(frame.objectCaustics, lo, hi, casters);
   glm::dvec3 llo(std::numeric_limits<double>::max()), lhi(-llo);
   for (int i = 0; i < 8; ++i) {
     const glm::dvec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);

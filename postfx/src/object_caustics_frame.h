@@ -43,8 +43,9 @@ void lightAxes(const glm::dvec3& direction, glm::dvec3& right, glm::dvec3& up);
 // A local light at or below the water level is under water (its rays start in the water).
 bool localLightUnderwater(const FrameDesc& frame, const LocalLight& light);
 
-// Fits the frame to the casters' world bounds: side quantised to 1/8 octaves and centre snapped
-// to the ray grid's cell, so the rays stay put while the casters move less than a cell.
+// Fits the frame to the world bounds of the casters that reach the receiver map (all of them
+// when none does): side quantised to 1/8 octaves and centre snapped to the ray grid's cell, so
+// the rays stay put while the casters move less than a cell.
 ObjectLightFrame fitObjectLightFrame(const FrameDesc& frame);
 
 // The per-caster matrices the caster maps are drawn with, in float: model -> anchor-relative

@@ -102,4 +102,35 @@ TEST(PostfxObjectCausticsFrame, CasterClipHoldsTheCasters) {
   EXPECT_LT(glm::length(map.direction + glm::normalize(sun)), 1e-12);
 }
 
+// A caster whose bounds never reach the receivers' map (another bay, 60 m away) lights nothing
+// the map sees: the sun's map is fitted as if it were not there, not stretched over both.
+TEST(PostfxObjectCausticsFrame, CastersBeyondTheReceiverMapDoNotWidenIt) {
+  const glm::dvec3 sun(0.2, 1.0, 0.1);
+  const postfx::CasterMesh casters[2] = {meshAt(glm::dvec3(0.0, -5.0, 0.0)),
+                                         meshAt(glm::dvec3(60.0, -5.0, 0.0))};
+  postfx::FrameDesc frame = frameWith(casters[0], sun);
+  frame.water.level = 0.0;
+  // A receiver map 20 m across around the first caster, seen straight down.
+  glm::dmat4 clip(1.0);
+  clip[0][0] = clip[2][1] = 0.1;
+  clip[1][1] = 0.0;
+  clip[1][2] = 0.01;
+  clip[2][2] = 0.0;
+  clip[3][2] = 0.5;
+  frame.objectCaustics.receivers.worldToLightClip = clip;
+  const ObjectLightFrame alone = postfx::detail::fitObjectLightFrame(frame);
+  frame.objectCaustics.casters = casters;
+  frame.objectCaustics.casterCount = 2;
+  const ObjectLightFrame both = postfx::detail::fitObjectLightFrame(frame);
+  EXPECT_EQ(both.halfGrid, alone.halfGrid);
+  EXPECT_EQ(both.anchor, alone.anchor);
+  EXPECT_EQ(both.zNear, alone.zNear);
+  EXPECT_EQ(both.zFar, alone.zFar);
+  // With the map over both, it spans both.
+  clip[0][0] = 0.01;
+  clip[3][0] = -0.3;
+  frame.objectCaustics.receivers.worldToLightClip = clip;
+  EXPECT_GT(postfx::detail::fitObjectLightFrame(frame).halfGrid, 20.0 * alone.halfGrid);
+}
+
 }  // namespace
