@@ -152,6 +152,17 @@ GLuint makeWaterTexture(int size, int layers, double amplitude, bool nan) {
   return t;
 }
 
+GLuint makeWaterTextureFromTexels(int size, const std::vector<glm::vec4>& texels) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+  int levels = 1;
+  for (int s = size; s > 1; s >>= 1) ++levels;
+  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
+  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
+  glGenerateTextureMipmap(t);
+  return t;
+}
+
 GLuint makeLevelIndependentWaterTexture(int size, double slope) {
   GLuint t = 0;
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);

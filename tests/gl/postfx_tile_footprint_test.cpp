@@ -25,11 +25,6 @@ constexpr double kAmplitude = 0.017;  // m: the troughs spread the light ~3x at 
 
 // One plane wave along x, exact slopes and heights at each texel, whole periods per tile.
 GLuint makePlaneWave(int size) {
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
-  int levels = 1;
-  for (int s = size; s > 1; s >>= 1) ++levels;
-  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
   std::vector<glm::vec4> texels(static_cast<size_t>(size * size));
   const double k = 6.283185307179586 * kPeriods / kTile;
   for (int y = 0; y < size; ++y) {
@@ -40,9 +35,7 @@ GLuint makePlaneWave(int size) {
                     float(kAmplitude * std::sin(k * px)), 1.0f);
     }
   }
-  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
-  glGenerateTextureMipmap(t);
-  return t;
+  return postfxtest::makeWaterTextureFromTexels(size, texels);
 }
 
 struct DarkField {

@@ -144,11 +144,6 @@ TEST_F(PostfxTileSpreadTest, WaterNoFinerThanThePointsHasNothingToSpread) {
 
 // Plane waves along x and z with `periods` whole periods per tile and slope amplitude `slope`.
 GLuint makeRipples(int size, int periods, double slope) {
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
-  int levels = 1;
-  for (int s = size; s > 1; s >>= 1) ++levels;
-  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
   std::vector<glm::vec4> texels(static_cast<size_t>(size * size));
   const double twoPi = 6.283185307179586;
   for (int y = 0; y < size; ++y) {
@@ -159,9 +154,7 @@ GLuint makeRipples(int size, int periods, double slope) {
           glm::vec4(float(slope * std::cos(px)), float(slope * std::cos(pz)), 0.0f, 1.0f);
     }
   }
-  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
-  glGenerateTextureMipmap(t);
-  return t;
+  return postfxtest::makeWaterTextureFromTexels(size, texels);
 }
 
 // Ripples far shorter than a point's cell, 8 m down (dozens of their focal lengths), scatter
