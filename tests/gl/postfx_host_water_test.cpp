@@ -19,6 +19,7 @@
 
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"
+#include "postfx_scene.h"
 #include "postfx_test_util.h"
 
 namespace {
@@ -71,17 +72,6 @@ std::vector<glm::vec4> gerstnerTexels(const std::vector<GerstnerWave>& waves, do
   return texels;
 }
 
-GLuint uploadWater(const std::vector<glm::vec4>& texels, int size) {
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
-  int levels = 1;
-  for (int s = size; s > 1; s >>= 1) ++levels;
-  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
-  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
-  glGenerateTextureMipmap(t);
-  return t;
-}
-
 class PostfxHostWaterTest : public testsupport::GlTest {};
 
 TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
@@ -93,7 +83,8 @@ TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
       {1, 0, 0.20, 0.30, 0.0},    {2, 1, 0.08, 0.30, 1.3},     {-3, 2, 0.05, 0.30, 2.1},
       {5, -4, 0.025, 0.25, 0.4},  {-7, -6, 0.015, 0.20, 5.0},  {10, 3, 0.010, 0.15, 3.3},
       {17, -9, 0.0106, 0.3, 0.7}, {-23, 14, 0.0076, 0.3, 2.9}, {31, 22, 0.0053, 0.3, 4.4}};
-  const GLuint water = uploadWater(gerstnerTexels(waves, tile, size), size);
+  const GLuint water =
+      postfxtest::makeWaterTextureFromTexels(size, gerstnerTexels(waves, tile, size));
   // Per case the floor at the default grid (128 texels per tile side) and at 512, where the
   // grid resolves the ripples' focal lines.
   struct Case {
