@@ -27,7 +27,7 @@ echo "make_images: docs/torch.png"
 "$sample" render --preset torch --width 640 --height 360 --out docs/torch.png > /dev/null
 
 echo "make_images: docs/loop.gif (40 frames)"
-"$sample" render --width 360 --height 203 --frames 40 --fps 20 --out docs/loop.gif | tail -n 1
+"$sample" render --width 320 --height 180 --frames 40 --fps 20 --out docs/loop.gif | tail -n 1
 
 if [ "${1:-}" = "--with-report" ]; then
   echo "make_images: docs/error_vs_time.png (ocean_sample report)"
