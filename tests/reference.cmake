@@ -15,29 +15,29 @@ target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/pos
   ${POSTFX_SHADER_ROOT})
 
 # The caustics' water lookups on sloped receivers (along the light vs Feature::TriplanarWalls)
-# against the seabed reference traced onto the same tilted planes, through the report's code.
+# against the seabed reference traced onto the same tilted planes, through the validation library (the report's rows run the same).
 postfx_add_test(postfx_slope_lookup_tests GL
   SOURCES gl/postfx_slope_lookup_test.cpp
-  LIBS ocean_report water glm::glm postfx::epoxy)
+  LIBS ocean_validation water glm::glm postfx::epoxy)
 
-# The report's sloped receiver (pixels to horizontal bins, the plane as the reference's height
+# The validation library's sloped receiver (pixels to horizontal bins, the plane as the reference's height
 # field, flat-water units) on known answers.
 postfx_add_test(report_sloped_plane_tests
   SOURCES unit/report_sloped_plane_test.cpp
-  LIBS ocean_report)
+  LIBS ocean_validation)
 
 # The ray-deviation caustics' pattern is no more streaked along the sun than traced light.
 postfx_add_test(postfx_streak_tests GL
   SOURCES gl/postfx_streak_test.cpp
-  LIBS ocean_report water glm::glm postfx::epoxy)
+  LIBS ocean_validation water glm::glm postfx::epoxy)
 
 # The TileIrradiance model (the default): flat water, where light may land, flux, and against
-# converged light tracing on the report's flat seabed; its spread keeps the flux.
+# converged light tracing on the flat seabed comparison (sample_app/validation); its spread keeps the flux.
 postfx_add_test(postfx_tile_irradiance_tests GL
   SOURCES gl/postfx_scene.cpp gl/postfx_tile_irradiance_test.cpp
           gl/postfx_tile_lookup_resolution_test.cpp gl/postfx_tile_spread_test.cpp
           gl/postfx_host_water_test.cpp gl/postfx_tile_footprint_test.cpp
-  LIBS ocean_report postfx gbuffer water glm::glm postfx::epoxy)
+  LIBS ocean_validation postfx gbuffer water glm::glm postfx::epoxy)
 target_include_directories(postfx_tile_irradiance_tests
   PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
 
@@ -60,14 +60,14 @@ postfx_add_test(report_plot_tests
   LIBS ocean_report)
 
 # SunShadowMap's bias in metres and normal offset in texels on planes shadowing themselves
-# (a wall, 60 degree slopes, a floor under a grazing sun), through the report's plane G-buffer.
+# (a wall, 60 degree slopes, a floor under a grazing sun), through the validation library's plane G-buffer.
 postfx_add_test(postfx_shadow_bias_tests GL
   SOURCES gl/postfx_shadow_bias_test.cpp
-  LIBS ocean_report glm::glm postfx::epoxy)
+  LIBS ocean_validation glm::glm postfx::epoxy)
 
 # Point and spot lights' object caustics (issue 18) against the exact CPU ray tracing of the same
-# glass sphere, through the report's host (light_caustic_run.h): focus, flux in air and under
+# glass sphere, through the validation library's host (light_caustic_run.h): focus, flux in air and under
 # water, inverse square over 1-10 m, a spot cone's edge.
 postfx_add_test(postfx_object_caustics_lights_accuracy_tests GL
   SOURCES gl/postfx_object_caustics_lights_accuracy_test.cpp
-  LIBS ocean_report ocean_reference glm::glm postfx::epoxy)
+  LIBS ocean_validation ocean_reference glm::glm postfx::epoxy)

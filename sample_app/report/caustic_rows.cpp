@@ -1,131 +1,41 @@
 #include "caustic_rows.h"
-#include <postfx/testing.h>
-
-#include <epoxy/gl.h>
 
 #include <cmath>
 #include <cstdio>
 #include <optional>
 
-#include <seabed_reference.h>
-#include <water_readback.h>
-
-#include "error_metrics.h"
-#include "flat_gbuffer.h"
-#include "pass_runner.h"
-#include "streak_ratio.h"
+#include <error_metrics.h>
+#include <pass_runner.h>
 
 namespace ocean::report {
 namespace {
 
-// Refracted sun's cosine to the vertical: N.L of a floor facing up, which the raw factor holds.
-double refractedCosine(const glm::dvec3& towardSun, double ior) {
-  const glm::dvec3 sun = glm::normalize(towardSun);
-  const double sinT = std::sqrt(std::max(0.0, 1.0 - sun.y * sun.y)) / ior;
-  return std::sqrt(std::max(0.0, 1.0 - sinT * sinT));
-}
+using validation::compareWithReference;
+using validation::contrast;
+using validation::ErrorStats;
 
-}  // namespace
-
-FlatSeabedComparison::FlatSeabedComparison() = default;
-FlatSeabedComparison::~FlatSeabedComparison() = default;
-
-bool FlatSeabedComparison::prepare(const postfx::FrameDesc& hostFrame,
-                                   const CausticReportSettings& settings, std::string& error) {
-  settings_ = settings;
-  const int w = settings.width, h = settings.height, bin = settings.binPixels;
-  const double height = settings.receiverDepth - settings.cameraDepth;  // camera to floor (m)
-  const PlaneView topDown = topDownView(w, h, height);
-  const double aspect = topDown.aspect, f = topDown.focal;
-
-  frame_ = hostFrame;
-  const double level = frame_.water.level;
-  const glm::dvec3 camera(hostFrame.camera.position.x, level - settings.cameraDepth,
-                          hostFrame.camera.position.z);
-  gbuffer_ = std::make_unique<PlaneGbuffer>(w, h, topDown.windowDepth);
-  target_ = std::make_unique<ReportTarget>(w, h);
-  frame_.depth = {gbuffer_->depth(), GL_DEPTH_COMPONENT32F};
-  frame_.normal = {gbuffer_->normal(), GL_RGBA16F};
-  frame_.albedo = {gbuffer_->albedo(), GL_RGBA8};
-  frame_.camera.position = camera;
-  frame_.camera.view = glm::mat4(topDown.view);
-  frame_.camera.projection = topDown.projection;
-  frame_.godRays.enabled = false;
-  frame_.objectCaustics = {};
-
-  // Bins: blocks of bin x bin pixels; pixel (i, j) sees world x = camera.x + (2(i+.5)/w - 1)
-  // * height * aspect / f and z = camera.z - (2(j+.5)/h - 1) * height / f.
-  const double pixelX = 2.0 * height * aspect / f / w, pixelZ = 2.0 * height / f / h;
-  desc_ = {};
-  desc_.towardSun = glm::normalize(hostFrame.sun.direction);
-  desc_.ior = hostFrame.water.ior;
-  desc_.sunAngularRadius = 0.5 * glm::radians(double(hostFrame.sun.angularDiameterDegrees));
-  desc_.bins.origin = {camera.x - 0.5 * w * pixelX, camera.z - 0.5 * h * pixelZ};
-  desc_.bins.binSize = bin * pixelX;
-  desc_.bins.binSizeZ = bin * pixelZ;
-  desc_.bins.countX = w / bin;
-  desc_.bins.countZ = h / bin;
-  desc_.receivers = {ocean::reference::Receiver::flat(settings.receiverDepth)};
-  desc_.targetRelativeError = settings.referenceError;
-  desc_.label = "report: seabed reference";
-  ocean::reference::WaterTextureSurface surface;
-  if (!surface.read(hostFrame.water, error)) return false;
-  // The reference sees world coordinates; the water origin is part of the surface.
-  reference_ = ocean::reference::traceSeabedCaustics(surface, desc_);
-  cosine_ = refractedCosine(desc_.towardSun, desc_.ior);
-  return true;
-}
-
-// Pixel (i, j) -> bin (i / bin, (h - 1 - j) / bin): z grows toward the image's bottom row.
-std::vector<double> FlatSeabedComparison::binRaw(const std::vector<float>& raw) const {
-  const int w = settings_.width, h = settings_.height, bin = settings_.binPixels;
-  std::vector<double> sum(truth().size(), 0.0);
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i)
-      sum[size_t(((h - 1 - j) / bin) * desc_.bins.countX + i / bin)] +=
-          double(raw[size_t(j * w + i)]) / cosine_;
-  for (double& s : sum) s /= double(bin * bin);
-  return sum;
-}
-
-bool FlatSeabedComparison::run(postfx::CreateDesc create, const postfx::CausticsSettings& caustics,
-                               int timedFrames, PassRun& out, std::vector<double>& binned,
-                               std::string& error) const {
-  create.features = create.features | postfx::Feature::Caustics | postfx::testing::RawCausticOutput;
-  create.depthConvention = postfx::DepthConvention::ReverseZ;
-  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
-  postfx::FrameDesc frame = frame_;
-  frame.caustics = caustics;
-  frame.caustics.surfaceFadeDepth = 0.0f;  // the reference has no fade
-  if (!runPass(create, frame, postfx::Pass::Caustics, *target_, timedFrames, out, error))
-    return false;
-  binned = binRaw(out.raw);
-  return true;
-}
-
-double FlatSeabedComparison::streakRatio(const std::vector<double>& binned) const {
-  return ocean::report::streakRatio(binned, desc_.bins.countX, desc_.bins.countZ,
-                                    desc_.bins.binSize, desc_.bins.binSizeZ, desc_.towardSun);
-}
-
-bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSettings& settings,
-                     std::vector<Row>& rows, std::string& note, std::string& error) {
-  FlatSeabedComparison seabed;
+bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSettings& sizeSettings,
+                    std::vector<Row>& rows, std::string& note, std::string& error) {
+  const validation::FlatSeabedSettings& settings = sizeSettings.seabed;
+  std::fprintf(stderr, "report: caustics at %dx%d: tracing the seabed reference\n", settings.width,
+               settings.height);
+  validation::FlatSeabedComparison seabed;
   if (!seabed.prepare(hostFrame, settings, error)) return false;
   const ocean::reference::ReferenceResult& reference = seabed.reference();
   const ocean::reference::ReferenceDesc& desc = seabed.desc();
   const std::vector<double>& truth = seabed.truth();
   const double truthStreaks = seabed.streakRatio(truth);
   char text[400];
-  std::snprintf(text, sizeof(text),
-                "Caustics: flat seabed %.1f m below the level seen from above, %d x %d bins of "
-                "%.2f x %.2f m; reference: %.3g rays traced through the GPU's water texture "
-                "(level 0) in double, median per-bin error %.2g%s; its streak ratio (gradient "
-                "energy across / along the sun's azimuth) %.2f.",
-                settings.receiverDepth, desc.bins.countX, desc.bins.countZ, desc.bins.binSize,
-                desc.bins.binSizeZ, double(reference.rays),
-                reference.receivers[0].medianRelativeError,
-                reference.converged ? "" : " (ray cap reached)", truthStreaks);
+  std::snprintf(
+      text, sizeof(text),
+      "Caustics at %dx%d: flat seabed %.1f m below the level seen from above, %d x %d "
+      "bins of %.3f x %.3f m; reference: %.3g rays traced through the GPU's water texture "
+      "(level 0) in double, median per-bin error %.2g%s; its streak ratio (gradient "
+      "energy across / along the sun's azimuth) %.2f.",
+      settings.width, settings.height, settings.receiverDepth, desc.bins.countX, desc.bins.countZ,
+      desc.bins.binSize, desc.bins.binSizeZ, double(reference.rays),
+      reference.receivers[0].medianRelativeError, reference.converged ? "" : " (ray cap reached)",
+      truthStreaks);
   note = text;
 
   // A model's per-frame pass before the caustics: part of its cost. The models that have one
@@ -170,6 +80,7 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
   postfx::CausticsSettings rayDeviation;
   rayDeviation.model = postfx::CausticsModel::RayDeviation;
   for (float reflection : {0.0f, 0.25f}) {
+    if (!sizeSettings.everyModel) break;
     for (float tau : {100.0f, 400.0f, 800.0f, 3200.0f}) {
       Variant v{
           reflection > 0.0f ? "ray deviation, reflection 0.25" : "ray deviation, refraction only",
@@ -180,13 +91,15 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     }
   }
   for (float cut : {0.0f, 0.3f}) {
+    if (!sizeSettings.everyModel) break;
     Variant v{"ray deviation, cascade cut-off",
               "cut " + std::to_string(cut).substr(0, 3) + " tau 800", rayDeviation, false,
               std::nullopt};
     v.caustics.minCascadeContrast = cut;
     variants.push_back(v);
   }
-  for (int grid : settings.physicalGrids) {
+  for (int grid : sizeSettings.physicalGrids) {
+    if (!sizeSettings.everyModel && grid != 256) continue;
     Variant v{"physical (wavefront area ratio)", "grid " + std::to_string(grid),
               postfx::CausticsSettings{}, true,
               PrePass{postfx::Pass::CausticsIrradiance, "irradiance pass"}};
@@ -196,28 +109,34 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
   }
 
   const std::vector<double> uniform(truth.size(), 1.0);
-  const ErrorStats flat = compareWithReference(uniform, truth);
+  const validation::ErrorStats flat = validation::compareWithReference(uniform, truth);
   Row flatRow;
   flatRow.pass = "caustics";
   flatRow.method = "no caustics (uniform light)";
   flatRow.setting = "-";
+  flatRow.width = settings.width;
+  flatRow.height = settings.height;
+  flatRow.contrast = 0.0;
+  flatRow.referenceContrast = contrast(truth);
   flatRow.relativeRmse = flat.relativeRmse;
   flatRow.affineRmse = flat.affineRmse;
   flatRow.note = "the error of drawing no caustic pattern at all";
   rows.push_back(flatRow);
   for (size_t k = 0; k < variants.size(); ++k) {
     const Variant& v = variants[k];
-    std::fprintf(stderr, "report: caustics %s, %s (%zu/%zu)\n", v.method.c_str(), v.setting.c_str(),
-                 k + 1, variants.size());
+    std::fprintf(stderr, "report: caustics at %dx%d, %s, %s (%zu/%zu)\n", settings.width,
+                 settings.height, v.method.c_str(), v.setting.c_str(), k + 1, variants.size());
     postfx::CreateDesc create;
     create.features = v.physical ? postfx::Feature::PhysicalCaustics : postfx::Feature::None;
-    PassRun run;
+    validation::PassRun run;
     std::vector<double> binned;
-    if (!seabed.run(create, v.caustics, settings.timedFrames, run, binned, error)) return false;
+    if (!seabed.run(create, v.caustics, sizeSettings.timedFrames, run, binned, error)) return false;
     Row row;
     row.pass = "caustics";
     row.method = v.method;
     row.setting = v.setting;
+    row.width = settings.width;
+    row.height = settings.height;
     row.medianMs = run.medianMs;
     row.floorMs = run.floorMs;
     if (v.prePass) {
@@ -238,13 +157,28 @@ bool measureCaustics(const postfx::FrameDesc& hostFrame, const CausticReportSett
     std::snprintf(streaks, sizeof(streaks), "streak ratio %.2f (traced %.2f)",
                   seabed.streakRatio(binned), truthStreaks);
     row.note += streaks;
-    const ErrorStats stats = compareWithReference(binned, truth);
+    const validation::ErrorStats stats = validation::compareWithReference(binned, truth);
     // Ray deviation's omega has no absolute scale; the irradiance models' does.
     if (v.prePass) row.relativeRmse = stats.relativeRmse;
     // Every model's pattern error too: the plot's seabed panel compares them all on it.
     row.affineRmse = stats.affineRmse;
     row.correlation = stats.correlation;
+    row.contrast = contrast(binned);
+    row.referenceContrast = flatRow.referenceContrast;
     rows.push_back(row);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool measureCaustics(const postfx::FrameDesc& hostFrame,
+                     const std::vector<CausticReportSettings>& sizes, std::vector<Row>& rows,
+                     std::string& note, std::string& error) {
+  for (const CausticReportSettings& settings : sizes) {
+    std::string sizeNote;
+    if (!measureOneSize(hostFrame, settings, rows, sizeNote, error)) return false;
+    note += (note.empty() ? "" : "\n\n") + sizeNote;
   }
   return true;
 }

@@ -32,7 +32,7 @@ std::vector<double> flatten(const std::vector<glm::dvec3>& image) {
 // light field, full resolution): the mean of `phases` frames of 64 samples spread uniformly along
 // each ray, each frame's samples shifted by 1 / phases of a step.
 bool denseFieldMarch(const postfx::CreateDesc& create, postfx::FrameDesc frame,
-                     const ReportTarget& target, int phases, std::vector<double>& out,
+                     const validation::ReportTarget& target, int phases, std::vector<double>& out,
                      std::string& error) {
   postfx::Context* context = nullptr;
   if (postfx::create(create, context) != postfx::Result::Ok) {
@@ -65,9 +65,9 @@ bool denseFieldMarch(const postfx::CreateDesc& create, postfx::FrameDesc frame,
 }
 
 // One report row: a god-ray march's time and its error against the dense march.
-Row godRayRow(const char* method, int samples, const PassRun& run,
+Row godRayRow(const char* method, int samples, const validation::PassRun& run,
               const std::vector<double>& dense) {
-  const ErrorStats stats = compareWithReference(flatten(run.image), dense);
+  const validation::ErrorStats stats = validation::compareWithReference(flatten(run.image), dense);
   Row row;
   row.pass = "god_rays";
   row.method = method;
@@ -82,8 +82,9 @@ Row godRayRow(const char* method, int samples, const PassRun& run,
 // Rows for the god rays of the TileIrradiance model (their light the seabed caustics' field),
 // against that model's dense march.
 bool measureFieldGodRays(const postfx::CreateDesc& create, postfx::FrameDesc frame,
-                         const ReportTarget& target, const GodRayReportSettings& settings,
-                         std::vector<Row>& rows, std::string& note, std::string& error) {
+                         const validation::ReportTarget& target,
+                         const GodRayReportSettings& settings, std::vector<Row>& rows,
+                         std::string& note, std::string& error) {
   frame.caustics.model = postfx::CausticsModel::TileIrradiance;
   const int phases = std::max(settings.referenceSamples / 64, 2);
   std::fprintf(stderr, "report: god rays from the tile field, dense march (%d and %d samples)\n",
@@ -98,7 +99,7 @@ bool measureFieldGodRays(const postfx::CreateDesc& create, postfx::FrameDesc fra
                 "resolution with %d uniform samples per pixel; %d vs %d differ by %.2g relative "
                 "RMSE.",
                 64 * phases, 64 * phases / 2, 64 * phases,
-                compareWithReference(half, dense).relativeRmse);
+                validation::compareWithReference(half, dense).relativeRmse);
   note += text;
   struct Variant {
     const char* method;
@@ -116,8 +117,9 @@ bool measureFieldGodRays(const postfx::CreateDesc& create, postfx::FrameDesc fra
       std::fprintf(stderr, "report: %s, %d samples\n", variant.method, samples);
       frame.godRays.sampleCount = samples;
       frame.godRays.resolution = variant.resolution;
-      PassRun run;
-      if (!runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames, run, error))
+      validation::PassRun run;
+      if (!validation::runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames,
+                               run, error))
         return false;
       rows.push_back(godRayRow(variant.method, samples, run, dense));
     }
@@ -128,7 +130,7 @@ bool measureFieldGodRays(const postfx::CreateDesc& create, postfx::FrameDesc fra
 }  // namespace
 
 bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hostFrame,
-                    const ReportTarget& target, const GodRayReportSettings& settings,
+                    const validation::ReportTarget& target, const GodRayReportSettings& settings,
                     std::vector<Row>& rows, std::string& note, std::string& error) {
   postfx::CreateDesc create = host;
   create.features = postfx::Feature::GodRays;
@@ -151,7 +153,7 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
   options.samples = settings.referenceSamples / 2;
   const std::vector<double> half =
       flatten(ocean::reference::renderGodRayReference(create, frame, inputs, options));
-  const double convergence = compareWithReference(half, dense).relativeRmse;
+  const double convergence = validation::compareWithReference(half, dense).relativeRmse;
   char text[256];
   std::snprintf(text, sizeof(text),
                 "God rays: dense march with %d segments per pixel in double (the same model); "
@@ -183,9 +185,9 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
                    std::size(variants) * std::size(counts));
       frame.godRays.sampleCount = samples;
       frame.godRays.resolution = variant.resolution;
-      PassRun run;
-      if (!runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames, run, error,
-                   variant.sampling))
+      validation::PassRun run;
+      if (!validation::runPass(create, frame, postfx::Pass::GodRays, target, settings.timedFrames,
+                               run, error, variant.sampling))
         return false;
       rows.push_back(godRayRow(variant.method, samples, run, dense));
     }

@@ -23,7 +23,7 @@ struct GodRayReportSettings {
 // `host` / `hostFrame`: what the sample handed the plugin for the frame now in its G-buffer.
 // Appends rows; `note` gets the reference's convergence. Progress on stderr.
 bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hostFrame,
-                    const ReportTarget& target, const GodRayReportSettings& settings,
+                    const validation::ReportTarget& target, const GodRayReportSettings& settings,
                     std::vector<Row>& rows, std::string& note, std::string& error);
 
 }  // namespace ocean::report

@@ -12,8 +12,8 @@
 #include <object_caustics_scene.h>
 
 #include "error_metrics.h"
-#include "flat_gbuffer.h"
 #include "light_caustic_run.h"
+#include "plane_gbuffer.h"
 
 namespace ocean::report {
 namespace {
@@ -83,29 +83,33 @@ bool measureLightRows(const ObjectCausticReportSettings& settings, int timedFram
     const char* method;
     const char* setting;
     const char* light;  // in the note
-    LightCausticScene scene;
+    validation::LightCausticScene scene;
   };
   const int block = settings.lightBinBlock;
   const Case cases[] = {
-      {"object caustics, point light", "in air", "point", pointLightBallLens(false, 80 * block)},
+      {"object caustics, point light", "in air", "point",
+       validation::pointLightBallLens(false, 80 * block)},
       {"object caustics, point light", "under water", "point",
-       pointLightBallLens(true, 80 * block)},
-      {"object caustics, spot light", "hard edge", "spot", spotConeCut(0.0, 80 * block)},
-      {"object caustics, spot light", "softness 0.5", "spot", spotConeCut(0.5, 80 * block)},
+       validation::pointLightBallLens(true, 80 * block)},
+      {"object caustics, spot light", "hard edge", "spot",
+       validation::spotConeCut(0.0, 80 * block)},
+      {"object caustics, spot light", "softness 0.5", "spot",
+       validation::spotConeCut(0.5, 80 * block)},
   };
   std::string noises;
   for (const Case& c : cases) {
     std::fprintf(stderr, "report: %s, %s\n", c.method, c.setting);
-    const LightCausticScene& scene = c.scene;
-    LightCausticRun run;
-    if (!runLightCaustic(scene, postfx::ObjectCausticsSettings{}, timedFrames, run, error))
+    const validation::LightCausticScene& scene = c.scene;
+    validation::LightCausticRun run;
+    if (!validation::runLightCaustic(scene, postfx::ObjectCausticsSettings{}, timedFrames, run,
+                                     error))
       return false;
     if (run.skip != postfx::LightSkip::None || run.irradiance.empty()) {
       error = std::string("object caustics: the light did not run for ") + c.method;
       return false;
     }
     // The reference into the pixels' bins (focus, flux) and into the compared blocks (error).
-    const ref::ReceiverBins pixels = sceneBins(scene);
+    const ref::ReceiverBins pixels = validation::sceneBins(scene);
     ref::ReceiverBins blocks = pixels;
     blocks.size = pixels.size / block;
     const glm::dvec3 water = scene.underWater ? scene.waterAbsorption : glm::dvec3(0.0);
@@ -119,8 +123,8 @@ bool measureLightRows(const ObjectCausticReportSettings& settings, int timedFram
       truth[i] = 0.5 * (a.irradiance[i].g + b.irradiance[i].g);
       halfDifference[i] = 0.5 * (a.irradiance[i].g - b.irradiance[i].g);
     }
-    const ErrorStats stats =
-        compareWithReference(blockMeans(run.irradiance, pixels.size, block), truth);
+    const validation::ErrorStats stats =
+        validation::compareWithReference(blockMeans(run.irradiance, pixels.size, block), truth);
     const ref::LocalCausticReference fine =
         ref::traceSphereFromLight(scene.sphere, scene.light, pixels, water, n, 3);
     const double area = ref::binArea(pixels);
@@ -210,13 +214,14 @@ ObjectCausticReportSettings objectCausticSweep(bool quick) {
   return s;
 }
 
-bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReportSettings& settings,
-                           std::vector<Row>& rows, std::string& note, std::string& error) {
+bool measureObjectCaustics(const validation::ReportTarget& target,
+                           const ObjectCausticReportSettings& settings, std::vector<Row>& rows,
+                           std::string& note, std::string& error) {
   const ref::SphereOverPlane scene = ref::glassSphereOverPlane();
   const ref::SphereCaster& sphere = scene.sphere;
   const int w = target.width(), h = target.height();
-  const PlaneView topDown = topDownView(w, h, kCameraHeight - scene.planeY);
-  PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
+  const validation::PlaneView topDown = validation::topDownView(w, h, kCameraHeight - scene.planeY);
+  validation::PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
   const ref::GlMesh mesh = ref::makeSphereMesh(sphere.radius, 160, 80);
   // Under water the light reaching the sphere is the sun refracted by the flat surface, and the
   // glass bends it by its IOR over the water's.
@@ -295,9 +300,9 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
       frame.water.ior = float(kWaterIor);
     }
     Truth& truth = truths[v.underWater ? 1 : 0];
-    PassRun run;
-    if (!runPass(create, frame, postfx::Pass::ObjectCaustics, target, settings.timedFrames, run,
-                 error))
+    validation::PassRun run;
+    if (!validation::runPass(create, frame, postfx::Pass::ObjectCaustics, target,
+                             settings.timedFrames, run, error))
       return false;
     const postfx::ObjectCausticMap& placement = run.objectMapPlacement;
     if (run.objectMap.empty()) {
@@ -328,7 +333,7 @@ bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReport
       error = "object caustics: the map's axes changed between settings";
       return false;
     }
-    const ErrorStats stats = compareWithReference(
+    const validation::ErrorStats stats = validation::compareWithReference(
         ref::resampleToBins(run.objectMap, placement, truth.bins), truth.irradiance);
 
     // Focus and flux as the accuracy test measures them, on this map's own texels.

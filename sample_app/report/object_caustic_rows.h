@@ -53,7 +53,8 @@ ObjectCausticReportSettings objectCausticSweep(bool quick);
 // then the point and spot lights': the ball lens lit by a point light 2 m away in air and under
 // water, a spot's cone edge cutting its caustic hard and soft); `note` gets the scenes and the
 // reference's convergence. Progress on stderr.
-bool measureObjectCaustics(const ReportTarget& target, const ObjectCausticReportSettings& settings,
-                           std::vector<Row>& rows, std::string& note, std::string& error);
+bool measureObjectCaustics(const validation::ReportTarget& target,
+                           const ObjectCausticReportSettings& settings, std::vector<Row>& rows,
+                           std::string& note, std::string& error);
 
 }  // namespace ocean::report

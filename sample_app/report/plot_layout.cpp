@@ -14,20 +14,35 @@ struct PanelRule {
   std::string title, errorAxis;
   std::function<bool(const Row&)> takes;
   std::function<double(const Row&)> error;
+  // Rows this panel answers for without plotting them (other sizes of the same comparison,
+  // which the table lists); they get no panel of their own.
+  std::function<bool(const Row&)> claims = [](const Row&) { return false; };
 };
 
 bool onSlope(const Row& row) {
   return row.method.find("on a slope") != std::string::npos;
 }
 
-std::vector<PanelRule> panelRules() {
+bool onFlatSeabed(const Row& row) {
+  return row.pass == "caustics" && !onSlope(row);
+}
+
+std::vector<PanelRule> panelRules(const std::vector<Row>& rows) {
+  // The flat seabed is measured at several sizes; the plot shows the largest (1280x720 in a
+  // full run: the pattern's error where it is finest).
+  int width = 0, height = 0;
+  for (const Row& r : rows)
+    if (onFlatSeabed(r) && r.width > width) width = r.width, height = r.height;
+  const std::string flatTitle = width > 0
+                                    ? "seabed caustics (flat seabed, " + std::to_string(width) +
+                                          "x" + std::to_string(height) + ")"
+                                    : "seabed caustics (flat seabed)";
   // The seabed's ray-deviation factor has no absolute scale: every seabed model is compared
   // after its best affine fit, so the panel has one definition for all of them.
   const std::string pattern = "relative RMSE after the best fit a x + b, against traced light";
   return {
-      {"seabed caustics (flat seabed)", pattern,
-       [](const Row& r) { return r.pass == "caustics" && !onSlope(r); },
-       [](const Row& r) { return r.affineRmse; }},
+      {flatTitle, pattern, [width](const Row& r) { return onFlatSeabed(r) && r.width == width; },
+       [](const Row& r) { return r.affineRmse; }, [](const Row& r) { return onFlatSeabed(r); }},
       {"seabed caustics on slopes", pattern,
        [](const Row& r) { return r.pass == "caustics" && onSlope(r); },
        [](const Row& r) { return r.affineRmse; }},
@@ -110,10 +125,11 @@ std::vector<const PlotPoint*> PlotPanel::paretoFront() const {
 
 bool layoutErrorPlot(const std::string& title, const std::vector<Row>& rows, PlotLayout& layout,
                      std::string& error) {
-  std::vector<PanelRule> rules = panelRules();
+  std::vector<PanelRule> rules = panelRules(rows);
   std::vector<bool> claimed(rows.size(), false);
   for (size_t i = 0; i < rows.size(); ++i)
-    for (const PanelRule& rule : rules) claimed[i] = claimed[i] || rule.takes(rows[i]);
+    for (const PanelRule& rule : rules)
+      claimed[i] = claimed[i] || rule.takes(rows[i]) || rule.claims(rows[i]);
   for (size_t i = 0; i < rows.size(); ++i) {
     if (claimed[i]) continue;
     const std::string pass = rows[i].pass;

@@ -20,18 +20,26 @@ std::string number(double value, int digits, int decimals = -1) {
   return text;
 }
 
+// "1280x720", or the report's timed size where the row names none.
+std::string size(const Row& row, int width, int height) {
+  const int w = row.width > 0 ? row.width : width, h = row.width > 0 ? row.height : height;
+  return w > 0 ? std::to_string(w) + "x" + std::to_string(h) : "";
+}
+
 }  // namespace
 
-bool writeCsv(const std::string& path, const std::vector<Row>& rows, std::string& error) {
+bool writeCsv(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
+              std::string& error) {
   std::ostringstream out;
-  out << "pass,method,setting,median_ms,floor_ms,floor_ratio,relative_rmse,affine_rmse,"
-         "correlation,note\n";
+  out << "pass,method,setting,size,median_ms,floor_ms,floor_ratio,relative_rmse,affine_rmse,"
+         "correlation,contrast,reference_contrast,note\n";
   for (const Row& row : rows) {
     out << csvField(row.pass) << ',' << csvField(row.method) << ',' << csvField(row.setting) << ','
-        << number(row.medianMs, 6) << ',' << number(row.floorMs, 6) << ','
-        << number(row.floorRatio(), 4) << ',' << number(row.relativeRmse, 5) << ','
-        << number(row.affineRmse, 5) << ',' << number(row.correlation, 5) << ','
-        << csvField(row.note) << '\n';
+        << size(row, info.width, info.height) << ',' << number(row.medianMs, 6) << ','
+        << number(row.floorMs, 6) << ',' << number(row.floorRatio(), 4) << ','
+        << number(row.relativeRmse, 5) << ',' << number(row.affineRmse, 5) << ','
+        << number(row.correlation, 5) << ',' << number(row.contrast, 4) << ','
+        << number(row.referenceContrast, 4) << ',' << csvField(row.note) << '\n';
   }
   return writeText(path, out.str(), error);
 }
@@ -46,14 +54,19 @@ bool writeMarkdown(const std::string& path, const ReportInfo& info, const std::v
       << (info.quick ? "; quick run" : "") << ".\n\n"
       << info.referenceNote << "\n\n";
   if (!plotFile.empty()) out << "![error against run time](" << plotFile << ")\n\n";
-  out << "| pass | method | setting | median ms | floor ratio | relative RMSE | RMSE after "
-         "affine fit | correlation | note |\n"
-      << "|---|---|---|---:|---:|---:|---:|---:|---|\n";
+  out << "| pass | method | setting | size | median ms | floor ratio | relative RMSE | RMSE after "
+         "affine fit | correlation | contrast / reference's | note |\n"
+      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---|\n";
   for (const Row& row : rows) {
+    const std::string contrast =
+        row.contrast == row.contrast
+            ? number(row.contrast, 0, 3) + " / " + number(row.referenceContrast, 0, 3)
+            : "";
     out << "| " << row.pass << " | " << row.method << " | " << row.setting << " | "
-        << number(row.medianMs, 0, 3) << " | " << number(row.floorRatio(), 0, 2) << " | "
-        << number(row.relativeRmse, 0, 4) << " | " << number(row.affineRmse, 0, 4) << " | "
-        << number(row.correlation, 0, 3) << " | " << row.note << " |\n";
+        << size(row, info.width, info.height) << " | " << number(row.medianMs, 0, 3) << " | "
+        << number(row.floorRatio(), 0, 2) << " | " << number(row.relativeRmse, 0, 4) << " | "
+        << number(row.affineRmse, 0, 4) << " | " << number(row.correlation, 0, 3) << " | "
+        << contrast << " | " << row.note << " |\n";
   }
   return writeText(path, out.str(), error);
 }

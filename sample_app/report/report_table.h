@@ -20,6 +20,11 @@ struct Row {
   double affineRmse = kNotApplicable;    // the same after the best fit a x + b (methods whose
                                          // output has no absolute scale, e.g. seed-002's omega)
   double correlation = kNotApplicable;   // Pearson correlation with the reference
+  // Pattern contrast (std / mean over the compared bins) of the pass and of the reference; set
+  // where the compared value is itself a pattern (the flat seabed's light relative to flat water).
+  double contrast = kNotApplicable, referenceContrast = kNotApplicable;
+  // The view the row was measured at (pixels); 0 x 0: the report's timed size (ReportInfo).
+  int width = 0, height = 0;
   std::string note;
 
   double floorRatio() const { return floorMs > 0.0 ? medianMs / floorMs : kNotApplicable; }
@@ -34,7 +39,8 @@ struct ReportInfo {
   std::string referenceNote;  // how the references were computed and how converged they are
 };
 
-bool writeCsv(const std::string& path, const std::vector<Row>& rows, std::string& error);
+bool writeCsv(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
+              std::string& error);
 bool writeMarkdown(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
                    const std::string& plotFile, std::string& error);
 

@@ -1,79 +1,20 @@
 #pragma once
-// Seabed caustics on sloped receivers: the plugin's two water lookups (the default, along the
-// refracted light to where the light entered the water, and Feature::TriplanarWalls, seed 002's
-// world-axis projections for steep surfaces) against converged CPU light tracing onto the same
-// tilted plane (sloped_plane.h), through the same water texture the GPU read.
-//
-// The sun keeps the host frame's elevation but is turned to the +x azimuth, so that the planes,
-// tilted about the world z axis, face it (facing +1) or turn away from it (-1). Both lookups run
-// the seed-002 coefficient at the frame's defaults; omega has no absolute scale, so the error is
-// the relative RMSE after the best affine fit (ErrorStats::affineRmse), the metric of the flat
-// seed-002 rows, over bins of binPixels^2 pixels.
-#include <cstdint>
+// The report's rows for seabed caustics on sloped receivers (slope_comparison.h): both water
+// lookups per slope, and the physical model as the comparison's own check.
 #include <string>
 #include <vector>
 
 #include <postfx/postfx.h>
+#include <slope_comparison.h>
 
-#include "error_metrics.h"
-#include "pass_runner.h"
 #include "report_table.h"
 
 namespace ocean::report {
 
-struct SlopeSettings {
-  int width = 160, height = 96;  // of the view; multiples of binPixels
-  int binPixels = 8;
-  double receiverDepth = 6.5;  // m below the level at the image centre
-  double viewDistance = 4.0;   // m from the plane, along its normal
-  double referenceError = 0.02;
-  std::uint64_t maxRays = 400'000'000;
-  int timedFrames = 16;
-  bool progress = true;  // stderr
-  // The seed-002 settings both lookups run (surfaceFadeDepth is forced to 0: the reference has
-  // no fade).
-  postfx::CausticsSettings caustics;
-  // > 0: also run the WavefrontAreaRatio model at this grid resolution, with its window over
-  // the whole view. Inside its window it uses neither lookup, so it checks the comparison
-  // itself (plane, bins, units): a model that follows the traced pattern on flat floors must
-  // follow it on the slopes too.
-  int physicalGrid = 0;
-};
-
-struct SlopeLookup {
-  PassRun run;
-  std::vector<double> binned;  // raw / (L.y n.y) per bin: the reference's units
-  ErrorStats stats;
-};
-
-struct SlopeCase {
-  double slopeDegrees = 0.0;
-  int facing = 1;
-  double normalDotLight = 1.0;  // n.L with the refracted flat-water sun
-  double flatWater = 1.0;       // the bins' value under flat water, n.L / (L.y n.y)
-  std::vector<double> reference, referenceSigma;  // per bin; sigma: stated standard error
-  double referenceMedianError = 0.0;
-  bool referenceConverged = false;
-  std::uint64_t referenceRays = 0;
-  // sqrt(sum sigma^2 / sum r^2): the most the reference's noise can move a relative RMSE.
-  double referenceNoise = 0.0;
-  ErrorStats uniform;  // drawing no pattern (constant light)
-  SlopeLookup alongLight, triplanar;
-  SlopeLookup physical;  // run when SlopeSettings::physicalGrid > 0
-  // Standard deviation, from the reference's noise, of triplanar's affine error minus
-  // alongLight's (affineRmseDifferenceNoise).
-  double differenceNoise = 0.0;
-};
-
-// One slope angle, one case per entry of `facings` (one reference trace serves them all: their
-// bins coincide).
-bool measureSlope(const postfx::FrameDesc& hostFrame, const SlopeSettings& settings,
-                  double slopeDegrees, const std::vector<int>& facings,
-                  std::vector<SlopeCase>& cases, std::string& error);
-
 // Report rows for every slope in `slopes` (degrees; slope 0 once, the others facing toward and
 // away from the sun), both lookups each.
-bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame, const SlopeSettings& settings,
+bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame,
+                           const validation::SlopeSettings& settings,
                            const std::vector<double>& slopes, std::vector<Row>& rows,
                            std::string& note, std::string& error);
 

@@ -14,8 +14,8 @@
 #include <cstdio>
 #include <vector>
 
-#include <caustic_rows.h>
 #include <error_metrics.h>
+#include <flat_seabed_comparison.h>
 
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"
@@ -97,25 +97,25 @@ TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
     frame.water.cascadeCount = 1;
     frame.water.tileSize[0] = tile;
     postfxtest::flatSeabedView(frame, c.elevation);
-    ocean::report::CausticReportSettings settings;
+    ocean::validation::FlatSeabedSettings settings;
     settings.width = 128;
     settings.height = 96;
     settings.binPixels = 4;
     settings.referenceError = 0.05;
     settings.receiverDepth = c.depth;
-    ocean::report::FlatSeabedComparison seabed;
+    ocean::validation::FlatSeabedComparison seabed;
     std::string error;
     ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;
     ASSERT_TRUE(seabed.reference().converged);
     postfx::CreateDesc create;
-    ocean::report::PassRun run;
+    ocean::validation::PassRun run;
     for (int resolution : {128, 512}) {
       std::vector<double> tileLight;
       postfx::CausticsSettings caustics;  // the default: TileIrradiance
       caustics.tileResolution = resolution;
       ASSERT_TRUE(seabed.run(create, caustics, 1, run, tileLight, error)) << error;
-      const ocean::report::ErrorStats s =
-          ocean::report::compareWithReference(tileLight, seabed.truth());
+      const ocean::validation::ErrorStats s =
+          ocean::validation::compareWithReference(tileLight, seabed.truth());
       const double meanRatio = postfxtest::mean(tileLight) / postfxtest::mean(seabed.truth());
       auto contrast = [](const std::vector<double>& v) {
         const double m = postfxtest::mean(v);

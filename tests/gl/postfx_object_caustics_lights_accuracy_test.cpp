@@ -18,8 +18,8 @@
 namespace {
 
 namespace ref = ocean::reference;
-using ocean::report::LightCausticRun;
-using ocean::report::LightCausticScene;
+using ocean::validation::LightCausticRun;
+using ocean::validation::LightCausticScene;
 
 class PostfxObjectCausticsLightsAccuracyTest : public testsupport::GlTest {};
 
@@ -34,9 +34,9 @@ Comparison compare(const LightCausticScene& scene, const postfx::ObjectCausticsS
                    int rays, const char* name) {
   LightCausticRun run;
   std::string error;
-  EXPECT_TRUE(ocean::report::runLightCaustic(scene, settings, 0, run, error)) << error;
+  EXPECT_TRUE(ocean::validation::runLightCaustic(scene, settings, 0, run, error)) << error;
   EXPECT_EQ(run.skip, postfx::LightSkip::None) << name;
-  const ref::ReceiverBins bins = ocean::report::sceneBins(scene);
+  const ref::ReceiverBins bins = ocean::validation::sceneBins(scene);
   const glm::dvec3 water = scene.underWater ? scene.waterAbsorption : glm::dvec3(0.0);
   const ref::LocalCausticReference traced =
       ref::traceSphereFromLight(scene.sphere, scene.light, bins, water, rays);
@@ -74,10 +74,10 @@ postfx::ObjectCausticsSettings fineSettings() {
   return s;
 }
 
-// The ball lens lit by a point light 2 m away (ocean::report::pointLightBallLens): the traced
+// The ball lens lit by a point light 2 m away (ocean::validation::pointLightBallLens): the traced
 // light peaks where the axis meets the floor.
 TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracingInAir) {
-  const LightCausticScene scene = ocean::report::pointLightBallLens(false);
+  const LightCausticScene scene = ocean::validation::pointLightBallLens(false);
   const Comparison c = compare(scene, fineSettings(), 1500, "point light 2 m, air");
   const double radius = scene.sphere.radius;
   const double toFocus = glm::length(scene.light.position - scene.binCentre);
@@ -90,7 +90,7 @@ TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracin
 
 TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracingUnderWater) {
   // The same ball under water: relative IOR 1.5 / 1.333, the water absorbing along both legs.
-  const LightCausticScene scene = ocean::report::pointLightBallLens(true);
+  const LightCausticScene scene = ocean::validation::pointLightBallLens(true);
   const Comparison c = compare(scene, fineSettings(), 1500, "point light 2 m, under water");
   EXPECT_LT(c.focusError, 0.02 * scene.sphere.radius);
   for (int ch = 0; ch < 3; ++ch) EXPECT_LT(std::abs(c.fluxError[ch]), 0.05) << "channel " << ch;
@@ -126,10 +126,10 @@ TEST_F(PostfxObjectCausticsLightsAccuracyTest, InverseSquareOverOneToTenMetres) 
 }
 
 TEST_F(PostfxObjectCausticsLightsAccuracyTest, SpotConeEdgeCutsTheCausticWhereTracingDoes) {
-  // ocean::report::spotConeCut: the cone's edge cuts the ball's caustic in half. Where the cut
+  // ocean::validation::spotConeCut: the cone's edge cuts the ball's caustic in half. Where the cut
   // lies moves the caustic's flux and centroid; softness 0.5 moves the cut.
   for (double softness : {0.0, 0.5}) {
-    const LightCausticScene scene = ocean::report::spotConeCut(softness);
+    const LightCausticScene scene = ocean::validation::spotConeCut(softness);
     char name[64];
     std::snprintf(name, sizeof(name), "spot cone edge, softness %.1f", softness);
     const Comparison c = compare(scene, fineSettings(), 1200, name);

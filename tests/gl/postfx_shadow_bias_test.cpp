@@ -13,7 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <flat_gbuffer.h>
+#include <plane_gbuffer.h>
 #include <postfx/postfx.h>
 #include <postfx/testing.h>
 
@@ -133,9 +133,9 @@ TEST_F(PostfxShadowBiasTest, SelfShadowingPlanesKeepTheirLight) {
     const glm::dvec3 toLight =  // the refracted sun, as the header asks of the map
         -glm::refract(-toSun, glm::dvec3(0.0, 1.0, 0.0), 1.0 / 1.333);
     const glm::dvec3 imageUp = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), n));
-    const ocean::report::PlaneView view =
-        ocean::report::planeView(kSize, kSize, kDistance, n, imageUp);
-    ocean::report::PlaneGbuffer gbuffer(kSize, kSize, view.windowDepth, glm::vec3(n));
+    const ocean::validation::PlaneView view =
+        ocean::validation::planeView(kSize, kSize, kDistance, n, imageUp);
+    ocean::validation::PlaneGbuffer gbuffer(kSize, kSize, view.windowDepth, glm::vec3(n));
     Gl target;
     glCreateTextures(GL_TEXTURE_2D, 1, &target.texture);
     glTextureStorage2D(target.texture, 1, GL_RGBA32F, kSize, kSize);

@@ -1,8 +1,8 @@
 // The caustics' two water lookups on sloped receivers against converged light tracing onto the
-// same tilted plane (sample_app/report/slope_rows.h, the code the report's rows run), through a
-// real 3-cascade FFT sea read back from GL. Asserted: at slope 0 the default lookup (along the
-// refracted light, to where the light entered the water) and seed 002's world-axis tri-planar
-// one (Feature::TriplanarWalls) give the same raw output; on 45 and 60 degree slopes the
+// same tilted plane (sample_app/validation/slope_comparison.h, the code the report's rows run),
+// through a real 3-cascade FFT sea read back from GL. Asserted: at slope 0 the default lookup
+// (along the refracted light, to where the light entered the water) and seed 002's world-axis
+// tri-planar one (Feature::TriplanarWalls) give the same raw output; on 45 and 60 degree slopes the
 // comparison itself is sound (the physical model, which uses neither lookup, follows the traced
 // pattern). Printed: both lookups' errors against the traced pattern on those slopes.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <slope_rows.h>
+#include <slope_comparison.h>
 
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"
@@ -22,8 +22,8 @@ namespace {
 
 class PostfxSlopeLookupTest : public testsupport::GlTest {};
 
-ocean::report::SlopeSettings smallSettings() {
-  ocean::report::SlopeSettings s;
+ocean::validation::SlopeSettings smallSettings() {
+  ocean::validation::SlopeSettings s;
   s.width = 96;
   s.height = 96;
   s.binPixels = 8;          // 12 x 12 bins of 0.38 m on the plane, 4 m from the camera
@@ -41,7 +41,7 @@ postfx::FrameDesc seaFrame(const postfx::water::Ocean& ocean) {
   return frame;
 }
 
-void printCase(const ocean::report::SlopeCase& c) {
+void printCase(const ocean::validation::SlopeCase& c) {
   std::printf(
       "slope %2.0f facing %+d: n.L %.3f, reference %.3g rays, median error %.2f %%, noise %.4f; "
       "affine RMSE: along the light %.4f (corr %.3f), tri-planar %.4f (corr %.3f), no pattern "
@@ -57,7 +57,7 @@ TEST_F(PostfxSlopeLookupTest, SlopedReceiversAgainstTheTracedPattern) {
   auto ocean = postfxtest::makeSmallOcean(3.0);
   ASSERT_TRUE(ocean);
   const postfx::FrameDesc frame = seaFrame(*ocean);
-  const ocean::report::SlopeSettings settings = smallSettings();
+  const ocean::validation::SlopeSettings settings = smallSettings();
   std::string error;
 
   // Slope 0: the normal is exactly (0, 1, 0) (1 and 0 are exact in half floats), so the
@@ -66,8 +66,8 @@ TEST_F(PostfxSlopeLookupTest, SlopedReceiversAgainstTheTracedPattern) {
   // of the misalignment a, which omega = exp(-tau a^2) turns into at most
   // max_a(2 tau a exp(-tau a^2)) da = sqrt(2 tau / e) da = 24 da ~ 2.4e-6 at tau 800: 1e-5.
   // Measured: identical.
-  std::vector<ocean::report::SlopeCase> flat;
-  ASSERT_TRUE(ocean::report::measureSlope(frame, settings, 0.0, {1}, flat, error)) << error;
+  std::vector<ocean::validation::SlopeCase> flat;
+  ASSERT_TRUE(ocean::validation::measureSlope(frame, settings, 0.0, {1}, flat, error)) << error;
   printCase(flat[0]);
   const std::vector<float>& a = flat[0].alongLight.run.raw;
   const std::vector<float>& b = flat[0].triplanar.run.raw;
@@ -82,10 +82,10 @@ TEST_F(PostfxSlopeLookupTest, SlopedReceiversAgainstTheTracedPattern) {
   EXPECT_LE(maxDiff, 1e-5);
 
   for (double slope : {45.0, 60.0}) {
-    std::vector<ocean::report::SlopeCase> cases;
-    ASSERT_TRUE(ocean::report::measureSlope(frame, settings, slope, {1, -1}, cases, error))
+    std::vector<ocean::validation::SlopeCase> cases;
+    ASSERT_TRUE(ocean::validation::measureSlope(frame, settings, slope, {1, -1}, cases, error))
         << error;
-    for (const ocean::report::SlopeCase& c : cases) {
+    for (const ocean::validation::SlopeCase& c : cases) {
       printCase(c);
       // The comparison itself (tilted plane, bins, units): the physical model reads neither
       // lookup inside its window, and on flat floors stays within 0.3 (on a layer) to 0.5

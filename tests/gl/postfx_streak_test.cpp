@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <caustic_rows.h>
 #include <error_metrics.h>
+#include <flat_seabed_comparison.h>
 
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"
@@ -25,26 +25,26 @@ class PostfxStreakTest : public testsupport::GlTest {};
 TEST_F(PostfxStreakTest, HighSunPatternIsNoMoreStreakedThanTracedLight) {
   auto ocean = postfxtest::makeSmallOcean(3.0);
   ASSERT_TRUE(ocean);
-  ocean::report::CausticReportSettings settings;
+  ocean::validation::FlatSeabedSettings settings;
   settings.width = 128;
   settings.height = 96;
   settings.binPixels = 4;  // 32 x 24 bins of ~0.18 m
   settings.referenceError = 0.03;
   for (double elevation : {85.0, 70.0}) {
     const postfx::FrameDesc frame = postfxtest::flatSeabedFrame(*ocean, elevation);
-    ocean::report::FlatSeabedComparison seabed;
+    ocean::validation::FlatSeabedComparison seabed;
     std::string error;
     ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;
     ASSERT_TRUE(seabed.reference().converged);
     const double traced = seabed.streakRatio(seabed.truth());
 
     postfx::CreateDesc create;
-    ocean::report::PassRun run;
+    ocean::validation::PassRun run;
     std::vector<double> binned;
     ASSERT_TRUE(seabed.run(create, postfx::CausticsSettings{}, 1, run, binned, error)) << error;
     const double plugin = seabed.streakRatio(binned);
-    const ocean::report::ErrorStats stats =
-        ocean::report::compareWithReference(binned, seabed.truth());
+    const ocean::validation::ErrorStats stats =
+        ocean::validation::compareWithReference(binned, seabed.truth());
     std::printf("sun %.0f deg: streak ratio ray deviation %.2f, traced %.2f; correlation %.3f\n",
                 elevation, plugin, traced, stats.correlation);
     EXPECT_GT(traced, 0.5) << "the trace has a pattern in both directions";

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <caustic_rows.h>
 #include <error_metrics.h>
+#include <flat_seabed_comparison.h>
 
 #include "frame_constants.h"
 #include "gl_fixture.h"
@@ -107,29 +107,30 @@ TEST_F(PostfxTileIrradianceTest, AgreesWithTracedLightOnAFlatSeabed) {
   auto ocean = postfxtest::makeSmallOcean(3.0);
   ASSERT_TRUE(ocean);
   for (double depth : {3.0, 12.0}) {
-    ocean::report::CausticReportSettings settings;
+    ocean::validation::FlatSeabedSettings settings;
     settings.width = 128;
     settings.height = 96;
     settings.binPixels = 4;
     settings.referenceError = 0.05;
     settings.receiverDepth = depth;
     const postfx::FrameDesc frame = postfxtest::flatSeabedFrame(*ocean, 60.0);
-    ocean::report::FlatSeabedComparison seabed;
+    ocean::validation::FlatSeabedComparison seabed;
     std::string error;
     ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;
     ASSERT_TRUE(seabed.reference().converged);
 
     postfx::CreateDesc create;
-    ocean::report::PassRun run;
+    ocean::validation::PassRun run;
     std::vector<double> tile, deviation;
     postfx::CausticsSettings caustics;
     caustics.model = postfx::CausticsModel::TileIrradiance;
     ASSERT_TRUE(seabed.run(create, caustics, 1, run, tile, error)) << error;
     caustics.model = postfx::CausticsModel::RayDeviation;
     ASSERT_TRUE(seabed.run(create, caustics, 1, run, deviation, error)) << error;
-    const ocean::report::ErrorStats t = ocean::report::compareWithReference(tile, seabed.truth());
-    const ocean::report::ErrorStats d =
-        ocean::report::compareWithReference(deviation, seabed.truth());
+    const ocean::validation::ErrorStats t =
+        ocean::validation::compareWithReference(tile, seabed.truth());
+    const ocean::validation::ErrorStats d =
+        ocean::validation::compareWithReference(deviation, seabed.truth());
     const double meanRatio = postfxtest::mean(tile) / postfxtest::mean(seabed.truth());
     std::printf(
         "%.1f m: tile irradiance correlation %.3f, relative RMSE %.3f, mean / traced %.4f; "

@@ -7,10 +7,13 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include <error_plot.h>
 #include <gnuplot_plot.h>
 #include <plot_layout.h>
+#include <report_table.h>
 
 namespace {
 
@@ -70,6 +73,30 @@ TEST(ReportPlot, OnePanelPerEffectWithOneErrorDefinition) {
     EXPECT_LE(panel.legendX + 300, layout.width) << panel.title;
     EXPECT_LE(panel.top + panel.height, layout.height);
   }
+}
+
+// The flat seabed is measured at 320x180, 640x360 and 1280x720: the panel plots the largest
+// size's pattern error only, and the smaller sizes (in the table) get no panel of their own.
+TEST(ReportPlot, FlatSeabedPanelPlotsTheLargestSize) {
+  std::vector<Row> rows;
+  for (const int width : {320, 1280, 640}) {
+    Row r = row("caustics", "tile irradiance", "tiles 128", 1.0 + width / 320.0, 0.2,
+                0.1 + width / 1.0e4);
+    r.width = width;
+    r.height = width * 9 / 16;
+    rows.push_back(r);
+  }
+  rows.push_back(row("caustics", "ray deviation on a slope, along the light", "slope 30", 0.8,
+                     ocean::report::kNotApplicable, 0.7));
+  ocean::report::PlotLayout layout;
+  std::string error;
+  ASSERT_TRUE(ocean::report::layoutErrorPlot("t", rows, layout, error)) << error;
+  ASSERT_EQ(layout.panels.size(), 2u) << "no panel for the smaller sizes";
+  EXPECT_EQ(layout.panels[0].title, "seabed caustics (flat seabed, 1280x720)");
+  ASSERT_EQ(layout.panels[0].series.size(), 1u);
+  ASSERT_EQ(layout.panels[0].series[0].points.size(), 1u);
+  EXPECT_DOUBLE_EQ(layout.panels[0].series[0].points[0].error, 0.1 + 1280 / 1.0e4);
+  EXPECT_EQ(layout.panels[1].title, "seabed caustics on slopes");
 }
 
 TEST(ReportPlot, ParetoFrontIsThePointsNothingBeats) {
@@ -160,6 +187,34 @@ class ReportPlotFile : public ::testing::Test {
 
 TEST_F(ReportPlotFile, BuiltInDrawingWritesThePng) {
   expectPlot(ocean::report::PlotBackend::BuiltIn, "built-in");
+}
+
+// The table names each row's size (the report's timed size where a row has none) and the
+// pattern contrast of both sides where the row has one.
+TEST_F(ReportPlotFile, TableNamesEachRowsSizeAndContrast) {
+  std::vector<Row> rows = {row("god_rays", "god rays", "16 samples", 1.0, 0.2, 0.1),
+                           row("caustics", "tile irradiance", "tiles 128", 2.0, 0.25, 0.2)};
+  rows[1].width = 1280;
+  rows[1].height = 720;
+  rows[1].contrast = 0.48;
+  rows[1].referenceContrast = 0.55;
+  ocean::report::ReportInfo info;
+  info.width = 320;
+  info.height = 180;
+  std::string error;
+  const fs::path csv = dir_ / "t.csv", md = dir_ / "t.md";
+  ASSERT_TRUE(ocean::report::writeCsv(csv.string(), info, rows, error)) << error;
+  ASSERT_TRUE(ocean::report::writeMarkdown(md.string(), info, rows, "", error)) << error;
+  auto read = [](const fs::path& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string csvText = read(csv), mdText = read(md);
+  EXPECT_NE(csvText.find("god rays,16 samples,320x180,"), std::string::npos) << csvText;
+  EXPECT_NE(csvText.find("tiles 128,1280x720,"), std::string::npos) << csvText;
+  EXPECT_NE(csvText.find(",0.48,0.55,"), std::string::npos) << csvText;
+  EXPECT_NE(mdText.find("| 1280x720 |"), std::string::npos) << mdText;
+  EXPECT_NE(mdText.find("| 0.480 / 0.550 |"), std::string::npos) << mdText;
 }
 
 TEST_F(ReportPlotFile, GnuplotDrawsWhenInstalled) {

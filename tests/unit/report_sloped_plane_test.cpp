@@ -1,5 +1,5 @@
-// The sloped receiver of the report's slope rows (sample_app/report/sloped_plane.h) on cases with
-// known answers: every pixel's world point, found by intersecting its view ray with the plane,
+// The sloped receiver of the report's slope rows (sample_app/validation/sloped_plane.h) on cases
+// with known answers: every pixel's world point, found by intersecting its view ray with the plane,
 // lies in the horizontal bin its block is averaged into; and under flat water the seabed
 // reference traced onto the plane's clamped height field gives the flat-water flux per unit
 // horizontal area, n.L / (L.y n.y), in every bin.
@@ -23,8 +23,8 @@ class FlatWater final : public ocean::reference::Surface {
   double featureSize() const override { return 1.0; }
 };
 
-ocean::report::SlopedPlane makePlane(double slope, int facing) {
-  ocean::report::SlopedPlaneDesc d;
+ocean::validation::SlopedPlane makePlane(double slope, int facing) {
+  ocean::validation::SlopedPlaneDesc d;
   d.width = 48;
   d.height = 32;
   d.binPixels = 4;
@@ -32,13 +32,13 @@ ocean::report::SlopedPlane makePlane(double slope, int facing) {
   d.facing = facing;
   d.centre = {3.0, -6.5, -2.0};
   d.viewDistance = 4.0;
-  return ocean::report::slopedPlane(d, 0.0);
+  return ocean::validation::slopedPlane(d, 0.0);
 }
 
 TEST(SlopedPlane, PixelsFillTheirBins) {
   for (double slope : {0.0, 30.0, 60.0}) {
     for (int facing : {1, -1}) {
-      const ocean::report::SlopedPlane plane = makePlane(slope, facing);
+      const ocean::validation::SlopedPlane plane = makePlane(slope, facing);
       const int w = plane.desc.width, h = plane.desc.height, b = plane.desc.binPixels;
       const glm::dmat3 viewToWorld = glm::transpose(glm::dmat3(plane.view.view));
       const glm::dvec3 centre = plane.desc.centre;
@@ -74,7 +74,7 @@ TEST(SlopedPlane, FlatWaterFluxPerHorizontalArea) {
   const glm::dvec3 towardLight = -ocean::reference::refractSunRay(desc.towardSun, 0, 0, desc.ior);
   for (double slope : {0.0, 45.0, 60.0}) {
     for (int facing : {1, -1}) {
-      const ocean::report::SlopedPlane plane = makePlane(slope, facing);
+      const ocean::validation::SlopedPlane plane = makePlane(slope, facing);
       desc.bins = plane.bins;
       desc.receivers = {plane.receiver(0.0)};
       const ocean::reference::ReferenceResult r =

@@ -2,7 +2,7 @@
 // How far a pass's output is from its reference, over the pixels both define.
 #include <vector>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 struct ErrorStats {
   double relativeRmse = 0.0;  // sqrt(sum (x - r)^2 / sum r^2)
@@ -29,4 +29,4 @@ double affineRmseDifferenceNoise(const std::vector<double>& a, const ErrorStats&
                                  const std::vector<double>& reference,
                                  const std::vector<double>& sigma);
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

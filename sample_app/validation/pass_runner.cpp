@@ -2,9 +2,8 @@
 #include <postfx/testing.h>
 
 #include <object_caustics_metrics.h>
-#include <plugin_setup.h>
 
-namespace ocean::report {
+namespace ocean::validation {
 namespace {
 
 constexpr int kWarmupFrames = 4;
@@ -65,4 +64,4 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pa
   return ok;
 }
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

@@ -1,11 +1,11 @@
-#include "flat_gbuffer.h"
+#include "plane_gbuffer.h"
 
 #include <cmath>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace ocean::report {
+namespace ocean::validation {
 namespace {
 
 constexpr double kNear = 0.1;
@@ -45,4 +45,4 @@ PlaneGbuffer::PlaneGbuffer(int width, int height, float windowDepth, const glm::
   glClearTexImage(albedo(), 0, GL_RGBA, GL_FLOAT, white);
 }
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

@@ -8,10 +8,10 @@
 
 #include <object_caustics_scene.h>
 
-#include "flat_gbuffer.h"
 #include "pass_runner.h"
+#include "plane_gbuffer.h"
 
-namespace ocean::report {
+namespace ocean::validation {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -196,4 +196,4 @@ bool timeSunCaustic(const LightCausticScene& scene, const postfx::ObjectCaustics
   return true;
 }
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

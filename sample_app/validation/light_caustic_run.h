@@ -13,7 +13,7 @@
 #include <object_caustics_local_light.h>
 #include <postfx/postfx.h>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 struct LightCausticScene {
   reference::SphereCaster sphere;
@@ -30,7 +30,7 @@ struct LightCausticScene {
   int binCount = 256;
 };
 
-// The ball lens of the seeds: R = 0.25 m, IOR 1.5, tinted glass (absorption 0.2, 1, 3 per m),
+// A ball lens: R = 0.25 m, IOR 1.5, tinted glass (absorption 0.2, 1, 3 per m),
 // lit by a point light 2 m from its centre, 30 degrees off the vertical; the floor cuts the
 // axis just short of the paraxial image (f = n R / (2 (n - 1)) from the centre, 1/s + 1/s' =
 // 1/f: s' = 0.4615 m in air), inside the axial caustic, where the light peaks on the axis at the
@@ -62,4 +62,4 @@ bool runLightCaustic(const LightCausticScene& scene, const postfx::ObjectCaustic
 bool timeSunCaustic(const LightCausticScene& scene, const postfx::ObjectCausticsSettings& settings,
                     int timedFrames, double& ms, double& floorMs, std::string& error);
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 // `values`: countX x countZ samples of a regular grid (row-major, x fastest) of binX x binZ m;
 // `towardSun`: world direction (its horizontal part is the azimuth; x for a sun at the zenith).
@@ -16,4 +16,4 @@ namespace ocean::report {
 double streakRatio(const std::vector<double>& values, int countX, int countZ, double binX,
                    double binZ, const glm::dvec3& towardSun);
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

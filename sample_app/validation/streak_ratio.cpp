@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 double streakRatio(const std::vector<double>& values, int countX, int countZ, double binX,
                    double binZ, const glm::dvec3& towardSun) {
@@ -24,4 +24,4 @@ double streakRatio(const std::vector<double>& values, int countX, int countZ, do
   return alongEnergy > 0.0 ? acrossEnergy / alongEnergy : 0.0;
 }
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

@@ -14,7 +14,7 @@
 #include <postfx/testing.h>
 #include <glm/glm.hpp>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 struct PassRun {
   double medianMs = 0.0, floorMs = 0.0;  // of the pass asked for and of the floor
@@ -48,4 +48,4 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pa
              const ReportTarget& target, int timedFrames, PassRun& out, std::string& error,
              postfx::testing::GodRaySampling sampling = postfx::testing::GodRaySampling::WorldGrid);
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

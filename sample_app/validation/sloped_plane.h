@@ -1,5 +1,5 @@
 #pragma once
-// A planar receiver tilted about the world z axis, seen face-on (flat_gbuffer.h), and the
+// A planar receiver tilted about the world z axis, seen face-on (plane_gbuffer.h), and the
 // horizontal bins of the seabed reference that its pixels fill exactly.
 //
 // The plane: depth below the level = centreDepth + facing * tan(slope) * (x - centre.x), so its
@@ -22,9 +22,9 @@
 #include <seabed_reference.h>
 #include <glm/glm.hpp>
 
-#include "flat_gbuffer.h"
+#include "plane_gbuffer.h"
 
-namespace ocean::report {
+namespace ocean::validation {
 
 struct SlopedPlaneDesc {
   int width = 128, height = 128;      // pixels; multiples of binPixels
@@ -60,4 +60,4 @@ struct SlopedPlane {
 // rises over half the view (checked by the caller through minDepth).
 SlopedPlane slopedPlane(const SlopedPlaneDesc& desc, double level);
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

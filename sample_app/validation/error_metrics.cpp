@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 ErrorStats compareWithReference(const std::vector<double>& value,
                                 const std::vector<double>& reference,
@@ -60,4 +60,4 @@ double affineRmseDifferenceNoise(const std::vector<double>& a, const ErrorStats&
   return std::sqrt(variance);
 }
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

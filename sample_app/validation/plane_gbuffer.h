@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 // The camera at the origin looks along -normal with image up = `imageUp` (orthogonal to the
 // normal), 60 degree vertical field of view, reverse-Z with an infinite far plane (depth
@@ -43,4 +43,4 @@ class PlaneGbuffer {
   glkit::Texture textures_[3];
 };
 
-}  // namespace ocean::report
+}  // namespace ocean::validation

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ocean::report {
+namespace ocean::validation {
 
 SlopedPlane slopedPlane(const SlopedPlaneDesc& desc, double level) {
   SlopedPlane s;
@@ -58,4 +58,4 @@ double SlopedPlane::flatWaterFlux(const glm::dvec3& towardRefractedSun) const {
   return glm::dot(normal, towardRefractedSun) / (towardRefractedSun.y * normal.y);
 }
 
-}  // namespace ocean::report
+}  // namespace ocean::validation
