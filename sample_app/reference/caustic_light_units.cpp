@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "core/shared_math.h"  // the plugin's own attenuation functions (shaders/postfx)
 #include "seabed_reference.h"
-#include "shared_math.h"  // the plugin's own attenuation functions (shaders/shared)
 
 namespace ocean::reference {
 

@@ -1,6 +1,7 @@
 #pragma once
 // The light the plugin's seabed-caustics pass adds to a pixel, in its own units, with its
-// caustic factor replaced by traced irradiance. The plugin (shaders/postfx/caustics.frag) adds
+// caustic factor replaced by traced irradiance. The plugin
+// (shaders/postfx/seabed_caustics/caustics.frag) adds
 //     albedo * E_sun * intensity * exp(-absorption d / u.y) * fade(d) * [omega * (n.u) * vis]
 //     * exp(-sigma_t * submerged view length)   (FrameDesc::viewExtinction Plugin only)
 // for a receiver d metres under the level, u the unperturbed refracted sun reversed, n the
@@ -20,10 +21,10 @@
 namespace ocean::reference {
 
 //
-// The object caustics' composite (shaders/postfx/object_caustics_composite.frag) adds, for the
-// sun, albedo * E_sun * objectIntensity * exp(-absorption d / u.y) * [caustic * (n.u)] * (the
-// same view extinction), no surface fade, caustic the map's irradiance relative to the sun's
-// across the refracted beam: [caustic (n.u)] is again E u.y for traced irradiance E.
+// The object caustics' composite (shaders/postfx/object_caustics/object_caustics_composite.frag)
+// adds, for the sun, albedo * E_sun * objectIntensity * exp(-absorption d / u.y) * [caustic *
+// (n.u)] * (the same view extinction), no surface fade, caustic the map's irradiance relative to
+// the sun's across the refracted beam: [caustic (n.u)] is again E u.y for traced irradiance E.
 struct CausticLightUnits {
   glm::vec3 lightScale{1.0f};          // E_sun * intensity
   glm::vec3 objectLightScale{1.0f};    // E_sun * ObjectCausticsSettings::intensity

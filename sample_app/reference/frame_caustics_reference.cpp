@@ -8,7 +8,7 @@
 
 #include <postfx/water/random.h>
 
-#include "shared_math.h"  // the plugin's own spot cone and submerged length (shaders/shared)
+#include "core/shared_math.h"  // the plugin's own spot cone and submerged length (shaders/postfx)
 
 #include "local_light_launch.h"
 #include "photon_launch_plan.h"

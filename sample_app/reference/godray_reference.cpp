@@ -9,8 +9,8 @@
 namespace ocean::reference {
 namespace {
 
-// Mirrors of the shared shader math (shaders/shared/postfx_caustics.h, postfx_godrays.h) and of
-// postfx/src/frame_constants.cpp, in double.
+// Mirrors of the shared shader math (shaders/postfx/seabed_caustics/postfx_caustics.h,
+// postfx_godrays.h) and of postfx/src/core/frame_constants.cpp, in double.
 constexpr double kMaxSlope = 64.0;
 constexpr double kSkyDistance = 65000.0;  // godrays_common.glsl
 

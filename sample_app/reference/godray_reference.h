@@ -1,5 +1,5 @@
 #pragma once
-// CPU reference of the plugin's god rays: the light model of shaders/postfx/godrays.frag
+// CPU reference of the plugin's god rays: the light model of shaders/postfx/god_rays/godrays.frag
 // integrated densely in double precision along every pixel's view ray,
 //   L = E * intensity * sigma_s * integral_{t0}^{t1} S(t) exp(-sigma_t (t - t0)) dt,
 //   S(t) = rho(depth) * visibility * omega(water normal where the refracted sun entered)

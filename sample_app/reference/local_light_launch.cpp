@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "caster_light_path.h"
-#include "shared_math.h"  // the plugin's own spot cone (shaders/shared)
+#include "core/shared_math.h"  // the plugin's own spot cone (shaders/postfx)
 
 namespace ocean::reference {
 namespace {

@@ -8,11 +8,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "frame_constants.h"
+#include "core/frame_constants.h"
+#include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
-#include "shared_math.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <shared/postfx_object_caustics.h>
+#include <postfx/object_caustics/postfx_object_caustics.h>
 
 #include "gl_fixture.h"
 #include "postfx_object_caustics_lights_util.h"

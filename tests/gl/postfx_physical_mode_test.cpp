@@ -10,14 +10,14 @@
 #include <cstdio>
 #include <limits>
 
-#include "frame_constants.h"
+#include "core/frame_constants.h"
+#include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
 #include "postfx_host_state.h"
 #include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
-#include "shared_math.h"
 
 namespace {
 

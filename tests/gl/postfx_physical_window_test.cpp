@@ -9,16 +9,16 @@
 #include <cstdio>
 #include <vector>
 
-#include "context.h"
-#include "frame_constants.h"
-#include "frame_plan.h"
+#include "core/context.h"
+#include "core/frame_constants.h"
+#include "core/frame_plan.h"
+#include "core/gl_sizes.h"
+#include "core/memory_estimate.h"
+#include "core/shared_math.h"
 #include "gl_fixture.h"
-#include "gl_sizes.h"
-#include "memory_estimate.h"
 #include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
-#include "shared_math.h"
 
 namespace {
 

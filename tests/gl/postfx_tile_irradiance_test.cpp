@@ -12,12 +12,12 @@
 #include <error_metrics.h>
 #include <flat_seabed_comparison.h>
 
-#include "frame_constants.h"
+#include "core/frame_constants.h"
+#include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
-#include "shared_math.h"
 
 namespace {
 

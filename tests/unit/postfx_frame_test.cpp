@@ -7,10 +7,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "frame_constants.h"
-#include "shadow_light.h"
-#include "validation.h"
-#include "visibility.h"
+#include "core/frame_constants.h"
+#include "core/shadow_light.h"
+#include "core/validation.h"
+#include "core/visibility.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The god-ray march math (shaders/shared/postfx_godrays.h) and the CPU grid snapping
+// The god-ray march math (shaders/postfx/god_rays/postfx_godrays.h) and the CPU grid snapping
 // (godrays_constants), evaluated on the CPU exactly as the shader does.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "godrays_constants.h"
-#include "shared_math.h"
+#include "core/shared_math.h"
+#include "god_rays/godrays_constants.h"
 
 namespace {
 

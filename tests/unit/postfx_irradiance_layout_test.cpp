@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "frame_constants.h"
-#include "irradiance_layout.h"
+#include "core/frame_constants.h"
+#include "seabed_caustics/irradiance_layout.h"
 
 namespace {
 

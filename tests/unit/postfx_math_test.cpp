@@ -1,4 +1,5 @@
-// The shader's caustic math (shaders/shared/postfx_caustics.h) evaluated on the CPU.
+// The shader's caustic math (shaders/postfx/seabed_caustics/postfx_caustics.h) evaluated on the
+// CPU.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,8 +7,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "frame_constants.h"
-#include "shared_math.h"
+#include "core/frame_constants.h"
+#include "core/shared_math.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "object_caustics_frame.h"
+#include "object_caustics/object_caustics_frame.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "object_caustics_light_frame.h"
+#include "object_caustics/object_caustics_light_frame.h"
 
 namespace {
 

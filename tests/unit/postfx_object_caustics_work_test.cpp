@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "object_caustics_work.h"
+#include "object_caustics/object_caustics_work.h"
 
 namespace {
 

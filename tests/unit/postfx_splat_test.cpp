@@ -1,13 +1,13 @@
-// The object caustics' splat shape (shaders/shared/postfx_object_caustics.h) on the CPU: each
-// ray's Gaussian conserves its flux whatever its shape, a lattice of rays that diverges adds up
-// to smooth light instead of rings, and a converging direction keeps its sharpness.
+// The object caustics' splat shape (shaders/postfx/object_caustics/postfx_object_caustics.h) on the
+// CPU: each ray's Gaussian conserves its flux whatever its shape, a lattice of rays that diverges
+// adds up to smooth light instead of rings, and a converging direction keeps its sharpness.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "shared_math.h"
+#include "core/shared_math.h"
 
 namespace {
 

@@ -1,0 +1,84 @@
+#include "core/gl_enum_names.h"
+
+#include <sstream>
+
+namespace postfx::detail {
+
+namespace {
+
+#define POSTFX_NAMED(e) \
+  { e, #e }
+struct Named {
+  GLenum value;
+  const char* name;
+};
+// Every format and target a validation message can name: those accepted anywhere, and the
+// common ones a host might hand by mistake.
+constexpr Named kNames[] = {
+    POSTFX_NAMED(GL_TEXTURE_1D),
+    POSTFX_NAMED(GL_TEXTURE_2D),
+    POSTFX_NAMED(GL_TEXTURE_3D),
+    POSTFX_NAMED(GL_TEXTURE_1D_ARRAY),
+    POSTFX_NAMED(GL_TEXTURE_2D_ARRAY),
+    POSTFX_NAMED(GL_TEXTURE_RECTANGLE),
+    POSTFX_NAMED(GL_TEXTURE_CUBE_MAP),
+    POSTFX_NAMED(GL_TEXTURE_CUBE_MAP_ARRAY),
+    POSTFX_NAMED(GL_TEXTURE_BUFFER),
+    POSTFX_NAMED(GL_TEXTURE_2D_MULTISAMPLE),
+    POSTFX_NAMED(GL_TEXTURE_2D_MULTISAMPLE_ARRAY),
+    POSTFX_NAMED(GL_R8),
+    POSTFX_NAMED(GL_R8_SNORM),
+    POSTFX_NAMED(GL_R16),
+    POSTFX_NAMED(GL_R16F),
+    POSTFX_NAMED(GL_R32F),
+    POSTFX_NAMED(GL_RG8),
+    POSTFX_NAMED(GL_RG8_SNORM),
+    POSTFX_NAMED(GL_RG16),
+    POSTFX_NAMED(GL_RG16_SNORM),
+    POSTFX_NAMED(GL_RG16F),
+    POSTFX_NAMED(GL_RG32F),
+    POSTFX_NAMED(GL_RGB8),
+    POSTFX_NAMED(GL_RGB8_SNORM),
+    POSTFX_NAMED(GL_SRGB8),
+    POSTFX_NAMED(GL_RGB16),
+    POSTFX_NAMED(GL_RGB16_SNORM),
+    POSTFX_NAMED(GL_RGB16F),
+    POSTFX_NAMED(GL_RGB32F),
+    POSTFX_NAMED(GL_R11F_G11F_B10F),
+    POSTFX_NAMED(GL_RGB9_E5),
+    POSTFX_NAMED(GL_RGBA8),
+    POSTFX_NAMED(GL_RGBA8_SNORM),
+    POSTFX_NAMED(GL_SRGB8_ALPHA8),
+    POSTFX_NAMED(GL_RGB10_A2),
+    POSTFX_NAMED(GL_RGBA16),
+    POSTFX_NAMED(GL_RGBA16_SNORM),
+    POSTFX_NAMED(GL_RGBA16F),
+    POSTFX_NAMED(GL_RGBA32F),
+    POSTFX_NAMED(GL_RGBA8UI),
+    POSTFX_NAMED(GL_RGBA16UI),
+    POSTFX_NAMED(GL_RGBA32UI),
+    POSTFX_NAMED(GL_R32UI),
+    POSTFX_NAMED(GL_DEPTH_COMPONENT16),
+    POSTFX_NAMED(GL_DEPTH_COMPONENT24),
+    POSTFX_NAMED(GL_DEPTH_COMPONENT32),
+    POSTFX_NAMED(GL_DEPTH_COMPONENT32F),
+    POSTFX_NAMED(GL_DEPTH24_STENCIL8),
+    POSTFX_NAMED(GL_DEPTH32F_STENCIL8),
+    POSTFX_NAMED(GL_STENCIL_INDEX8),
+    POSTFX_NAMED(GL_UNSIGNED_BYTE),
+    POSTFX_NAMED(GL_UNSIGNED_SHORT),
+    POSTFX_NAMED(GL_UNSIGNED_INT),
+};
+#undef POSTFX_NAMED
+
+}  // namespace
+
+std::string glEnumName(GLenum value) {
+  for (const Named& n : kNames)
+    if (n.value == value) return n.name;
+  std::ostringstream s;
+  s << "0x" << std::hex << value;
+  return s.str();
+}
+
+}  // namespace postfx::detail

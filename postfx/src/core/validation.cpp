@@ -1,0 +1,476 @@
+#include "core/validation.h"
+
+#include "core/convention_checks.h"
+#include "core/gl_enum_names.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <sstream>
+#include <utility>
+
+namespace postfx::detail {
+namespace {
+
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool withinWorld(const glm::dvec3& p) {
+  return std::abs(p.x) <= kMaxWorldCoordinate && std::abs(p.y) <= kMaxWorldCoordinate &&
+         std::abs(p.z) <= kMaxWorldCoordinate;
+}
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+bool finite(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+// NaN fails both comparisons, so it is caught by the same test as an out-of-range value.
+bool inRange(double value, double lo, double hi) {
+  return value >= lo && value <= hi;
+}
+
+}  // namespace
+
+std::string number(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+namespace {
+
+std::string formatName(GLenum format) {
+  return glEnumName(format);
+}
+
+struct TextureFacts {
+  GLint target = 0, format = 0, width = 0, height = 0, layers = 0;
+};
+
+// Every query here is valid for any texture name of any kind, so none can raise a GL error in
+// the host's context. The target is the one fact that needs care: glGetTextureParameteriv
+// refuses buffer textures (GL_INVALID_OPERATION in Mesa), while level-0 queries accept every
+// kind. So the level is read first: a buffer texture names its buffer there, and one without a
+// buffer has no width; only a texture that is neither is asked for its target.
+bool queryTexture(GLuint texture, TextureFacts& facts) {
+  if (texture == 0 || glIsTexture(texture) != GL_TRUE) return false;
+  GLint buffer = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_BUFFER_DATA_STORE_BINDING, &buffer);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &facts.format);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &facts.width);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &facts.height);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &facts.layers);
+  if (buffer != 0) {
+    facts.target = GL_TEXTURE_BUFFER;
+  } else if (facts.width > 0) {
+    glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &facts.target);
+  }  // else no storage (or a buffer texture without a buffer): target left 0, reported below
+  return true;
+}
+
+Result checkTexture(const char* field, const TextureRef& ref, std::initializer_list<GLenum> targets,
+                    std::initializer_list<GLenum> formats, TextureFacts& facts,
+                    std::string& error) {
+  if (!queryTexture(ref.texture, facts)) {
+    error = std::string(field) + ": texture " + std::to_string(ref.texture) +
+            " is not a texture name (required)";
+    return Result::MissingTexture;
+  }
+  if (facts.width <= 0 || facts.height <= 0) {
+    error = std::string(field) + ": texture level 0 has no storage";
+    return Result::MissingTexture;
+  }
+  if (std::find(targets.begin(), targets.end(), static_cast<GLenum>(facts.target)) ==
+      targets.end()) {
+    error = std::string(field) + ": texture target " + formatName(facts.target) +
+            " is not accepted here";
+    return Result::UnsupportedFormat;
+  }
+  if (ref.format != 0 && ref.format != static_cast<GLenum>(facts.format)) {
+    error = std::string(field) + ": declared format " + formatName(ref.format) +
+            " but the texture's internal format is " + formatName(facts.format);
+    return Result::UnsupportedFormat;
+  }
+  if (std::find(formats.begin(), formats.end(), static_cast<GLenum>(facts.format)) ==
+      formats.end()) {
+    error = std::string(field) + ": internal format " + formatName(facts.format) +
+            " is not supported for this input";
+    return Result::UnsupportedFormat;
+  }
+  return Result::Ok;
+}
+
+constexpr std::initializer_list<GLenum> kDepthFormats = {
+    GL_DEPTH_COMPONENT16,  GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+    GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
+
+std::initializer_list<GLenum> normalFormats(NormalEncoding encoding) {
+  static constexpr std::initializer_list<GLenum> octahedral = {
+      GL_RG16_SNORM, GL_RG8_SNORM, GL_RG16F, GL_RG32F, GL_RGBA16_SNORM, GL_RGBA16F, GL_RGBA32F};
+  static constexpr std::initializer_list<GLenum> xyz = {
+      GL_RGB16F,      GL_RGBA16F,      GL_RGB32F,      GL_RGBA32F,
+      GL_RGB16_SNORM, GL_RGBA16_SNORM, GL_RGBA8_SNORM, GL_R11F_G11F_B10F};
+  static constexpr std::initializer_list<GLenum> unorm = {GL_RGBA8, GL_RGB8, GL_RGB10_A2, GL_RGBA16,
+                                                          GL_RGB16};
+  return encoding == NormalEncoding::Octahedral
+             ? octahedral
+             : (encoding == NormalEncoding::WorldXyz ? xyz : unorm);
+}
+
+Result checkDepthMode(const char* field, GLuint texture, std::string& error) {
+  GLint mode = GL_DEPTH_COMPONENT;
+  glGetTextureParameteriv(texture, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
+  if (mode != GL_DEPTH_COMPONENT) {
+    error = std::string(field) +
+            ": depth-stencil texture is in GL_STENCIL_INDEX mode; set "
+            "GL_DEPTH_STENCIL_TEXTURE_MODE to GL_DEPTH_COMPONENT";
+    return Result::UnsupportedFormat;
+  }
+  return Result::Ok;
+}
+
+// Mip levels the water texture can be sampled with. A texture made with glTexStorage is always
+// complete; otherwise the chain must reach the smallest level (or GL_TEXTURE_MAX_LEVEL).
+bool isMipComplete(GLuint texture, int width, int height) {
+  GLint immutable = GL_FALSE;
+  glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+  int fullChain = 1;
+  for (int size = std::max(width, height); size > 1; size >>= 1) ++fullChain;
+  if (immutable == GL_TRUE) {
+    GLint levels = 1;
+    glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    return levels > 1;
+  }
+  GLint baseLevel = 0, maxLevel = 1000;
+  glGetTextureParameteriv(texture, GL_TEXTURE_BASE_LEVEL, &baseLevel);
+  glGetTextureParameteriv(texture, GL_TEXTURE_MAX_LEVEL, &maxLevel);
+  if (baseLevel != 0) return false;
+  const int needed = std::min(fullChain, maxLevel + 1);
+  if (needed <= 1) return false;
+  for (int level = 1; level < needed; ++level) {
+    GLint w = 0;
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &w);
+    if (w <= 0) return false;
+  }
+  return true;
+}
+
+Result checkShadowTexture(const CreateDesc& create, const FrameDesc& frame, std::string& error) {
+  if (!hasFeature(create.features, Feature::ShadowMask)) return Result::Ok;
+  TextureFacts shadow;
+  const Result r = checkTexture("shadow.depth", frame.shadow.depth, {GL_TEXTURE_2D}, kDepthFormats,
+                                shadow, error);
+  return r != Result::Ok ? r : checkDepthMode("shadow.depth", frame.shadow.depth.texture, error);
+}
+
+}  // namespace
+
+Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& error) {
+  TextureFacts facts;
+  const Result r = checkTexture(field, ref, {GL_TEXTURE_2D}, kDepthFormats, facts, error);
+  return r != Result::Ok ? r : checkDepthMode(field, ref.texture, error);
+}
+
+Result validateGodRays(const GodRaySettings& g, std::string& error) {
+  auto fail = [&error](std::string message) {
+    error = std::move(message);
+    return Result::InvalidArgument;
+  };
+  auto outside = [&fail](const char* field, auto range, const char* unit) {
+    return fail(std::string("godRays.") + field + " must be in " + rangeText(range) + unit);
+  };
+  if (!kGodRaySampleCountRange.contains(g.sampleCount))
+    return fail("godRays.sampleCount must be in " + rangeText(kGodRaySampleCountRange) + ", got " +
+                std::to_string(g.sampleCount));
+  if (!within(g.gridSpacing, kGridSpacingRange))
+    return outside("gridSpacing", kGridSpacingRange, " m");
+  if (!within(g.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
+  if (!within(g.surfaceFadeDistance, kFadeDepthRange))
+    return outside("surfaceFadeDistance", kFadeDepthRange, " m");
+  if (!within(g.depthFadeDistance, kDepthFadeDistanceRange))
+    return outside("depthFadeDistance", kDepthFadeDistanceRange, " m");
+  if (!within(g.maxDistance, kMaxMarchDistanceRange))
+    return outside("maxDistance", kMaxMarchDistanceRange, " m");
+  if (g.resolution != GodRayResolution::Full && g.resolution != GodRayResolution::Half &&
+      g.resolution != GodRayResolution::Quarter)
+    return fail("godRays.resolution is not a GodRayResolution");
+  return Result::Ok;
+}
+
+Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 9)) {
+    error = "CreateDesc.features: unknown feature bits";
+    return Result::InvalidArgument;
+  }
+  if (!isDepthConvention(desc.depthConvention)) {
+    error = "CreateDesc.depthConvention " + std::to_string(static_cast<int>(desc.depthConvention)) +
+            " is not a DepthConvention";
+    return Result::InvalidArgument;
+  }
+  if (!isNormalEncoding(desc.normalEncoding)) {
+    error = "CreateDesc.normalEncoding " + std::to_string(static_cast<int>(desc.normalEncoding)) +
+            " is not a NormalEncoding";
+    return Result::InvalidArgument;
+  }
+  if (desc.waterTexture != WaterTextureType::Array2D &&
+      desc.waterTexture != WaterTextureType::Single2D) {
+    error = "CreateDesc.waterTexture is not a WaterTextureType";
+    return Result::InvalidArgument;
+  }
+  if (desc.waterTexture == WaterTextureType::Array2D &&
+      (desc.maxWaterCascades < 1 || desc.maxWaterCascades > kMaxCascades)) {
+    error = "CreateDesc.maxWaterCascades must be in [1, " + std::to_string(kMaxCascades) +
+            "], got " + std::to_string(desc.maxWaterCascades);
+    return Result::InvalidArgument;
+  }
+  if (desc.maxLocalLights < 0 || desc.maxLocalLights > kMaxLocalLightsLimit) {
+    error = "CreateDesc.maxLocalLights must be in [0, " + std::to_string(kMaxLocalLightsLimit) +
+            "], got " + std::to_string(desc.maxLocalLights);
+    return Result::InvalidArgument;
+  }
+  if (desc.memoryBudgetMiB < 1 || desc.memoryBudgetMiB > (1 << 20)) {
+    error = "CreateDesc.memoryBudgetMiB must be in [1, 1048576], got " +
+            std::to_string(desc.memoryBudgetMiB);
+    return Result::InvalidArgument;
+  }
+  constexpr std::int64_t kMaxWorkBudget = std::int64_t(1) << 40;
+  for (const auto& [value, name] : {std::pair{desc.casterTriangleBudget, "casterTriangleBudget"},
+                                    std::pair{desc.splatBudget, "splatBudget"}}) {
+    if (value < 1 || value > kMaxWorkBudget) {
+      error =
+          std::string("CreateDesc.") + name + " must be in [1, 2^40], got " + std::to_string(value);
+      return Result::InvalidArgument;
+    }
+  }
+  return Result::Ok;
+}
+
+Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std::string& error) {
+  auto fail = [&error](std::string message) {
+    error = std::move(message);
+    return Result::InvalidArgument;
+  };
+  const Camera& camera = frame.camera;
+  if (!finite(camera.position)) return fail("camera.position is not finite");
+  if (!withinWorld(camera.position))
+    return fail("camera.position must lie within +-" + worldExtentText() + " m of the origin");
+  if (!finite(camera.view)) return fail("camera.view is not finite");
+  if (!finite(camera.projection)) return fail("camera.projection is not finite");
+  const glm::dmat3 rotation = glm::dmat3(glm::mat3(camera.view));
+  const glm::dmat3 gram = glm::transpose(rotation) * rotation;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-3)
+        return fail("camera.view: the upper 3x3 is not a rotation (orthonormal)");
+  const glm::dmat4& p = camera.projection;
+  // Bounded so that the floats made from it (and 2 / (P[1][1] * height)) stay finite.
+  for (const double entry : {p[0][0], p[1][1], p[2][0], p[2][1], p[2][2], p[3][2]})
+    if (!(std::abs(entry) <= 1e30)) return fail("camera.projection: entries must be within +-1e30");
+  if (!(std::abs(p[0][0]) >= 1e-30 && std::abs(p[1][1]) >= 1e-30))
+    return fail("camera.projection: P[0][0] and P[1][1] must be at least 1e-30 in magnitude");
+  if (p[0][0] == 0.0 || p[1][1] == 0.0 || std::abs(p[2][3] + 1.0) > 1e-5 ||
+      std::abs(p[3][3]) > 1e-5 || p[3][2] == 0.0)
+    return fail("camera.projection is not a perspective projection (P[2][3] = -1, P[3][3] = 0)");
+
+  // The length is formed from components already bounded, so its square cannot overflow (a
+  // sun of (0, 1e300, 0) once had an infinite length and was normalised to zero).
+  const Sun& sun = frame.sun;
+  const double maxSun = kSunLengthRange.max;
+  if (!inRange(sun.direction.x, -maxSun, maxSun) || !inRange(sun.direction.y, -maxSun, maxSun) ||
+      !inRange(sun.direction.z, -maxSun, maxSun) ||
+      !within(glm::length(sun.direction), kSunLengthRange))
+    return fail("sun.direction must be finite with a length in " + rangeText(kSunLengthRange) +
+                " (it is normalised)");
+  if (!within(sun.irradiance, kIrradianceRange))
+    return fail("sun.irradiance must be in " + rangeText(kIrradianceRange));
+  if (!within(sun.angularDiameterDegrees, kSunAngularDiameterRange))
+    return fail("sun.angularDiameterDegrees must be in " + rangeText(kSunAngularDiameterRange));
+
+  const WaterSurface& water = frame.water;
+  if (!std::isfinite(water.level)) return fail("water.level is not finite");
+  if (!inRange(water.level, -kMaxWorldCoordinate, kMaxWorldCoordinate))
+    return fail("water.level must lie within +-" + worldExtentText() + " m");
+  if (!std::isfinite(water.origin.x) || !std::isfinite(water.origin.y))
+    return fail("water.origin is not finite");
+  if (!inRange(water.origin.x, -kMaxWorldCoordinate, kMaxWorldCoordinate) ||
+      !inRange(water.origin.y, -kMaxWorldCoordinate, kMaxWorldCoordinate))
+    return fail("water.origin must lie within +-" + worldExtentText() + " m");
+  const int maxCascades = waterCascadeSlots(create);
+  if (water.cascadeCount < 1 || water.cascadeCount > maxCascades)
+    return fail("water.cascadeCount must be in [1, " + std::to_string(maxCascades) +
+                "] (CreateDesc.maxWaterCascades), got " + std::to_string(water.cascadeCount));
+  for (int c = 0; c < water.cascadeCount; ++c)
+    if (!within(water.tileSize[c], kTileSizeRange))
+      return fail("water.tileSize[" + std::to_string(c) + "] must be in " +
+                  rangeText(kTileSizeRange) + " m");
+  for (int c = 0; c < water.cascadeCount; ++c) {
+    if (!within(water.rmsLaplacian[c], kWaveStatisticRange))
+      return fail("water.rmsLaplacian[" + std::to_string(c) + "] must be in " +
+                  rangeText(kWaveStatisticRange) + " 1/m");
+    if (!within(water.longestWavelength[c], kWaveStatisticRange))
+      return fail("water.longestWavelength[" + std::to_string(c) + "] must be in " +
+                  rangeText(kWaveStatisticRange) + " m");
+  }
+  if (!within(water.ior, kIorRange)) return fail("water.ior must be in " + rangeText(kIorRange));
+  if (hasFeature(create.features, Feature::Dispersion) && !within(water.iorRgb, kIorRange))
+    return fail("water.iorRgb must be in " + rangeText(kIorRange));
+  if (!within(water.absorption, kWaterCoefficientRange))
+    return fail("water.absorption must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
+  // Scattering is read by the god rays and, with ViewExtinction::Plugin, by every pass's
+  // view-path extinction: a negative value there would amplify the light exponentially.
+  if ((hasFeature(create.features, Feature::GodRays) ||
+       frame.viewExtinction == ViewExtinction::Plugin) &&
+      !within(water.scattering, kWaterCoefficientRange))
+    return fail("water.scattering must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
+
+  if (hasFeature(create.features, Feature::ShadowMask)) {
+    const SunShadowMap& shadow = frame.shadow;
+    if (!finite(shadow.worldToLightClip)) return fail("shadow.worldToLightClip is not finite");
+    if (!isDepthConvention(shadow.depthConvention))
+      return fail("shadow.depthConvention is not a DepthConvention");
+    if (!within(shadow.bias, kShadowBiasRange))
+      return fail("shadow.bias must be in " + rangeText(kShadowBiasRange) + " m");
+    if (!within(shadow.normalOffsetTexels, kShadowNormalOffsetRange))
+      return fail("shadow.normalOffsetTexels must be in " + rangeText(kShadowNormalOffsetRange) +
+                  " texels");
+  }
+
+  if (frame.viewExtinction != ViewExtinction::Plugin &&
+      frame.viewExtinction != ViewExtinction::Host)
+    return fail("viewExtinction is not a ViewExtinction");
+  if (frame.viewExtinction == ViewExtinction::Host &&
+      hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled)
+    return fail(
+        "viewExtinction Host with god rays enabled: a fog after dispatch would attenuate the "
+        "shafts a second time (use ViewExtinction::Plugin and fog before dispatch)");
+  const CausticsSettings& s = frame.caustics;
+  auto outside = [&fail](const char* field, auto range, const char* unit) {
+    return fail(std::string("caustics.") + field + " must be in " + rangeText(range) + unit);
+  };
+  if (!within(s.tau, kTauRange)) return outside("tau", kTauRange, "");
+  if (!within(s.reflectionWeight, kUnitRange)) return outside("reflectionWeight", kUnitRange, "");
+  if (!within(s.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
+  if (!within(s.surfaceFadeDepth, kFadeDepthRange))
+    return outside("surfaceFadeDepth", kFadeDepthRange, " m");
+  if (!within(s.triplanarSharpness, kTriplanarSharpnessRange))
+    return outside("triplanarSharpness", kTriplanarSharpnessRange, "");
+  if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", kLodBiasRange, "");
+  if (!within(s.minCascadeContrast, kUnitRange))
+    return outside("minCascadeContrast", kUnitRange, "");
+  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio &&
+      s.model != CausticsModel::TileIrradiance)
+    return fail("caustics.model is not a CausticsModel");
+  const bool powerOfTwo = s.tileResolution > 0 && (s.tileResolution & (s.tileResolution - 1)) == 0;
+  if (!kTileResolutionRange.contains(s.tileResolution) || !powerOfTwo)
+    return fail("caustics.tileResolution must be a power of two in " +
+                rangeText(kTileResolutionRange) + ", got " + std::to_string(s.tileResolution));
+  if (!within(s.tileMinModulation, kTileMinModulationRange))
+    return outside("tileMinModulation", kTileMinModulationRange, "");
+  if (s.tileLookupResolution != CausticsLookupResolution::Full &&
+      s.tileLookupResolution != CausticsLookupResolution::Half)
+    return fail("caustics.tileLookupResolution is not a CausticsLookupResolution");
+  if (s.tilePointsPerTexel != 1 && s.tilePointsPerTexel != 2)
+    return fail("caustics.tilePointsPerTexel must be 1 or 2, got " +
+                std::to_string(s.tilePointsPerTexel));
+  if (s.tileDepthLayers != 4 && s.tileDepthLayers != 8)
+    return fail("caustics.tileDepthLayers must be 4 or 8, got " +
+                std::to_string(s.tileDepthLayers));
+  if (s.model == CausticsModel::WavefrontAreaRatio &&
+      !hasFeature(create.features, Feature::PhysicalCaustics))
+    return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");
+  if (!kGridResolutionRange.contains(s.gridResolution))
+    return fail("caustics.gridResolution must be in " + rangeText(kGridResolutionRange) + ", got " +
+                std::to_string(s.gridResolution));
+  if (!within(s.windowSize, kWindowSizeRange)) return outside("windowSize", kWindowSizeRange, " m");
+  if (!kDepthLayersRange.contains(s.depthLayers))
+    return fail("caustics.depthLayers must be in " + rangeText(kDepthLayersRange) + ", got " +
+                std::to_string(s.depthLayers));
+  if (!within(s.maxReceiverDepth, kMaxReceiverDepthRange))
+    return outside("maxReceiverDepth", kMaxReceiverDepthRange, " m");
+  if (!within(s.maxIrradiance, kMaxIrradianceRange))
+    return outside("maxIrradiance", kMaxIrradianceRange, "");
+  if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
+  return Result::Ok;
+}
+
+Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
+                             ValidatedTextures& out, std::string& error) {
+  TextureFacts target, depth, normal, albedo;
+  Result r = checkTexture("target", frame.target, {GL_TEXTURE_2D},
+                          {GL_RGBA16F, GL_RGBA32F, GL_R11F_G11F_B10F}, target, error);
+  if (r != Result::Ok) return r;
+  r = checkTexture("depth", frame.depth, {GL_TEXTURE_2D}, kDepthFormats, depth, error);
+  if (r != Result::Ok) return r;
+  r = checkDepthMode("depth", frame.depth.texture, error);
+  if (r != Result::Ok) return r;
+  r = checkTexture("normal", frame.normal, {GL_TEXTURE_2D}, normalFormats(create.normalEncoding),
+                   normal, error);
+  if (r != Result::Ok) return r;
+  r = checkTexture("albedo", frame.albedo, {GL_TEXTURE_2D},
+                   {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGB10_A2, GL_RGB8, GL_SRGB8}, albedo,
+                   error);
+  if (r != Result::Ok) return r;
+  const TextureFacts* sized[] = {&depth, &normal, &albedo};
+  const char* names[] = {"depth", "normal", "albedo"};
+  for (int i = 0; i < 3; ++i) {
+    if (sized[i]->width != target.width || sized[i]->height != target.height) {
+      error = std::string(names[i]) + " is " + std::to_string(sized[i]->width) + "x" +
+              std::to_string(sized[i]->height) + " but target is " + std::to_string(target.width) +
+              "x" + std::to_string(target.height);
+      return Result::SizeMismatch;
+    }
+  }
+
+  // Only the seabed caustics and the god rays (and the benchmark floor beside them) sample the
+  // water: a host with glass but no water simulation may leave it 0. A texture given is
+  // still checked, so a stale name is reported rather than sampled.
+  const bool waterNeeded =
+      (hasFeature(create.features, Feature::Caustics) && frame.caustics.enabled) ||
+      (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled);
+  if (!waterNeeded && frame.water.texture.texture == 0) {
+    out.width = target.width;
+    out.height = target.height;
+    out.water = {};
+    out.waterMipmapped = false;
+    return checkShadowTexture(create, frame, error);
+  }
+
+  if (frame.water.texture.texture == 0) {
+    error =
+        "water.texture: required while seabed caustics or god rays are enabled (0 is accepted "
+        "only when both are off, e.g. object caustics alone)";
+    return Result::MissingTexture;
+  }
+  TextureFacts water;
+  const bool single = create.waterTexture == WaterTextureType::Single2D;
+  r = checkTexture("water.texture", frame.water.texture,
+                   {static_cast<GLenum>(single ? GL_TEXTURE_2D : GL_TEXTURE_2D_ARRAY)},
+                   {GL_RGBA16F, GL_RGBA32F, GL_RG16F, GL_RG32F}, water, error);
+  if (r != Result::Ok) return r;
+  if (!single && water.layers < frame.water.cascadeCount) {
+    error = "water.texture has " + std::to_string(water.layers) + " layers but cascadeCount is " +
+            std::to_string(frame.water.cascadeCount);
+    return Result::SizeMismatch;
+  }
+
+  r = checkShadowTexture(create, frame, error);
+  if (r != Result::Ok) return r;
+
+  out.width = target.width;
+  out.height = target.height;
+  out.water.width = water.width;
+  out.water.height = water.height;
+  out.waterMipmapped = isMipComplete(frame.water.texture.texture, water.width, water.height);
+  return Result::Ok;
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,75 @@
+#pragma once
+// Input validation. Everything here only reads: CPU values and GL *queries* (no binds, no state
+// changes, no GL errors), so a rejected call leaves the host's GL state untouched.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <postfx/postfx.h>
+
+#include "core/frame_constants.h"
+
+namespace postfx::detail {
+
+// World coordinates the plugin accepts (camera, water level and origin, caster bounds), in
+// metres: every camera- or anchor-relative distance then stays below 2e9 m, so that it, its
+// square and its product with the largest coefficient (absorption / cos, <= 1e9 per metre)
+// are finite in the GPU's float. Past it a frame is refused rather than drawn with Inf or NaN.
+inline constexpr double kMaxWorldCoordinate = 1e9;
+inline std::string worldExtentText() {
+  return "1e9";
+}
+// A range bound as a message prints it: shortest round-trip form ("100", "0.5", "1e+06").
+std::string number(double value);
+
+// The range as a message prints it, "[0, 1e6]".
+template <typename T>
+std::string rangeText(Range<T> r) {
+  // Appended, not "[" + string: GCC 12 warns falsely (-Wrestrict) on that operator+.
+  std::string text = "[";
+  text += number(double(r.min));
+  text += ", ";
+  text += number(double(r.max));
+  text += "]";
+  return text;
+}
+// Whether the value (every component of a vector) lies in the range; NaN never does.
+template <typename T>
+bool within(double value, Range<T> r) {
+  return value >= double(r.min) && value <= double(r.max);
+}
+template <typename T>
+bool within(const glm::vec3& v, Range<T> r) {
+  return within(v.x, r) && within(v.y, r) && within(v.z, r);
+}
+
+Result validateCreateDesc(const CreateDesc& desc, std::string& error);
+
+// How many water cascades the context's shaders are written for (a valid desc's).
+inline int waterCascadeSlots(const CreateDesc& desc) {
+  return desc.waterTexture == WaterTextureType::Single2D ? 1 : desc.maxWaterCascades;
+}
+
+// Range checks of the god-ray settings (part of validateFrameValues with Feature::GodRays).
+Result validateGodRays(const GodRaySettings& settings, std::string& error);
+
+// CPU-only checks of the frame: finite camera, sane projection, settings in range.
+Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std::string& error);
+
+// What the texture checks learnt, for the pass.
+struct ValidatedTextures {
+  int width = 0, height = 0;  // of the target (= G-buffer)
+  WaterTextureInfo water;
+  bool waterMipmapped = false;  // mip-complete: sample with mips; otherwise level 0 only
+};
+
+// GL-query checks of every texture: a texture name, the right target and format, sizes that
+// match. Runs after validateFrameValues.
+// A host depth texture (GL_TEXTURE_2D, depth format, depth mode): the checks every depth input
+// gets, for the object caustics' receiver map.
+Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& error);
+
+Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
+                             ValidatedTextures& out, std::string& error);
+
+}  // namespace postfx::detail

@@ -1,0 +1,47 @@
+#include "core/visibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace postfx::detail {
+namespace {
+
+// Distance along the view axis (-Z) of window depth `ndcZ`, or +inf where the plane is at
+// infinity (infinite reverse-Z projections).
+double viewDistance(double ndcZ, const glm::dmat4& projection) {
+  const double p22 = projection[2][2], p32 = projection[3][2];
+  const double viewZ = -p32 / (ndcZ + p22);
+  if (!std::isfinite(viewZ) || viewZ >= 0.0) return std::numeric_limits<double>::infinity();
+  return -viewZ;
+}
+
+}  // namespace
+
+bool frustumReachesBelowWater(const glm::dmat3& viewToWorld, const glm::dmat4& projection,
+                              DepthConvention depthConvention, double levelRelative) {
+  if (levelRelative >= 0.0) return true;  // the camera itself is at or under the level
+  // NDC depth of the near and far planes per convention (0 reverse-Z, 1 fwd [0,1], 2 fwd [-1,1]).
+  const bool reverse = depthConvention == DepthConvention::ReverseZ;
+  const double nearNdc =
+      reverse ? 1.0 : (depthConvention == DepthConvention::ForwardZeroToOne ? 0.0 : -1.0);
+  const double farNdc = reverse ? 0.0 : 1.0;
+  const double nearDistance = viewDistance(nearNdc, projection);
+  const double farDistance = viewDistance(farNdc, projection);
+  if (!std::isfinite(nearDistance)) return true;  // not a projection we understand: run
+
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 4; ++corner) {
+    const double ndcX = (corner & 1) ? 1.0 : -1.0;
+    const double ndcY = (corner & 2) ? 1.0 : -1.0;
+    // Direction of the corner edge, scaled to 1 m along the view axis.
+    const glm::dvec3 view((ndcX + projection[2][0]) / projection[0][0],
+                          (ndcY + projection[2][1]) / projection[1][1], -1.0);
+    const double dy = (viewToWorld * view).y;
+    lowest = std::min(lowest, dy * nearDistance);
+    if (dy < 0.0) lowest = std::min(lowest, dy * farDistance);  // -inf for an infinite far plane
+  }
+  return lowest < levelRelative;
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,281 @@
+#include "seabed_caustics/caustics_pass.h"
+
+#include <postfx/testing.h>
+
+#include "core/host_target.h"
+
+#include <string>
+
+#include <glkit/texture.h>
+
+#include "core/shader_library.h"
+#include "seabed_caustics/tile_irradiance_pass.h"
+
+// bindState binds the G-buffer's three samplers in one call.
+static_assert(POSTFX_UNIT_NORMAL == POSTFX_UNIT_DEPTH + 1 &&
+                  POSTFX_UNIT_ALBEDO == POSTFX_UNIT_DEPTH + 2,
+              "the G-buffer units are consecutive");
+
+namespace postfx::detail {
+
+std::string shaderDefines(const CreateDesc& desc) {
+  auto flag = [&desc](Feature f) { return hasFeature(desc.features, f) ? "1" : "0"; };
+  std::string d;
+  d += "#define POSTFX_DEPTH_CONVENTION " + std::to_string(static_cast<int>(desc.depthConvention)) +
+       "\n";
+  d += "#define POSTFX_NORMAL_ENCODING " + std::to_string(static_cast<int>(desc.normalEncoding)) +
+       "\n";
+  d += std::string("#define POSTFX_DISPERSION ") + flag(Feature::Dispersion) + "\n";
+  d += std::string("#define POSTFX_SHADOW_MASK ") + flag(Feature::ShadowMask) + "\n";
+  d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(testing::RawCausticOutput) + "\n";
+  d += std::string("#define POSTFX_PHYSICAL ") + flag(Feature::PhysicalCaustics) + "\n";
+  d += std::string("#define POSTFX_TRIPLANAR_WALLS ") + flag(Feature::TriplanarWalls) + "\n";
+  d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
+       (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
+  d += "#define POSTFX_CASCADE_SLOTS " + std::to_string(waterCascadeSlots(desc)) + "\n";
+  return d;
+}
+
+namespace {
+
+glkit::Sampler makeShadowSampler(GLenum compare, const char* name) {
+  glkit::Sampler sampler = glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, name);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_COMPARE_FUNC, static_cast<GLint>(compare));
+  return sampler;
+}
+
+glkit::Framebuffer makeFramebuffer(int drawBuffers, const char* name) {
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glkit::Framebuffer framebuffer = glkit::createFramebuffer(name);
+  glNamedFramebufferDrawBuffers(framebuffer.id(), drawBuffers, buffers);
+  return framebuffer;
+}
+
+}  // namespace
+
+Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
+  desc_ = desc;
+  const std::string defines = shaderDefines(desc);
+  Result r = buildPrograms(
+      defines,
+      {{caustics_,
+        "postfx.caustics",
+        {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/caustics.frag"}}}},
+      error);
+  const bool floor = hasFeature(desc.features, testing::BenchmarkFloor);
+  if (r == Result::Ok && floor)
+    r = buildPrograms(
+        defines,
+        {{floor_,
+          "postfx.floor",
+          {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/floor.frag"}}}},
+        error);
+  if (r != Result::Ok) return r;
+
+  const int drawBuffers = hasFeature(desc.features, testing::RawCausticOutput) ? 2 : 1;
+  framebuffer_ = makeFramebuffer(drawBuffers, "postfx.caustics.framebuffer");
+  if (floor) floorFramebuffer_ = makeFramebuffer(drawBuffers, "postfx.floor.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.fullscreen.vao");
+  uniformBuffer_ = glkit::createBuffer(sizeof(shared::CausticsBlock), nullptr,
+                                       GL_DYNAMIC_STORAGE_BIT, "postfx.caustics.block");
+
+  pointSampler_ =
+      glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "postfx.sampler.point");
+  waterMipSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT,
+                                          "postfx.sampler.water_mip");
+  waterLinearSampler_ =
+      glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_REPEAT, "postfx.sampler.water");
+  if (hasFeature(desc.features, Feature::ShadowMask)) {
+    shadowForwardSampler_ = makeShadowSampler(GL_LEQUAL, "postfx.sampler.shadow_forward");
+    shadowReverseSampler_ = makeShadowSampler(GL_GEQUAL, "postfx.sampler.shadow_reverse_z");
+  }
+  // The tile repeats: filtering wraps across its edge.
+  tileSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT,
+                                      "postfx.sampler.tile_irradiance");
+  if (hasFeature(desc.features, Feature::PhysicalCaustics))
+    irradianceSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
+                                              "postfx.sampler.irradiance");
+  return Result::Ok;
+}
+
+Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced, bool physical,
+                                       int& variant, std::string& error) {
+  reduced = reduced && !physical;
+  const int g = groups > 1 ? 2 : 1;
+  const int mask = cascadeMask & (kTileMasks - 1);
+  const int index = kTileMasks * (g - 1) + mask;
+  variant = 1 + (physical ? 2 * kTileVariants : reduced ? kTileVariants : 0) + index;
+  glkit::Program& program = tileCaustics_[variant - 1];
+  if (program.id() != 0) return Result::Ok;
+  std::string tileDefines = tileVariantDefines(g, mask, physical);
+  tileDefines += reduced ? "#define POSTFX_TILE_REDUCED 1\n" : "#define POSTFX_TILE_REDUCED 0\n";
+  const std::string defines = shaderDefines(desc_);
+  if (!reduced)
+    return buildPrograms(
+        defines,
+        {{program,
+          physical ? "postfx.caustics_physical_tile" : "postfx.caustics_tile",
+          {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/caustics.frag"}},
+          tileDefines}},
+        error);
+  return buildPrograms(
+      defines,
+      {{program,
+        "postfx.caustics_tile_upsampled",
+        {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/caustics.frag"}},
+        tileDefines},
+       {tileLookups_[index],
+        "postfx.caustics_tile_lookups",
+        {kFullScreenVertex,
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/tile_irradiance_reduced.frag"}},
+        tileDefines}},
+      error);
+}
+
+void CausticsPass::ensureReduced(int width, int height) {
+  const int w = (width + 1) / 2, h = (height + 1) / 2;  // texel i: pixel 2i
+  fullWidth_ = width;
+  fullHeight_ = height;
+  if (reducedTexture_ && reducedWidth_ == w && reducedHeight_ == h) return;
+  reducedTexture_.reset();  // the old size goes first: never two of them allocated at once
+  reducedTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.tile_lookups");
+  glTextureStorage2D(reducedTexture_.id(), 1, GL_R32UI, w, h);  // two halves
+  reducedWidth_ = w;
+  reducedHeight_ = h;
+  if (!reducedFramebuffer_)
+    reducedFramebuffer_ = makeFramebuffer(1, "postfx.caustics.tile_lookups");
+  glNamedFramebufferTexture(reducedFramebuffer_.id(), GL_COLOR_ATTACHMENT0, reducedTexture_.id(),
+                            0);
+}
+
+void CausticsPass::drawReducedLookups(const glkit::Program& program) {
+  // Under bindState's state, with the tile irradiance on its unit: its own target, unblended.
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, reducedFramebuffer_.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(reducedWidth_),
+                     static_cast<float>(reducedHeight_));
+  glDisablei(GL_BLEND, 0);
+  glUseProgram(program.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Back to bindState's: the upsample reads the lookups on the irradiance unit, texel by texel.
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(fullWidth_),
+                     static_cast<float>(fullHeight_));
+  glEnablei(GL_BLEND, 0);
+  glBindTextureUnit(POSTFX_UNIT_TILE_REDUCED, reducedTexture_.id());
+  glBindSampler(POSTFX_UNIT_TILE_REDUCED, pointSampler_.id());
+}
+
+void CausticsPass::ensureRaw(int width, int height) {
+  if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
+  if (rawTexture_ && rawWidth_ == width && rawHeight_ == height) return;
+  rawTexture_.reset();  // the old size goes first: never two of them allocated at once
+  rawTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.raw");
+  const GLuint raw = rawTexture_.id();
+  glTextureStorage2D(raw, 1, GL_R16F, width, height);
+  glTextureParameteri(raw, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(raw, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  rawWidth_ = width;
+  rawHeight_ = height;
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, raw, 0);
+  if (floorFramebuffer_)
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT1, raw, 0);
+}
+
+void CausticsPass::clearRaw(int width, int height) {
+  if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
+  ensureRaw(width, height);
+  // A texture operation: no framebuffer, scissor or mask state involved.
+  glClearTexImage(rawTexture_.id(), 0, GL_RED, GL_FLOAT, nullptr);
+}
+
+Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& textures,
+                             const shared::CausticsBlock& block, std::string& error) {
+  ensureRaw(textures.width, textures.height);
+  if (frame.caustics.enabled && frame.caustics.model == CausticsModel::TileIrradiance &&
+      frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
+    ensureReduced(textures.width, textures.height);
+  if (floorFramebuffer_)
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.target.texture,
+                              0);
+  if (!attachHostTarget(framebuffer_.id(), frame.target.texture, "caustics", error)) {
+    finish();
+    return Result::GlError;
+  }
+  glNamedBufferSubData(uniformBuffer_.id(), 0, sizeof(block), &block);
+  return Result::Ok;
+}
+
+void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& textures,
+                             GLuint irradiance, GLuint tile) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(textures.width),
+                     static_cast<float>(textures.height));
+  glDisablei(GL_SCISSOR_TEST, 0);
+  glEnablei(GL_BLEND, 0);
+  glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisablei(GL_BLEND, 1);
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  // The vertex shader writes no gl_ClipDistance: an enabled one would clip undefinedly.
+  GLint maxClip = 0;
+  glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxClip);
+  for (GLint i = 0; i < maxClip && i < 8; ++i)
+    glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
+  glBindVertexArray(vertexArray_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id());
+
+  glBindTextureUnit(POSTFX_UNIT_DEPTH, frame.depth.texture);
+  glBindTextureUnit(POSTFX_UNIT_NORMAL, frame.normal.texture);
+  glBindTextureUnit(POSTFX_UNIT_ALBEDO, frame.albedo.texture);
+  const GLuint point = pointSampler_.id();
+  const GLuint pointSamplers[] = {point, point, point};
+  glBindSamplers(POSTFX_UNIT_DEPTH, 3, pointSamplers);
+  // Without water (object caustics only) nothing samples the unit; binding 0 there would unbind
+  // every target of the unit, which the state guard does not restore.
+  if (frame.water.texture.texture != 0) {
+    glBindTextureUnit(POSTFX_UNIT_WATER, frame.water.texture.texture);
+    glBindSampler(POSTFX_UNIT_WATER,
+                  textures.waterMipmapped ? waterMipSampler_.id() : waterLinearSampler_.id());
+  }
+  if (hasFeature(desc_.features, Feature::ShadowMask)) {
+    glBindTextureUnit(POSTFX_UNIT_SHADOW, frame.shadow.depth.texture);
+    glBindSampler(POSTFX_UNIT_SHADOW, frame.shadow.depthConvention == DepthConvention::ReverseZ
+                                          ? shadowReverseSampler_.id()
+                                          : shadowForwardSampler_.id());
+  }
+  if (irradiance != 0) {
+    glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, irradiance);
+    glBindSampler(POSTFX_UNIT_IRRADIANCE, irradianceSampler_.id());
+  }
+  if (tile != 0) {
+    glBindTextureUnit(POSTFX_UNIT_TILE_IRRADIANCE, tile);
+    glBindSampler(POSTFX_UNIT_TILE_IRRADIANCE, tileSampler_.id());
+  }
+}
+
+void CausticsPass::drawFloor() {
+  if (floor_.id() == 0) return;
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, floorFramebuffer_.id());
+  glUseProgram(floor_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void CausticsPass::drawCaustics(int tileVariant) {
+  if (tileVariant > kTileVariants && tileVariant <= 2 * kTileVariants)
+    drawReducedLookups(tileLookups_[tileVariant - 1 - kTileVariants]);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  glUseProgram(tileVariant > 0 ? tileCaustics_[tileVariant - 1].id() : caustics_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void CausticsPass::finish() {
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+  if (floorFramebuffer_)
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,88 @@
+#pragma once
+// The caustics pass and its benchmark floor: a full-screen triangle per pass, blended
+// additively (ONE, ONE) into the host's HDR target through a framebuffer of our own, with the
+// raw caustic factor as a second, unblended attachment when enabled.
+// A fragment pass rather than compute: the additive blend is free in the ROPs on real GPUs,
+// works for every target format (R11G11B10F has no atomic/image read-modify-write), and sky or
+// above-water pixels leave with a discard.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <glkit/handle.h>
+#include <glkit/program.h>
+#include <postfx/postfx.h>
+
+#include "core/shared_math.h"
+#include "core/validation.h"
+
+namespace postfx::detail {
+
+// The #defines of the context's features and conventions, for every postfx program.
+std::string shaderDefines(const CreateDesc& desc);
+
+class CausticsPass {
+ public:
+  // Builds the programs for the context's features and the GL objects (DSA: binds nothing).
+  Result init(const CreateDesc& desc, std::string& error);
+
+  // Attaches the host target (and the raw output, resized to it when needed). GL_ERROR with a
+  // message when the framebuffer is incomplete.
+  Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
+                 const shared::CausticsBlock& block, std::string& error);
+  // The variant of the caustics program that reads the tile irradiance: `groups` RGBA fetches
+  // per cascade (1 or 2) for the cascades in `cascadeMask` (bit c: cascade c); `physical`: the
+  // WavefrontAreaRatio window, continued beyond its edge by the tile irradiance (looked up per
+  // pixel), else the TileIrradiance model alone, its lookups at every pixel or at half
+  // resolution (`reduced`: then a lookup program and an upsampling caustics program). Built the
+  // first time a frame needs it: a context that never uses the field never compiles it.
+  // Returns the variant's index for drawCaustics (>= 1).
+  Result ensureTileProgram(int groups, int cascadeMask, bool reduced, bool physical, int& variant,
+                           std::string& error);
+  // Sets the pipeline state both passes use; call under a GlStateGuard. irradiance: the
+  // WavefrontAreaRatio model's texture, tile: the tile irradiance (0 when not in use).
+  void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance,
+                 GLuint tile = 0);
+  void drawFloor();
+  // tileVariant: 0 for the RayDeviation program (and WavefrontAreaRatio without a tile field),
+  // else the variant ensureTileProgram returned (a reduced one draws its lookups first, then
+  // blends them in: both inside the caustics pass's timing).
+  void drawCaustics(int tileVariant = 0);
+  // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
+  void finish();
+  // The pass was skipped: the raw output (if any) must read 0, resized to the frame.
+  void clearRaw(int width, int height);
+
+  GLuint rawTexture() const { return rawTexture_.id(); }
+
+ private:
+  void ensureRaw(int width, int height);
+  void ensureReduced(int width, int height);
+  void drawReducedLookups(const glkit::Program& program);
+
+  CreateDesc desc_{};
+  glkit::Program caustics_, floor_;
+  // Tile-irradiance variants: [physical, reduced][groups - 1][cascade mask], index
+  // 1 + 32 * reduced + 64 * physical + 16 * (groups - 1) + mask (a physical one is never
+  // reduced); the reduced ones' lookups in tileLookups_.
+  static constexpr int kTileMasks = 1 << kMaxCascades;
+  static constexpr int kTileVariants = 2 * kTileMasks;
+  glkit::Program tileCaustics_[3 * kTileVariants];
+  glkit::Program tileLookups_[kTileVariants];
+  // The floor draws through its own framebuffer with the same attachments: the switch makes a
+  // software rasterizer start a new scene, so its timer queries separate the two passes.
+  glkit::Framebuffer framebuffer_, floorFramebuffer_;
+  glkit::VertexArray vertexArray_;
+  glkit::Buffer uniformBuffer_;
+  glkit::Sampler pointSampler_, waterMipSampler_, waterLinearSampler_;
+  glkit::Sampler shadowForwardSampler_, shadowReverseSampler_, irradianceSampler_;
+  glkit::Sampler tileSampler_;
+  glkit::Texture rawTexture_;
+  int rawWidth_ = 0, rawHeight_ = 0;
+  // The half-resolution lookups (CausticsLookupResolution::Half), RG16F, allocated on first use.
+  glkit::Texture reducedTexture_;
+  glkit::Framebuffer reducedFramebuffer_;
+  int reducedWidth_ = 0, reducedHeight_ = 0, fullWidth_ = 0, fullHeight_ = 0;
+};
+
+}  // namespace postfx::detail

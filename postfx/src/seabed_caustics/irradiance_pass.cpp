@@ -1,0 +1,189 @@
+#include "seabed_caustics/irradiance_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glkit/texture.h>
+
+#include "core/block_check.h"
+#include "core/frame_constants.h"
+#include "core/gl_sizes.h"
+#include "core/shader_library.h"
+#include "core/shared_math.h"
+
+namespace postfx::detail {
+
+Result IrradiancePass::init(const std::string& defines, std::string& error) {
+  const Result r =
+      buildPrograms(defines,
+                    {{vertices_,
+                      "postfx.caustics_irradiance.grid",
+                      {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/irradiance_vertices.comp"}}},
+                     {triangles_,
+                      "postfx.caustics_irradiance.triangles",
+                      {{GL_VERTEX_SHADER, "postfx/seabed_caustics/irradiance.vert"},
+                       {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/irradiance.frag"}}},
+                     {points_,
+                      "postfx.caustics_irradiance.points",
+                      {{GL_VERTEX_SHADER, "postfx/seabed_caustics/irradiance_points.vert"},
+                       {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/irradiance_points.frag"}}}},
+                    error);
+  if (r != Result::Ok) return r;
+  framebuffer_ = glkit::createFramebuffer("postfx.caustics_irradiance.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.caustics_irradiance.vao");
+  for (ClampSlot& slot : clampSlots_)
+    slot.buffer = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                      "postfx.caustics_irradiance.clamp_count");
+  return Result::Ok;
+}
+
+void IrradiancePass::ensureGridPoints(int pointsPerSide) {
+  if (gridPoints_ && gridPointsPerSide_ == pointsPerSide) return;
+  // The old size goes first: never two of them allocated at once.
+  gridPointView_.reset();
+  gridPoints_.reset();
+  // Two vec4 per grid point (see irradiance_vertices.comp); reused by every layer in turn.
+  const GLsizeiptr bytes = GLsizeiptr(pointsPerSide) * pointsPerSide * 2 * 16;
+  gridPoints_ = glkit::createBuffer(bytes, nullptr, 0, "postfx.caustics_irradiance.grid_points");
+  gridPointView_ =
+      glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.caustics_irradiance.grid_points_view");
+  glTextureBuffer(gridPointView_.id(), GL_RGBA32F, gridPoints_.id());
+  gridPointsPerSide_ = pointsPerSide;
+}
+
+void IrradiancePass::ensureTexture(int resolution, int layers) {
+  if (texture_ && textureResolution_ == resolution && textureLayers_ == layers) return;
+  texture_.reset();  // the old size goes first: never two of them allocated at once
+  texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_irradiance");
+  // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
+  // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
+  // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.
+  glTextureStorage3D(texture_.id(), irradianceMipLevels(resolution), GL_R32F, resolution,
+                     resolution, layers);
+  textureResolution_ = resolution;
+  textureLayers_ = layers;
+}
+
+std::uint64_t IrradiancePass::allocatedBytes() const {
+  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.id());  // R32F
+}
+
+double IrradiancePass::pollClampCounts() {
+  // Oldest first, so the value returned is the newest one completed.
+  double newest = -1.0;
+  for (;;) {
+    ClampSlot* oldest = nullptr;
+    for (ClampSlot& s : clampSlots_)
+      if (s.fence && (oldest == nullptr || s.frame < oldest->frame)) oldest = &s;
+    if (oldest == nullptr) break;
+    ClampSlot& slot = *oldest;
+    const GLenum status = glClientWaitSync(slot.fence.id(), 0, 0);  // timeout 0: a poll
+    if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) break;
+    GLuint words[2] = {0, 0};
+    glGetNamedBufferSubData(slot.buffer.id(), 0, sizeof(words), words);
+    const double units = static_cast<double>(words[0]) + 4294967296.0 * words[1];
+    newest = units / 256.0 / slot.flatFlux;
+    slot.fence.reset();
+  }
+  return newest;
+}
+
+Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
+  layout_ = irradianceLayout(frame);
+  ensureTexture(layout_.resolution, layout_.layers);
+  ensureGridPoints(layout_.cells + 1);
+  // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer
+  // without bytes: found here, before anything is drawn.
+  GLint64 bytes = 0;
+  glGetNamedBufferParameteri64v(gridPoints_.id(), GL_BUFFER_SIZE, &bytes);
+  if (glkit::storedWidth(texture_) != layout_.resolution || bytes <= 0) {
+    error = "caustics: the driver could not allocate the irradiance layers (gridResolution " +
+            std::to_string(layout_.resolution) + ")";
+    return Result::OutOfMemory;
+  }
+  return Result::Ok;
+}
+
+void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  const IrradianceLayout& l = layout_;
+  const float zero = 0.0f;
+  glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+
+  // A slot still pending after a whole ring of frames is dropped rather than waited for.
+  ClampSlot& slot = clampSlots_[frame_ % clampSlots_.size()];
+  slot.fence.reset();
+  slot.frame = frame_++;
+  slot.flatFlux = static_cast<double>(l.resolution) * l.resolution * l.layers;
+  const GLuint zeros[2] = {0, 0};
+  glNamedBufferSubData(slot.buffer.id(), 0, sizeof(zeros), zeros);
+
+  const int pointsPerSide = l.cells + 1;
+  const WaterSurface& water = frame.water;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const double flatT = shared::fresnelTransmittance(static_cast<float>(sun.y), water.ior);
+  const double texelsPerMetre = l.resolution / l.windowSize;
+  // Triangles whose refracted area is under half a texel go to the point draw: their area ratio
+  // exceeds (nominal beam area of a triangle, half a cell squared) / (1/2 texel). Rasterised,
+  // such a triangle covers 0, 1 or 2 texel centres as it moves (a quarter texel was the bound
+  // before: with time running the physical model then changed 0.207 per frame against 0.168
+  // now, ocean_sample report --only stability --quick). Half a texel stays under flat water's
+  // own triangles (0.78 texel), which keep their exact rasterised ratio of 1.
+  const double cellTexels = l.cell * texelsPerMetre;
+  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.5);
+  const GLuint compute = vertices_.id();
+  glProgramUniform1i(compute, 4, water.cascadeCount);
+  glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),
+                     static_cast<float>(sun.z), water.ior);
+  glProgramUniform4f(compute, 7, saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
+                     static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
+  glProgramUniform1i(compute, 9, pointsPerSide);
+  for (GLuint program : {triangles_.id(), points_.id()}) {
+    glProgramUniform1f(program, 8, frame.caustics.maxIrradiance);
+    glProgramUniform1i(program, 9, pointsPerSide);
+    glProgramUniform2f(program, 10, static_cast<float>(l.resolution), pointRatio);
+  }
+
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(l.resolution),
+                     static_cast<float>(l.resolution));
+  glBindVertexArray(vertexArray_.id());
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPointView_.id());
+  const int texelsPerSide = std::max(textures.water.width, textures.water.height);
+  const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
+  for (int k = 0; k < l.layers; ++k) {
+    glm::vec4 cascades[kMaxCascades];
+    for (int c = 0; c < water.cascadeCount; ++c) {
+      const double tile = water.tileSize[c];
+      const glm::dvec2 fromOrigin = l.gridOrigin[k] - water.origin;
+      // Mip level whose texel matches the grid spacing: finer ripples cannot be carried by
+      // the grid and would alias into false caustics.
+      const double lod = std::max(0.0, std::log2(l.cell * texelsPerSide / tile));
+      cascades[c] = glm::vec4(tileFraction(fromOrigin.x, tile), tileFraction(fromOrigin.y, tile),
+                              l.cell / tile, lod);
+    }
+    glProgramUniform4fv(compute, 0, water.cascadeCount, &cascades[0].x);
+    const glm::dvec2 gridLocal = l.gridOrigin[k] - l.windowOrigin;
+    glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
+                       static_cast<float>(l.cell), static_cast<float>(l.depth[k]));
+    glUseProgram(compute);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.id());
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, slot.buffer.id());
+    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
+    glUseProgram(triangles_.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);
+    glUseProgram(points_.id());
+    glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
+  }
+  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  glGenerateTextureMipmap(texture_.id());
+  // The fragment atomics must land before the buffer is read back. (The irradiance itself is a
+  // framebuffer write, ordered before later draws that sample it without a barrier.)
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  slot.fence = glkit::Fence(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,32 @@
+#version 450 core
+// Traces every ray of the caster grid once (one invocation per cell and colour channel) and
+// stores where it lands, so that the splat pass can shape each ray's Gaussian from where its
+// neighbours land without tracing them again.
+#include "shared/common.h"
+#include "postfx/common/postfx_bindings.h"
+#include "postfx/object_caustics/postfx_object_caustics_block.h"
+
+#include "postfx/object_caustics/object_caustics_trace.glsl"
+
+layout(local_size_x = 64) in;
+
+// Layer 2c: (centre in map texels, splat sigma, 1 where the ray lands, else 0); layer 2c + 1:
+// its flux. c: the colour channel (0 only without dispersion).
+layout(binding = POSTFX_IMAGE_OBJECT_LANDINGS, rgba32f) uniform writeonly image2DArray landings;
+
+void main() {
+  int size = int(u.grid.x);
+  int index = int(gl_GlobalInvocationID.x);
+  if (index >= size * size) return;
+  int channel = int(gl_GlobalInvocationID.y);
+  ivec2 cell = ivec2(index % size, index / size);
+  vec2 centre;
+  vec3 flux;
+  float sigma;
+  bool lands = traceCell(cell, channel, centre, flux, sigma);
+  // NaN fails every comparison, Inf fails the bound: neither reaches the map.
+  lands = lands && all(lessThan(abs(flux), vec3(1e30))) && all(lessThan(abs(centre), vec2(1e30))) &&
+          sigma >= u.grid.z && sigma < 1e30;
+  imageStore(landings, ivec3(cell, 2 * channel), lands ? vec4(centre, sigma, 1.0) : vec4(0.0));
+  imageStore(landings, ivec3(cell, 2 * channel + 1), vec4(lands ? flux : vec3(0.0), 0.0));
+}

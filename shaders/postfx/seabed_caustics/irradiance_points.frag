@@ -1,0 +1,18 @@
+#version 450 core
+// Wavefront area-ratio caustics (seed 004), points: a sub-texel triangle's flux over the four
+// texels around its landing, by bilinear weights that sum to 1 (irradiance = flux / texel area,
+// the texel being the unit of area).
+#include "postfx/seabed_caustics/irradiance_count.glsl"
+
+flat in float keptFlux;
+flat in float removedFlux;
+flat in vec2 landing;
+
+layout(location = 0) out float outIrradiance;
+
+void main() {
+  vec2 w = max(1.0 - abs(gl_FragCoord.xy - landing), 0.0);
+  float share = w.x * w.y;
+  countRemoved(removedFlux * share);
+  outIrradiance = keptFlux * share;
+}
