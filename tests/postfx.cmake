@@ -5,7 +5,7 @@ set(_postfx_private ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
 
 postfx_add_test(postfx_unit_tests
   SOURCES unit/postfx_math_test.cpp unit/postfx_frame_test.cpp unit/postfx_godrays_math_test.cpp
-          unit/postfx_no_context_test.cpp unit/postfx_irradiance_layout_test.cpp
+          unit/postfx_no_context_test.cpp unit/postfx_wavefront_area_ratio_layout_test.cpp
           unit/postfx_object_caustics_frame_test.cpp unit/postfx_splat_test.cpp
           unit/postfx_object_caustics_light_frame_test.cpp unit/postfx_object_caustics_work_test.cpp
   LIBS postfx gbuffer glm::glm postfx::epoxy)

@@ -11,7 +11,7 @@ CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame) {
   CausticLightUnits units;
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
   const glm::dvec3 up = -refractSunRay(sun, 0.0, 0.0, frame.water.ior);
-  // The same floor as the plugin's frame constants (frame_constants.cpp).
+  // The same floor as the plugin's frame constants (seabed_caustics/caustics_constants.cpp).
   units.upY = std::max(up.y, 1e-6);
   units.lightScale = frame.sun.irradiance * frame.caustics.intensity;
   units.absorptionPerDepth = glm::vec3(glm::dvec3(frame.water.absorption) / units.upY);

@@ -10,7 +10,7 @@ namespace ocean::reference {
 namespace {
 
 // Mirrors of the shared shader math (shaders/postfx/seabed_caustics/postfx_caustics.h,
-// postfx_godrays.h) and of postfx/src/core/frame_constants.cpp, in double.
+// postfx_godrays.h) and of postfx/src/seabed_caustics/caustics_constants.cpp, in double.
 constexpr double kMaxSlope = 64.0;
 constexpr double kSkyDistance = 65000.0;  // godrays_common.glsl
 

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "gl_fixture.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"

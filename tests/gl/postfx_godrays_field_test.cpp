@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_scene.h"

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/context.h"
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/frame_plan.h"
 #include "core/gl_sizes.h"
 #include "core/memory_estimate.h"
@@ -221,15 +221,15 @@ TEST_F(PostfxPhysicalWindowTest, MemoryEstimateIsWhatIsAllocated) {
     postfxtest::usePhysical(frame, grid, layers, 8.0f);
     ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
     const postfx::detail::FramePlan plan = postfx::detail::planFrame(*fx, frame);
-    EXPECT_TRUE(plan.physical && plan.tile) << "the tile irradiance continues the window";
+    EXPECT_TRUE(plan.wavefrontAreaRatio && plan.tile) << "the tile irradiance continues the window";
     const std::uint64_t estimate = postfx::detail::frameMemoryBytes(fx->desc, frame, w, h, plan);
     const std::uint64_t held =
-        fx->irradiance.allocatedBytes() + fx->tileIrradiance.allocatedBytes() +
+        fx->wavefrontAreaRatio.allocatedBytes() + fx->tileIrradiance.allocatedBytes() +
         postfx::detail::textureBytes(postfx::testing::rawCausticTexture(*fx), 2);  // R16F
     std::printf("grid %d, %d layers: estimate %llu bytes, GL holds %llu (window %llu, tile %llu)\n",
                 grid, layers, static_cast<unsigned long long>(estimate),
                 static_cast<unsigned long long>(held),
-                static_cast<unsigned long long>(fx->irradiance.allocatedBytes()),
+                static_cast<unsigned long long>(fx->wavefrontAreaRatio.allocatedBytes()),
                 static_cast<unsigned long long>(fx->tileIrradiance.allocatedBytes()));
     EXPECT_EQ(estimate, held);
   }

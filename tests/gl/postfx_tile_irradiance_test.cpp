@@ -12,7 +12,7 @@
 #include <error_metrics.h>
 #include <flat_seabed_comparison.h>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
 #include "postfx_physical_util.h"

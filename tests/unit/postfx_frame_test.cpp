@@ -7,10 +7,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/frame_constants.h"
 #include "core/shadow_light.h"
 #include "core/validation.h"
 #include "core/visibility.h"
+#include "seabed_caustics/caustics_constants.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 
 namespace {

@@ -11,8 +11,8 @@
 #include "god_rays/godrays_pass.h"
 #include "object_caustics/object_caustics_pass.h"
 #include "seabed_caustics/caustics_pass.h"
-#include "seabed_caustics/irradiance_pass.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
+#include "seabed_caustics/wavefront_area_ratio_pass.h"
 
 namespace postfx {
 
@@ -23,7 +23,7 @@ struct Context {
   detail::GodRayGridPivot godRayPivot;
   testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
   float godRayUniformPhase = 0.5f;
-  detail::IrradiancePass irradiance;  // Feature::PhysicalCaustics only
+  detail::WavefrontAreaRatioPass wavefrontAreaRatio;  // Feature::PhysicalCaustics only
   // Compiled the first time a frame uses the TileIrradiance model.
   detail::TileIrradiancePass tileIrradiance;
   bool tileIrradianceReady = false;

@@ -3,10 +3,10 @@
 #include <postfx/testing.h>
 
 #include "core/context.h"
-#include "core/frame_constants.h"
 #include "core/visibility.h"
 #include "object_caustics/object_caustics_frame.h"
 #include "object_caustics/object_caustics_light_frame.h"
+#include "seabed_caustics/caustics_constants.h"
 
 namespace postfx::detail {
 namespace {
@@ -44,7 +44,7 @@ bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
 bool FramePlan::runs(Pass pass) const {
   switch (pass) {
     case Pass::CausticsIrradiance:
-      return physical;
+      return wavefrontAreaRatio;
     case Pass::CausticsTileIrradiance:
       return tile;
     case Pass::Floor:
@@ -66,7 +66,7 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   // The model's light field serves the seabed caustics and the god rays (whose shafts take their
   // light from it): computed when either draws, left out when neither does.
   const bool fieldNeeded = plan.caustics || plan.godRays;
-  plan.physical = fieldNeeded && physicalCausticsActive(context.desc, frame);
+  plan.wavefrontAreaRatio = fieldNeeded && wavefrontAreaRatioActive(context.desc, frame);
   plan.tile = fieldNeeded && tileIrradianceActive(frame);
   plan.objects = objectCausticsHaveWork(context, frame);
   if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
@@ -78,6 +78,15 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   }
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
   plan.fullScreen = plan.caustics || plan.godRays || (plan.objectMaps() && plan.floor);
+
+  auto add = [&plan](Pass pass, int light = -1, int slot = -1) {
+    plan.sequence[static_cast<std::size_t>(plan.sequenceLength++)] = {pass, light, slot};
+  };
+  for (const Pass pass : {Pass::CausticsIrradiance, Pass::CausticsTileIrradiance, Pass::Floor,
+                          Pass::Caustics, Pass::GodRays, Pass::ObjectCaustics})
+    if (plan.runs(pass)) add(pass);
+  for (int k = 0; k < plan.lightCount; ++k)
+    add(Pass::ObjectCaustics, plan.lights[static_cast<std::size_t>(k)], k);
   return plan;
 }
 

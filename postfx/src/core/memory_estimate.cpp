@@ -3,8 +3,8 @@
 #include <postfx/testing.h>
 
 #include "god_rays/godrays_constants.h"
-#include "seabed_caustics/irradiance_layout.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
 namespace {
@@ -29,8 +29,9 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
                 8;  // RG32UI: four halves
   // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
   // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window.
-  if (passes.physical)
-    t.irradiance = irradianceBytes(frame.caustics.gridResolution, frame.caustics.depthLayers);
+  if (passes.wavefrontAreaRatio)
+    t.irradiance =
+        wavefrontAreaRatioBytes(frame.caustics.gridResolution, frame.caustics.depthLayers);
   if (passes.tile) {
     t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
     // The half-resolution lookups (the TileIrradiance model's only): RG16F, irradiance and

@@ -2,6 +2,8 @@
 
 #include "core/convention_checks.h"
 #include "core/gl_enum_names.h"
+#include "god_rays/godrays_validation.h"
+#include "seabed_caustics/caustics_validation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -180,32 +182,6 @@ Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& 
   return r != Result::Ok ? r : checkDepthMode(field, ref.texture, error);
 }
 
-Result validateGodRays(const GodRaySettings& g, std::string& error) {
-  auto fail = [&error](std::string message) {
-    error = std::move(message);
-    return Result::InvalidArgument;
-  };
-  auto outside = [&fail](const char* field, auto range, const char* unit) {
-    return fail(std::string("godRays.") + field + " must be in " + rangeText(range) + unit);
-  };
-  if (!kGodRaySampleCountRange.contains(g.sampleCount))
-    return fail("godRays.sampleCount must be in " + rangeText(kGodRaySampleCountRange) + ", got " +
-                std::to_string(g.sampleCount));
-  if (!within(g.gridSpacing, kGridSpacingRange))
-    return outside("gridSpacing", kGridSpacingRange, " m");
-  if (!within(g.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
-  if (!within(g.surfaceFadeDistance, kFadeDepthRange))
-    return outside("surfaceFadeDistance", kFadeDepthRange, " m");
-  if (!within(g.depthFadeDistance, kDepthFadeDistanceRange))
-    return outside("depthFadeDistance", kDepthFadeDistanceRange, " m");
-  if (!within(g.maxDistance, kMaxMarchDistanceRange))
-    return outside("maxDistance", kMaxMarchDistanceRange, " m");
-  if (g.resolution != GodRayResolution::Full && g.resolution != GodRayResolution::Half &&
-      g.resolution != GodRayResolution::Quarter)
-    return fail("godRays.resolution is not a GodRayResolution");
-  return Result::Ok;
-}
-
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
   if (static_cast<std::uint32_t>(desc.features) >= (1u << 9)) {
     error = "CreateDesc.features: unknown feature bits";
@@ -352,52 +328,8 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
     return fail(
         "viewExtinction Host with god rays enabled: a fog after dispatch would attenuate the "
         "shafts a second time (use ViewExtinction::Plugin and fog before dispatch)");
-  const CausticsSettings& s = frame.caustics;
-  auto outside = [&fail](const char* field, auto range, const char* unit) {
-    return fail(std::string("caustics.") + field + " must be in " + rangeText(range) + unit);
-  };
-  if (!within(s.tau, kTauRange)) return outside("tau", kTauRange, "");
-  if (!within(s.reflectionWeight, kUnitRange)) return outside("reflectionWeight", kUnitRange, "");
-  if (!within(s.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
-  if (!within(s.surfaceFadeDepth, kFadeDepthRange))
-    return outside("surfaceFadeDepth", kFadeDepthRange, " m");
-  if (!within(s.triplanarSharpness, kTriplanarSharpnessRange))
-    return outside("triplanarSharpness", kTriplanarSharpnessRange, "");
-  if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", kLodBiasRange, "");
-  if (!within(s.minCascadeContrast, kUnitRange))
-    return outside("minCascadeContrast", kUnitRange, "");
-  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio &&
-      s.model != CausticsModel::TileIrradiance)
-    return fail("caustics.model is not a CausticsModel");
-  const bool powerOfTwo = s.tileResolution > 0 && (s.tileResolution & (s.tileResolution - 1)) == 0;
-  if (!kTileResolutionRange.contains(s.tileResolution) || !powerOfTwo)
-    return fail("caustics.tileResolution must be a power of two in " +
-                rangeText(kTileResolutionRange) + ", got " + std::to_string(s.tileResolution));
-  if (!within(s.tileMinModulation, kTileMinModulationRange))
-    return outside("tileMinModulation", kTileMinModulationRange, "");
-  if (s.tileLookupResolution != CausticsLookupResolution::Full &&
-      s.tileLookupResolution != CausticsLookupResolution::Half)
-    return fail("caustics.tileLookupResolution is not a CausticsLookupResolution");
-  if (s.tilePointsPerTexel != 1 && s.tilePointsPerTexel != 2)
-    return fail("caustics.tilePointsPerTexel must be 1 or 2, got " +
-                std::to_string(s.tilePointsPerTexel));
-  if (s.tileDepthLayers != 4 && s.tileDepthLayers != 8)
-    return fail("caustics.tileDepthLayers must be 4 or 8, got " +
-                std::to_string(s.tileDepthLayers));
-  if (s.model == CausticsModel::WavefrontAreaRatio &&
-      !hasFeature(create.features, Feature::PhysicalCaustics))
-    return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");
-  if (!kGridResolutionRange.contains(s.gridResolution))
-    return fail("caustics.gridResolution must be in " + rangeText(kGridResolutionRange) + ", got " +
-                std::to_string(s.gridResolution));
-  if (!within(s.windowSize, kWindowSizeRange)) return outside("windowSize", kWindowSizeRange, " m");
-  if (!kDepthLayersRange.contains(s.depthLayers))
-    return fail("caustics.depthLayers must be in " + rangeText(kDepthLayersRange) + ", got " +
-                std::to_string(s.depthLayers));
-  if (!within(s.maxReceiverDepth, kMaxReceiverDepthRange))
-    return outside("maxReceiverDepth", kMaxReceiverDepthRange, " m");
-  if (!within(s.maxIrradiance, kMaxIrradianceRange))
-    return outside("maxIrradiance", kMaxIrradianceRange, "");
+  const Result r = validateCausticsSettings(create, frame.caustics, error);
+  if (r != Result::Ok) return r;
   if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }

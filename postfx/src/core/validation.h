@@ -7,7 +7,7 @@
 
 #include <postfx/postfx.h>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 
 namespace postfx::detail {
 
@@ -50,10 +50,8 @@ inline int waterCascadeSlots(const CreateDesc& desc) {
   return desc.waterTexture == WaterTextureType::Single2D ? 1 : desc.maxWaterCascades;
 }
 
-// Range checks of the god-ray settings (part of validateFrameValues with Feature::GodRays).
-Result validateGodRays(const GodRaySettings& settings, std::string& error);
-
-// CPU-only checks of the frame: finite camera, sane projection, settings in range.
+// CPU-only checks of the frame, in this order: camera, sun, water, shadow, view extinction, then
+// each feature's settings (seabed_caustics/caustics_validation.h, god_rays/godrays_validation.h).
 Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std::string& error);
 
 // What the texture checks learnt, for the pass.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 
 static_assert(postfx::shared::GODRAYS_MAX_SAMPLES == postfx::kGodRaySampleCountRange.max,

@@ -9,7 +9,8 @@
 #include "core/convention_checks.h"
 
 #include "core/block_check.h"
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
+#include "core/shared_math.h"
 
 namespace postfx::detail {
 

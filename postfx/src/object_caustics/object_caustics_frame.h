@@ -25,7 +25,7 @@ struct ObjectLightFrame {
   double zNear = -1.0, zFar = 1.0;  // caster depth range along `direction`, anchor-relative (m)
   bool underwater = false;          // casters below the water level: light refracted by water
   double outerIor = 1.0;            // IOR around the casters (water or air)
-  // A local light (issue 18, object_caustics_light_frame.h): a perspective view from `position`
+  // A local light (object_caustics_light_frame.h): a perspective view from `position`
   // along `direction` (its axis). zNear/zFar are then distances from the light along the axis;
   // tanHalfGrid and tanHalfMap the half sides of the grid's and the map's frusta at unit
   // distance.

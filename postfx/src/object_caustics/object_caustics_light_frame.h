@@ -1,5 +1,5 @@
 #pragma once
-// A local light's view of the casters (issue 18): which casters it reaches, and the perspective
+// A local light's view of the casters: which casters it reaches, and the perspective
 // view from it that holds them, fitted in double precision. CPU only: the frame plan decides
 // from it whether the light runs, the block is built from it.
 #include <postfx/postfx.h>

@@ -1,14 +1,14 @@
 #pragma once
-// Light-map caustics of refractive and reflective casters (seed 000, section III; seed 003's
+// Light-map caustics of refractive and reflective casters ([2], section III; [3]'s
 // temporal filter), in four steps inside one timed pass:
 //   1. caster maps: the casters drawn from the sun (orthographic, fitted), nearest surface and
-//      farthest surface, positions + normals (seed 000 step 2);
+//      farthest surface, positions + normals ([2] step 2);
 //   2. splats: one point per grid cell, refracted/reflected, hit found in image space against
 //      the host's receiver depth map, Gaussian-splatted additively into the caustic map;
 //   3. (optional) temporal filter of the caustic map;
 //   4. composite: each host pixel on a receiver reads the map and adds its light.
 // Flux per ray: a regular grid in the sun's projection gives every ray the same perpendicular
-// area, so each carries E * cellArea (times Fresnel and Beer-Lambert). This is seed 000's eq. 6
+// area, so each carries E * cellArea (times Fresnel and Beer-Lambert). This is [2]'s eq. 6
 // normalisation by the visible projected area V, with V counted by the grid itself (no query,
 // no stall); its extra N.L factor is dropped because the grid already samples the projected
 // area (keeping it would lose a third of a sphere's light).

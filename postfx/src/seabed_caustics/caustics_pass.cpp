@@ -28,7 +28,7 @@ std::string shaderDefines(const CreateDesc& desc) {
   d += std::string("#define POSTFX_DISPERSION ") + flag(Feature::Dispersion) + "\n";
   d += std::string("#define POSTFX_SHADOW_MASK ") + flag(Feature::ShadowMask) + "\n";
   d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(testing::RawCausticOutput) + "\n";
-  d += std::string("#define POSTFX_PHYSICAL ") + flag(Feature::PhysicalCaustics) + "\n";
+  d += std::string("#define POSTFX_WAVEFRONT_AREA_RATIO ") + flag(Feature::PhysicalCaustics) + "\n";
   d += std::string("#define POSTFX_TRIPLANAR_WALLS ") + flag(Feature::TriplanarWalls) + "\n";
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";

@@ -6,10 +6,10 @@
 #include <glkit/texture.h>
 
 #include "core/block_check.h"
-#include "core/frame_constants.h"
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/caustics_constants.h"
 
 namespace postfx::detail {
 namespace {
@@ -33,7 +33,8 @@ float tileClamp(const FrameDesc& frame) {
 }  // namespace
 
 std::string tileVariantDefines(int groups, int cascadeMask, bool physical) {
-  std::string d = physical ? "" : "#undef POSTFX_PHYSICAL\n#define POSTFX_PHYSICAL 0\n";
+  std::string d =
+      physical ? "" : "#undef POSTFX_WAVEFRONT_AREA_RATIO\n#define POSTFX_WAVEFRONT_AREA_RATIO 0\n";
   d += "#define POSTFX_TILE_IRRADIANCE 1\n#define POSTFX_TILE_GROUPS ";
   d += std::to_string(groups);
   d += "\n#define POSTFX_TILE_CASCADES ";

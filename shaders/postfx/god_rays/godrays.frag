@@ -1,5 +1,5 @@
 #version 450 core
-// Underwater god rays (seed 002, section 4, eq. 2): march each view ray through a grid of planes
+// Underwater god rays ([1], section 4, eq. 2): march each view ray through a grid of planes
 // whose up axis follows the refracted sun and that is snapped to the world, evaluate the caustic
 // factor omega where the ray crosses a plane, and average rho_i * omega_i along the ray.
 //
@@ -9,15 +9,15 @@
 //   S(t) = rho * omega * shadow * exp(-sigma_t * depth / cos(theta_t))   (sun path in water)
 // The integral is the analytic in-scatter of a homogeneous segment (godRayInscatter) times the
 // transmittance-weighted mean of S over the samples: gamma = sum(w_i S_i) / sum(w_i),
-// w_i = dt_i * exp(-sigma_t * t_i). With w_i = 1 that is the seed's sum(rho_i omega_i) / D_n; the
+// w_i = dt_i * exp(-sigma_t * t_i). With w_i = 1 that is the paper's sum(rho_i omega_i) / D_n; the
 // weights make it an unbiased quadrature and extend the sampled part's mean over the rest of the
 // ray when sampleCount runs out before its end. L <= E * intensity * sigma_s / sigma_t: bounded.
 // Light field (omega in S): the seabed caustics' own where the frame's model has one, so that
 // the shafts line up with the pattern on the seabed below them: the TileIrradiance variant
 // (POSTFX_TILE_IRRADIANCE, built like caustics.frag's) reads the tile irradiance at the sample's
-// depth; the WavefrontAreaRatio model (POSTFX_TILE_IRRADIANCE with POSTFX_PHYSICAL) its depth
+// depth; the WavefrontAreaRatio model (POSTFX_TILE_IRRADIANCE with POSTFX_WAVEFRONT_AREA_RATIO) its depth
 // layers inside the window, blended to the tile irradiance beyond it exactly as the seabed is.
-// RayDeviation (no POSTFX_TILE_IRRADIANCE) keeps seed 002's factor from the water slopes at each
+// RayDeviation (no POSTFX_TILE_IRRADIANCE) keeps [1]'s factor from the water slopes at each
 // sample.
 // Compile-time switches: those of caustics.frag, plus POSTFX_GODRAYS_REDUCED (write the reduced-
 // size texture: always written, alpha = the pixel's distance for the depth-aware upsample).
@@ -30,9 +30,9 @@
 #include "postfx/seabed_caustics/water_sampling.glsl"
 // Unconditional: the shader library expands each file once, where it is first named, even
 // inside a disabled #if.
-#include "postfx/seabed_caustics/postfx_irradiance.h"
+#include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 #include "postfx/seabed_caustics/postfx_tile_irradiance.h"
-#include "postfx/seabed_caustics/physical_irradiance_lookup.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_lookup.glsl"
 
 // 4x4 ordered dither, fixed on screen and in time: no temporal noise.
@@ -55,13 +55,13 @@ vec3 sunSource(vec3 p, float t) {
   // coarser mip flattens the slopes before the nonlinear omega and brightens the mean (+10 % at
   // half resolution in the reference test); the upsample is what averages the texels.
   float logFootprint = log2(max(t * u.depthAndWater.w, 1e-6)) + u.oblique.z;
-#if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_PHYSICAL
+#if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_WAVEFRONT_AREA_RATIO
   float omega = tileIrradianceAt(p, depthBelow, logFootprint);
 #elif defined(POSTFX_TILE_IRRADIANCE)
   float omega = windowOrTileIrradiance(p, depthBelow, logFootprint);  // as the seabed is lit
 #else
   float physicalWeight = 0.0;
-#if POSTFX_PHYSICAL
+#if POSTFX_WAVEFRONT_AREA_RATIO
   float physical = physicalIrradiance(p, depthBelow, logFootprint, physicalWeight);
 #endif
   // Inside the physical window the slopes are not needed: no cascade is read (on GPUs).
@@ -71,7 +71,7 @@ vec3 sunSource(vec3 p, float t) {
       waterNormalFromSlopes(cascadeSlopes(lightEntryCoord(p), 1, logFootprint, cascades));
   float omega = causticFactorAcrossIncidence(u.towardSun.xyz, waterNormal, u.eta.g,
                                              u.reference.xyz, u.towardSun.w, u.reference.w);
-#if POSTFX_PHYSICAL
+#if POSTFX_WAVEFRONT_AREA_RATIO
   omega = mix(omega, physical, physicalWeight);
 #endif
 #endif

@@ -1,4 +1,4 @@
-// God-ray march math of seed 002 section 4 (grid of planes, eq. 2), shared by C++ and GLSL:
+// God-ray march math of [1] section 4 (grid of planes, eq. 2), shared by C++ and GLSL:
 // the shader runs these bodies and the unit tests evaluate the very same ones on the CPU.
 // The grid's up axis follows the refracted sun; only its x' and z' plane families are used
 // (x' = k * s and z' = k * s), so in the grid frame a view ray is a 2D DDA over a square lattice.
@@ -39,7 +39,7 @@ SHARED_FN float godRayFirstCrossing(float offset, float direction, float spacing
 }
 
 // rho of eq. (2): smooth fade-in over `surfaceFade` metres below the level (hides the grid where
-// the rays have not focused), times exp(-depth / depthFade) (the seed's out-scattering fade).
+// the rays have not focused), times exp(-depth / depthFade) (the paper's out-scattering fade).
 // 0 above the water or for NaN.
 SHARED_FN float godRayParticipation(float depthBelow, float surfaceFade, float depthFade) {
   if (!(depthBelow > 0.0f)) return 0.0f;

@@ -1,5 +1,5 @@
 #version 450 core
-// Caster maps (seed 000, section III.B step 2): each caster drawn from the light's view fitted
+// Caster maps ([2], section III.B step 2): each caster drawn from the light's view fitted
 // to the casters (the sun's orthographic one, or a local light's perspective one), writing
 // anchor-relative positions and normals.
 #include "shared/common.h"

@@ -1,5 +1,5 @@
 #version 450 core
-// Adds the caustic map's light to every host pixel lying on a receiver (seed 000, III.B last
+// Adds the caustic map's light to every host pixel lying on a receiver ([2], III.B last
 // step): the pixel is projected along the light (the sun's, or a local light's from its
 // position) into the map; pixels not on the receiver depth map's surface (the casters themselves,
 // anything between them and the light, anything in a receiver's shadow) get nothing.

@@ -1,5 +1,5 @@
 // Where the light comes from, for every object-caustics shader: the sun's parallel rays, or a
-// local light's rays spreading from its position (issue 18). Positions are anchor-relative.
+// local light's rays spreading from its position. Positions are anchor-relative.
 #ifndef POSTFX_OBJECT_CAUSTICS_LIGHT_GLSL
 #define POSTFX_OBJECT_CAUSTICS_LIGHT_GLSL
 #include "shared/common.h"

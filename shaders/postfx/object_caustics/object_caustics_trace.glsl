@@ -1,4 +1,4 @@
-// One light ray per caster-map cell (seed 000, section III.C): refract at the front surface,
+// One light ray per caster-map cell ([2], section III.C): refract at the front surface,
 // find the back surface in image space and refract out (Wyman's double refraction), or reflect
 // for metal; find the receiver in image space (eq. 1-4, secant steps with a bracketed fallback)
 // and say where it lands in the caustic map and with what flux. Included by the trace pass,
@@ -70,15 +70,15 @@ bool receiverSurface(vec3 p, out vec3 position) {
   return true;
 }
 
-// The image-space root search of seed 000 (eq. 1-4) along origin + d * ray against a surface
+// The image-space root search of [2] (eq. 1-4) along origin + d * ray against a surface
 // seen from the light (the back faces, or the receivers). g(d) = (probe - S(probe)) . L is the
-// probe's signed distance behind the surface along the light (< 0: not there yet). The seed's
+// probe's signed distance behind the surface along the light (< 0: not there yet). The paper's
 // step d <- |S(probe) - origin| converges only linearly for a ray far from the light's direction:
 // one step left the rim rays of a glass sphere up to half a radius short of the floor, so the
 // step is the secant through the last two probes (the origin is the first, g known), exact in
-// one step on a flat receiver, with the seed's step where the secant degenerates. It is taken
+// one step on a flat receiver, with the paper's step where the secant degenerates. It is taken
 // while it stays inside the bracket [lo, hi] that the signs of g give and keeps contracting;
-// otherwise (the oscillation seed 000 III.D describes) a bracketed step replaces it: false
+// otherwise (the oscillation [2] III.D describes) a bracketed step replaces it: false
 // position, or bisection when that degenerates.
 float nextDistance(float d, float g, float seedNext, bool secantStep, inout vec4 bracket,
                    inout float lastStep, inout vec2 previous) {
@@ -91,7 +91,7 @@ float nextDistance(float d, float g, float seedNext, bool secantStep, inout vec4
   float slope = (g - previous.y) / (d - previous.x);
   float secant = d - g / slope;
   // A flat slope (probe and previous equally far from the surface) or a step backwards past the
-  // origin means the secant knows nothing here: the seed's step does.
+  // origin means the secant knows nothing here: the paper's step does.
   bool useSecant = secantStep && abs(slope) > 1e-6 && secant > 0.0 && secant < 1e30;
   float candidate = useSecant ? secant : seedNext;
   previous = vec2(d, g);

@@ -1,21 +1,21 @@
 #version 450 core
-// Seabed caustics (seed 002, section 4) added into the host's HDR target. Compile-time
+// Seabed caustics ([1], section 4) added into the host's HDR target. Compile-time
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
-// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_PHYSICAL,
+// POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_WAVEFRONT_AREA_RATIO,
 // POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the variants that read the tile irradiance
 // define POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers
-// each): the TileIrradiance model (POSTFX_PHYSICAL 0; POSTFX_TILE_REDUCED where its lookups ran
+// each): the TileIrradiance model (POSTFX_WAVEFRONT_AREA_RATIO 0; POSTFX_TILE_REDUCED where its lookups ran
 // at half resolution, tile_irradiance_reduced.frag) and the WavefrontAreaRatio window continued
-// by it (POSTFX_PHYSICAL 1, looked up per pixel).
+// by it (POSTFX_WAVEFRONT_AREA_RATIO 1, looked up per pixel).
 #include "postfx/seabed_caustics/caustics_io.glsl"
 #include "shared/gbuffer_codec.h"
 #include "postfx/seabed_caustics/postfx_caustics.h"
 #include "postfx/seabed_caustics/water_sampling.glsl"
 // Unconditional: the shader library expands each file once, where it is first named, even
 // inside a disabled #if (the tile irradiance header needs it too).
-#include "postfx/seabed_caustics/postfx_irradiance.h"
+#include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 #include "postfx/seabed_caustics/postfx_tile_irradiance.h"
-#include "postfx/seabed_caustics/physical_irradiance_lookup.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_upsample.glsl"
 
@@ -77,7 +77,7 @@ void main() {
   float distance = length(viewPos);
   float logFootprint = surfaceLogFootprint(n, p, distance);
 
-#if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_PHYSICAL
+#if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_WAVEFRONT_AREA_RATIO
 #if POSTFX_TILE_REDUCED
   vec3 omega = vec3(upsampledTileIrradiance(pixel, distance));
 #else
@@ -89,11 +89,11 @@ void main() {
   float tau = u.towardSun.w;
   float reflectionWeight = u.reference.w;
   float physicalWeight = 0.0;
-#if POSTFX_PHYSICAL
+#if POSTFX_WAVEFRONT_AREA_RATIO
   // One irradiance for all channels: the mesh is refracted with the mean IOR.
   vec3 physical = vec3(physicalIrradiance(p, depthBelow, logFootprint, physicalWeight));
 #endif
-  // Inside the physical window the seed-002 lookups are not needed: zero weights skip their
+  // Inside the physical window the ray-deviation and tile lookups are not needed: zero weights skip their
   // fetches (on GPUs; a CPU rasteriser runs them masked).
   vec4 cascades = physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
@@ -102,7 +102,7 @@ void main() {
 #else
   vec3 omega = vec3(causticFactor(u.towardSun.xyz, waterNormal, u.eta.g, tau, reflectionWeight));
 #endif
-#if POSTFX_PHYSICAL
+#if POSTFX_WAVEFRONT_AREA_RATIO
   omega = mix(omega, physical, physicalWeight);
 #endif
 #endif  // the model

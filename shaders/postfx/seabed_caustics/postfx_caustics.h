@@ -1,4 +1,4 @@
-// Caustic math of seed 002 section 4 (ray deviation) and the attenuation around it, shared by C++
+// Caustic math of [1] section 4 (ray deviation) and the attenuation around it, shared by C++
 // and GLSL: the shader runs these bodies, and the tests evaluate the very same ones on the CPU.
 #ifndef POSTFX_SHARED_CAUSTICS_H
 #define POSTFX_SHARED_CAUSTICS_H
@@ -22,7 +22,7 @@ SHARED_FN vec3 waterNormalFromSlopes(vec2 slopes) {
   return normalize(vec3(-s.x, 1.0f, -s.y));
 }
 
-// Eq. (1): omega = exp(-tau * a^2). The seed takes a as the cosine between the ray and one
+// Eq. (1): omega = exp(-tau * a^2). The paper [1] takes a as the cosine between the ray and one
 // reference vector perpendicular to the unperturbed ray, i.e. the deviation across the plane of
 // incidence only, so its pattern is streaked along the sun's azimuth (gradient energy across /
 // along 3.8-4.0 with the sun near the zenith, against 1.1-1.25 in traced light). Here a is the
@@ -59,7 +59,7 @@ SHARED_FN float reflectedOmega(vec3 incident, vec3 waterNormal, float c, float t
                                  vec3(incident.x, -incident.y, incident.z), tau);
 }
 
-// The ray-deviation caustic factor for one wavelength (seed 002 with the full deviation): the
+// The ray-deviation caustic factor for one wavelength ([1] with the full deviation): the
 // sun ray refracted (eta = 1 / IOR) and reflected by the local water normal, each turned into
 // omega, blended by reflectionWeight.
 SHARED_FN float causticFactor(vec3 towardSun, vec3 waterNormal, float eta, float tau,
@@ -82,7 +82,7 @@ SHARED_FN vec3 causticFactorRgb(vec3 towardSun, vec3 waterNormal, vec3 eta, floa
   return mix(omegaT, vec3(reflectedOmega(incident, waterNormal, c, tau)), reflectionWeight);
 }
 
-// The seed's own form, kept for the god rays: a is the cosine between the ray and `across`, the
+// The paper's own form, kept for the god rays: a is the cosine between the ray and `across`, the
 // unit vector perpendicular to the plane of incidence, i.e. only the deviation across that
 // plane. Along a view ray through the water it gives shafts as sheets along the sun's azimuth;
 // the god-ray tests, reference (sample_app/reference/godray_reference.cpp) and report rows are

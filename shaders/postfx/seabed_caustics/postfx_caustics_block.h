@@ -45,8 +45,8 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
   vec4 shadowNormalOffset;   // xy: normal offset (m) per clip w per texel-fraction of the map along
                              // x and y (normalOffsetTexels * 2 / |matrix row|); zw: unused
   vec4 irradianceWindow;     // WavefrontAreaRatio: xy: camera-relative world xz of the window's
-                             // corner (m); z: 1 / window size (1/m); w: layer count, 0 = model
-                             // off (seed 002 only)
+                             // corner (m); z: 1 / window size (1/m); w: layer count (0: the
+                             // model is off)
   vec4 irradianceDepths[2];  // depth below the level of layers 0-3 and 4-7 (m)
   vec4 tileIrradiance;       // TileIrradiance: x: depth layers (0 = model off), y: 1 / deepest
                              // layer's depth (1/m); zw: unused. Per cascade, cascadeSkip w:

@@ -12,7 +12,7 @@
 #define POSTFX_SHARED_TILE_IRRADIANCE_H
 #include "shared/common.h"
 #include "postfx/seabed_caustics/postfx_caustics.h"
-#include "postfx/seabed_caustics/postfx_irradiance.h"
+#include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 
 SHARED_BEGIN
 

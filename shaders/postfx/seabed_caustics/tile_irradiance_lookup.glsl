@@ -67,7 +67,7 @@ float tileIrradianceAt(vec3 p, float depthBelow, float logFootprint) {
   return e;
 }
 
-#if POSTFX_PHYSICAL
+#if POSTFX_WAVEFRONT_AREA_RATIO
 // The WavefrontAreaRatio window's irradiance, continued beyond its edge by the tile irradiance:
 // the same physics (irradiance of the refracted sun, in the same units) without a window, so
 // the fade band blends two estimates of one light rather than two looks. Outside the window

@@ -11,7 +11,7 @@
 #include "shared/gbuffer_codec.h"
 #include "postfx/seabed_caustics/postfx_caustics.h"
 #include "postfx/seabed_caustics/water_sampling.glsl"
-#include "postfx/seabed_caustics/postfx_irradiance.h"
+#include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 #include "postfx/seabed_caustics/postfx_tile_irradiance.h"
 #include "postfx/seabed_caustics/tile_irradiance_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_upsample.glsl"

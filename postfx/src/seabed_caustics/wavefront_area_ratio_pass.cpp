@@ -1,4 +1,4 @@
-#include "seabed_caustics/irradiance_pass.h"
+#include "seabed_caustics/wavefront_area_ratio_pass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,28 +6,28 @@
 #include <glkit/texture.h>
 
 #include "core/block_check.h"
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
 
 namespace postfx::detail {
 
-Result IrradiancePass::init(const std::string& defines, std::string& error) {
-  const Result r =
-      buildPrograms(defines,
-                    {{vertices_,
-                      "postfx.caustics_irradiance.grid",
-                      {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/irradiance_vertices.comp"}}},
-                     {triangles_,
-                      "postfx.caustics_irradiance.triangles",
-                      {{GL_VERTEX_SHADER, "postfx/seabed_caustics/irradiance.vert"},
-                       {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/irradiance.frag"}}},
-                     {points_,
-                      "postfx.caustics_irradiance.points",
-                      {{GL_VERTEX_SHADER, "postfx/seabed_caustics/irradiance_points.vert"},
-                       {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/irradiance_points.frag"}}}},
-                    error);
+Result WavefrontAreaRatioPass::init(const std::string& defines, std::string& error) {
+  const Result r = buildPrograms(
+      defines,
+      {{vertices_,
+        "postfx.caustics_irradiance.grid",
+        {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_vertices.comp"}}},
+       {triangles_,
+        "postfx.caustics_irradiance.triangles",
+        {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.frag"}}},
+       {points_,
+        "postfx.caustics_irradiance.points",
+        {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
+      error);
   if (r != Result::Ok) return r;
   framebuffer_ = glkit::createFramebuffer("postfx.caustics_irradiance.framebuffer");
   vertexArray_ = glkit::createVertexArray("postfx.caustics_irradiance.vao");
@@ -37,7 +37,7 @@ Result IrradiancePass::init(const std::string& defines, std::string& error) {
   return Result::Ok;
 }
 
-void IrradiancePass::ensureGridPoints(int pointsPerSide) {
+void WavefrontAreaRatioPass::ensureGridPoints(int pointsPerSide) {
   if (gridPoints_ && gridPointsPerSide_ == pointsPerSide) return;
   // The old size goes first: never two of them allocated at once.
   gridPointView_.reset();
@@ -51,24 +51,24 @@ void IrradiancePass::ensureGridPoints(int pointsPerSide) {
   gridPointsPerSide_ = pointsPerSide;
 }
 
-void IrradiancePass::ensureTexture(int resolution, int layers) {
+void WavefrontAreaRatioPass::ensureTexture(int resolution, int layers) {
   if (texture_ && textureResolution_ == resolution && textureLayers_ == layers) return;
   texture_.reset();  // the old size goes first: never two of them allocated at once
   texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_irradiance");
   // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
   // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
   // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.
-  glTextureStorage3D(texture_.id(), irradianceMipLevels(resolution), GL_R32F, resolution,
+  glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(resolution), GL_R32F, resolution,
                      resolution, layers);
   textureResolution_ = resolution;
   textureLayers_ = layers;
 }
 
-std::uint64_t IrradiancePass::allocatedBytes() const {
+std::uint64_t WavefrontAreaRatioPass::allocatedBytes() const {
   return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.id());  // R32F
 }
 
-double IrradiancePass::pollClampCounts() {
+double WavefrontAreaRatioPass::pollClampCounts() {
   // Oldest first, so the value returned is the newest one completed.
   double newest = -1.0;
   for (;;) {
@@ -88,8 +88,8 @@ double IrradiancePass::pollClampCounts() {
   return newest;
 }
 
-Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
-  layout_ = irradianceLayout(frame);
+Result WavefrontAreaRatioPass::reserve(const FrameDesc& frame, std::string& error) {
+  layout_ = wavefrontAreaRatioLayout(frame);
   ensureTexture(layout_.resolution, layout_.layers);
   ensureGridPoints(layout_.cells + 1);
   // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer
@@ -104,8 +104,8 @@ Result IrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   return Result::Ok;
 }
 
-void IrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
-  const IrradianceLayout& l = layout_;
+void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  const WavefrontAreaRatioLayout& l = layout_;
   const float zero = 0.0f;
   glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
 

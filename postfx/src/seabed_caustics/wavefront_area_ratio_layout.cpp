@@ -1,25 +1,25 @@
-#include "seabed_caustics/irradiance_layout.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glkit/texture.h>
 
-#include "core/frame_constants.h"
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
 
 namespace postfx::detail {
 
-double irradianceLayerDepth(int k, int layers, double maxDepth) {
+double wavefrontAreaRatioLayerDepth(int k, int layers, double maxDepth) {
   const double f = static_cast<double>(k + 1) / static_cast<double>(std::max(layers, 1));
   return maxDepth * f * f;
 }
 
-IrradianceLayout irradianceLayout(const FrameDesc& frame) {
+WavefrontAreaRatioLayout wavefrontAreaRatioLayout(const FrameDesc& frame) {
   const CausticsSettings& s = frame.caustics;
-  IrradianceLayout l;
+  WavefrontAreaRatioLayout l;
   l.resolution = s.gridResolution;
-  l.layers = std::clamp(s.depthLayers, 1, kMaxIrradianceLayers);
+  l.layers = std::clamp(s.depthLayers, 1, kMaxWavefrontAreaRatioLayers);
   l.windowSize = s.windowSize;
   l.texel = l.windowSize / l.resolution;
   const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
@@ -37,20 +37,20 @@ IrradianceLayout irradianceLayout(const FrameDesc& frame) {
   const glm::dvec2 drift = glm::dvec2(down.x, down.z) / std::max(-down.y, 1e-6);
   const glm::dvec2 windowCentre = l.windowOrigin + 0.5 * l.windowSize;
   for (int k = 0; k < l.layers; ++k) {
-    l.depth[k] = irradianceLayerDepth(k, l.layers, s.maxReceiverDepth);
+    l.depth[k] = wavefrontAreaRatioLayerDepth(k, l.layers, s.maxReceiverDepth);
     const glm::dvec2 start = windowCentre - drift * l.depth[k] - 0.5 * gridSpan;
     l.gridOrigin[k] = glm::floor(start / l.cell) * l.cell;
   }
   return l;
 }
 
-int irradianceMipLevels(int resolution) {
+int wavefrontAreaRatioMipLevels(int resolution) {
   return std::min(glkit::mipLevelCount(resolution), shared::IRRADIANCE_MIP_LEVELS + 1);
 }
 
-std::uint64_t irradianceBytes(int gridResolution, int depthLayers) {
+std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers) {
   std::uint64_t texels = 0;
-  for (int level = 0; level < irradianceMipLevels(gridResolution); ++level) {
+  for (int level = 0; level < wavefrontAreaRatioMipLevels(gridResolution); ++level) {
     const std::uint64_t side = std::max(gridResolution >> level, 1);
     texels += side * side;
   }

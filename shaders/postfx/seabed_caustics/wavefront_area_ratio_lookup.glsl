@@ -1,7 +1,7 @@
-// The physical model's (seed 004) irradiance lookup, shared by the caustics and the god rays:
+// The wavefront area ratio's [4] irradiance lookup, shared by the caustics and the god rays:
 // the depth-layered window texture the irradiance pass rendered this frame. Include after
-// caustics_io.glsl and postfx/seabed_caustics/postfx_irradiance.h.
-#if POSTFX_PHYSICAL
+// caustics_io.glsl and postfx/seabed_caustics/postfx_wavefront_area_ratio.h.
+#if POSTFX_WAVEFRONT_AREA_RATIO
 
 layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray causticIrradiance;
 

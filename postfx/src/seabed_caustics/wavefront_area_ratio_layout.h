@@ -11,35 +11,35 @@
 
 namespace postfx::detail {
 
-inline constexpr int kMaxIrradianceLayers = 8;
+inline constexpr int kMaxWavefrontAreaRatioLayers = 8;
 // The surface grid spans the window plus this fraction of it on each side: the refracted rays
 // drift sideways with the slopes, and light entering outside the window's shadow on the
 // surface still lands inside. Drift beyond it shows as a dimmer rim, inside the fade band
 // (shared::IRRADIANCE_FADE_BAND).
 inline constexpr double kGridMargin = 0.125;
 
-struct IrradianceLayout {
+struct WavefrontAreaRatioLayout {
   int resolution = 0;  // texels and grid cells' nominal count per side
   int layers = 0;
   double windowSize = 0.0, texel = 0.0;
   glm::dvec2 windowOrigin{0.0};  // world xz of texel (0, 0)'s corner
   double cell = 0.0;             // grid spacing (m)
   int cells = 0;                 // grid cells per side (resolution + 1: snapping headroom)
-  double depth[kMaxIrradianceLayers] = {};
-  glm::dvec2 gridOrigin[kMaxIrradianceLayers] = {};  // world xz of grid vertex (0, 0)
+  double depth[kMaxWavefrontAreaRatioLayers] = {};
+  glm::dvec2 gridOrigin[kMaxWavefrontAreaRatioLayers] = {};  // world xz of grid vertex (0, 0)
 };
 
 // Depth of layer k of `layers` (m below the level).
-double irradianceLayerDepth(int k, int layers, double maxDepth);
+double wavefrontAreaRatioLayerDepth(int k, int layers, double maxDepth);
 
 // Requires validated settings and a sun above the horizon.
-IrradianceLayout irradianceLayout(const FrameDesc& frame);
+WavefrontAreaRatioLayout wavefrontAreaRatioLayout(const FrameDesc& frame);
 
 // Mip levels of the irradiance layers (the base and up to shared::IRRADIANCE_MIP_LEVELS more).
-int irradianceMipLevels(int resolution);
+int wavefrontAreaRatioMipLevels(int resolution);
 // GPU memory the pass allocates for `gridResolution` and `depthLayers`: the R32F layers with
 // their mip levels, and the grid points (two vec4 per point, (gridResolution + 2)^2 points).
-// The memory estimate and IrradiancePass::allocatedBytes() must agree (a test checks).
-std::uint64_t irradianceBytes(int gridResolution, int depthLayers);
+// The memory estimate and WavefrontAreaRatioPass::allocatedBytes() must agree (a test checks).
+std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers);
 
 }  // namespace postfx::detail

@@ -1,5 +1,5 @@
 #version 450 core
-// Wavefront area-ratio caustics (seed 004), step 1 of 3: every surface grid point refracted
+// Wavefront area-ratio caustics [4], step 1 of 3: every surface grid point refracted
 // onto the receiver, once per layer, into a buffer both draws read (each grid point is shared
 // by up to six triangles: computed once, not per triangle). Per point, two vec4s: (receiver xy,
 // beam xy) in irradiance texels from the window corner, and (transmittance ratio, 0, 0, 0).
@@ -8,7 +8,7 @@
 #include "postfx/common/postfx_bindings.h"
 #include "postfx/seabed_caustics/postfx_caustics_block.h"  // POSTFX_MAX_CASCADES (its block goes unused here)
 #include "postfx/seabed_caustics/postfx_caustics.h"
-#include "postfx/seabed_caustics/postfx_irradiance.h"
+#include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 

@@ -1,4 +1,4 @@
-// Wavefront area-ratio caustics (seed 004), shared by C++ and GLSL: the irradiance pass's
+// Wavefront area-ratio caustics [4], shared by C++ and GLSL: the irradiance pass's
 // per-vertex refraction and the caustics pass's depth-layer interpolation, so the tests can
 // evaluate exactly what the shaders do.
 #ifndef POSTFX_SHARED_IRRADIANCE_H

@@ -1,5 +1,5 @@
 #version 450 core
-// Wavefront area-ratio caustics (seed 004), triangles: irradiance = transmittance * beam area /
+// Wavefront area-ratio caustics [4], triangles: irradiance = transmittance * beam area /
 // receiver area. The ratio is the cross product of the beam position's screen derivatives
 // (exact: the position is affine over the triangle, and helper invocations extrapolate the same
 // plane), in beam texels per receiver texel, the signed area's magnitude so folded triangles
@@ -7,8 +7,8 @@
 // Triangles smaller than half a texel are left to the point draw: a texel centre would catch
 // one with a probability of its area and then take its whole (huge) irradiance -- right on
 // average, but noisy exactly at the caustic lines. The point deposits their flux instead.
-#include "postfx/seabed_caustics/irradiance_common.glsl"
-#include "postfx/seabed_caustics/irradiance_count.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_common.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_count.glsl"
 
 noperspective in vec2 beamTexels;
 noperspective in float transmit;

@@ -1,4 +1,4 @@
-#include "core/frame_constants.h"
+#include "seabed_caustics/caustics_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,29 +11,10 @@
 #include "core/shadow_light.h"
 
 #include "core/block_check.h"
-#include "seabed_caustics/irradiance_layout.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
-
-double tileFraction(double metres, double period) {
-  const double f = metres / period - std::floor(metres / period);
-  return f >= 1.0 ? 0.0 : f;  // floor rounding can land exactly on 1
-}
-
-glm::dvec3 refractedSunDown(const glm::dvec3& towardSun, double ior) {
-  return glm::refract(-towardSun, glm::dvec3(0.0, 1.0, 0.0), 1.0 / ior);
-}
-
-glm::dvec3 incidencePlaneNormal(const glm::dvec3& towardSun) {
-  const glm::dvec3 h(-towardSun.z, 0.0, towardSun.x);
-  const double len = glm::length(h);
-  return len > 1e-9 ? h / len : glm::dvec3(1.0, 0.0, 0.0);
-}
-
-glm::dmat3 viewToWorldRotation(const glm::mat4& view) {
-  return glm::transpose(glm::dmat3(glm::mat3(view)));
-}
 
 namespace {
 
@@ -75,7 +56,7 @@ glm::dvec3 sunDiscLandingCovariance(const glm::dvec3& towardSun, double ior, dou
   return v * glm::dvec3(a.x * a.x + b.x * b.x, a.x * a.y + b.x * b.y, a.y * a.y + b.y * b.y);
 }
 
-bool physicalCausticsActive(const CreateDesc& create, const FrameDesc& frame) {
+bool wavefrontAreaRatioActive(const CreateDesc& create, const FrameDesc& frame) {
   return hasFeature(create.features, Feature::PhysicalCaustics) &&
          frame.caustics.model == CausticsModel::WavefrontAreaRatio && frame.sun.direction.y > 0.0;
 }
@@ -176,8 +157,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     b.shadowNormalOffset =
         glm::vec4(saturatedFloat(perTexel.x), saturatedFloat(perTexel.y), 0.0f, 0.0f);
   }
-  if (physicalCausticsActive(create, frame)) {
-    const IrradianceLayout l = irradianceLayout(frame);
+  if (wavefrontAreaRatioActive(create, frame)) {
+    const WavefrontAreaRatioLayout l = wavefrontAreaRatioLayout(frame);
     b.irradianceWindow =
         glm::vec4(static_cast<float>(l.windowOrigin.x - camera.position.x),
                   static_cast<float>(l.windowOrigin.y - camera.position.z),

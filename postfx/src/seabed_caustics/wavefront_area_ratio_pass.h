@@ -1,5 +1,5 @@
 #pragma once
-// The WavefrontAreaRatio model's irradiance pass (seed 004). Per depth layer: a compute step
+// The WavefrontAreaRatio model's irradiance pass [4]. Per depth layer: a compute step
 // refracts every surface grid point onto the receiver (into a buffer); one instanced strip
 // draw rasterises the refracted triangles, blended additively into a layer of a plugin-owned
 // GL_R32F 2D array; a point draw deposits the flux of the triangles too small to rasterise
@@ -24,11 +24,11 @@
 
 #include "core/gpu_timers.h"
 #include "core/validation.h"
-#include "seabed_caustics/irradiance_layout.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
 
-class IrradiancePass {
+class WavefrontAreaRatioPass {
  public:
   Result init(const std::string& defines, std::string& error);
   bool ready() const { return triangles_.id() != 0; }
@@ -46,7 +46,7 @@ class IrradiancePass {
   void draw(const FrameDesc& frame, const ValidatedTextures& textures);
 
   GLuint texture() const { return texture_.id(); }
-  const IrradianceLayout& layout() const { return layout_; }
+  const WavefrontAreaRatioLayout& layout() const { return layout_; }
   // What its texture and grid-point buffer hold now, asked of GL (0 before the first frame).
   std::uint64_t allocatedBytes() const;
 
@@ -62,7 +62,7 @@ class IrradiancePass {
   glkit::Buffer gridPoints_;
   glkit::Texture gridPointView_;  // the grid points' RGBA32F buffer-texture view
   int gridPointsPerSide_ = 0;
-  IrradianceLayout layout_{};
+  WavefrontAreaRatioLayout layout_{};
   struct ClampSlot {
     glkit::Buffer buffer;
     glkit::Fence fence;

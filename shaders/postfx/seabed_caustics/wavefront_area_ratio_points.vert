@@ -1,12 +1,12 @@
 #version 450 core
-// Wavefront area-ratio caustics (seed 004), step 3 of 3: one point per grid triangle (vertex
+// Wavefront area-ratio caustics [4], step 3 of 3: one point per grid triangle (vertex
 // 2 c + t is triangle t of cell c, the strip's split), kept only for triangles whose refracted
 // area is under half a texel (area ratio above raster.y, the triangle draw's exact
 // complement). It deposits the triangle's whole flux around its landing, split over the four
 // texels nearest to it by bilinear weights (a 2-texel point): flux-exact, and as the water
 // moves the flux slides between texels instead of jumping from one to the next (which flickered
 // where folds are drawn as points).
-#include "postfx/seabed_caustics/irradiance_common.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_common.glsl"
 
 flat out float keptFlux;     // texel-areas of flat-water flux this point adds
 flat out float removedFlux;  // what the clamp took from it

@@ -6,13 +6,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/frame_constants.h"
-#include "seabed_caustics/irradiance_layout.h"
+#include "core/frame_geometry.h"
+#include "core/shared_math.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace {
 
-using postfx::detail::irradianceLayout;
-using postfx::detail::IrradianceLayout;
+using postfx::detail::wavefrontAreaRatioLayout;
+using postfx::detail::WavefrontAreaRatioLayout;
 
 postfx::FrameDesc physicalFrame(const glm::dvec3& camera) {
   postfx::FrameDesc f;
@@ -31,17 +32,17 @@ bool isMultiple(double value, double step) {
   return std::abs(k - std::round(k)) < 1e-6;
 }
 
-TEST(IrradianceLayout, LayerDepthsAreQuadraticUpToTheMaximum) {
-  const IrradianceLayout l = irradianceLayout(physicalFrame(glm::dvec3(0.0)));
+TEST(WavefrontAreaRatioLayout, LayerDepthsAreQuadraticUpToTheMaximum) {
+  const WavefrontAreaRatioLayout l = wavefrontAreaRatioLayout(physicalFrame(glm::dvec3(0.0)));
   ASSERT_EQ(l.layers, 4);
   const double expected[] = {1.0, 4.0, 9.0, 16.0};
   for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(l.depth[k], expected[k]);
 }
 
-TEST(IrradianceLayout, WindowAndGridsAreSnappedInWorldSpace) {
+TEST(WavefrontAreaRatioLayout, WindowAndGridsAreSnappedInWorldSpace) {
   for (const glm::dvec3 camera :
        {glm::dvec3(3.3, -2.0, 7.1), glm::dvec3(1e6 + 0.37, -5.0, -1e6 - 0.91)}) {
-    const IrradianceLayout a = irradianceLayout(physicalFrame(camera));
+    const WavefrontAreaRatioLayout a = wavefrontAreaRatioLayout(physicalFrame(camera));
     // The window snaps to texels of the coarsest mip level the lookup filters with, so that
     // every level stays on one world grid as the camera moves.
     const double snap = a.texel * double(1 << postfx::shared::IRRADIANCE_MIP_LEVELS);
@@ -53,8 +54,8 @@ TEST(IrradianceLayout, WindowAndGridsAreSnappedInWorldSpace) {
     // A move within the step changes nothing; 10 whole steps move everything by exactly that.
     const glm::dvec3 small = camera + glm::dvec3(0.3 * snap, 0.0, -0.2 * snap);
     const glm::dvec3 whole = camera + glm::dvec3(10.0 * snap, 0.0, 0.0);
-    const IrradianceLayout b = irradianceLayout(physicalFrame(small));
-    const IrradianceLayout c = irradianceLayout(physicalFrame(whole));
+    const WavefrontAreaRatioLayout b = wavefrontAreaRatioLayout(physicalFrame(small));
+    const WavefrontAreaRatioLayout c = wavefrontAreaRatioLayout(physicalFrame(whole));
     const double sameInStep = std::abs(b.windowOrigin.x - a.windowOrigin.x) +
                               std::abs(b.windowOrigin.y - a.windowOrigin.y);
     const double step = (c.windowOrigin.x - a.windowOrigin.x) / snap;
@@ -74,9 +75,9 @@ TEST(IrradianceLayout, WindowAndGridsAreSnappedInWorldSpace) {
 
 // Light reaching the window from a layer's depth entered the surface over the window moved
 // toward the sun by the flat-water drift; the grid must cover that with the margin around it.
-TEST(IrradianceLayout, GridsCoverTheWindowsSourceOnTheSurface) {
+TEST(WavefrontAreaRatioLayout, GridsCoverTheWindowsSourceOnTheSurface) {
   const postfx::FrameDesc f = physicalFrame(glm::dvec3(5.0, -3.0, 5.0));
-  const IrradianceLayout l = irradianceLayout(f);
+  const WavefrontAreaRatioLayout l = wavefrontAreaRatioLayout(f);
   const glm::dvec3 down = postfx::detail::refractedSunDown(f.sun.direction, f.water.ior);
   const glm::dvec2 drift = glm::dvec2(down.x, down.z) / -down.y;
   const double margin = postfx::detail::kGridMargin * l.windowSize;

@@ -1,9 +1,9 @@
 #version 450 core
-// Wavefront area-ratio caustics (seed 004), step 2 of 3: the refracted grid as one triangle
+// Wavefront area-ratio caustics [4], step 2 of 3: the refracted grid as one triangle
 // strip per row (instance = row): vertex 2i + b of row j is grid point (i, j + b), placed where
 // its ray meets the receiver. Its position in the incoming beam travels along for the fragment
 // stage's area ratio.
-#include "postfx/seabed_caustics/irradiance_common.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_common.glsl"
 
 noperspective out vec2 beamTexels;  // incoming-beam position, in irradiance texels
 noperspective out float transmit;   // Fresnel transmittance relative to flat water

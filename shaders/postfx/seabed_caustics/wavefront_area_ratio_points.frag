@@ -1,8 +1,8 @@
 #version 450 core
-// Wavefront area-ratio caustics (seed 004), points: a sub-texel triangle's flux over the four
+// Wavefront area-ratio caustics [4], points: a sub-texel triangle's flux over the four
 // texels around its landing, by bilinear weights that sum to 1 (irradiance = flux / texel area,
 // the texel being the unit of area).
-#include "postfx/seabed_caustics/irradiance_count.glsl"
+#include "postfx/seabed_caustics/wavefront_area_ratio_count.glsl"
 
 flat in float keptFlux;
 flat in float removedFlux;

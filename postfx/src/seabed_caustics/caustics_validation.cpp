@@ -1,0 +1,63 @@
+// Range checks of the seabed caustics' settings, every model's (a frame may switch models).
+#include "seabed_caustics/caustics_validation.h"
+
+#include <string>
+#include <utility>
+
+namespace postfx::detail {
+
+Result validateCausticsSettings(const CreateDesc& create, const CausticsSettings& s,
+                                std::string& error) {
+  auto fail = [&error](std::string message) {
+    error = std::move(message);
+    return Result::InvalidArgument;
+  };
+  auto outside = [&fail](const char* field, auto range, const char* unit) {
+    return fail(std::string("caustics.") + field + " must be in " + rangeText(range) + unit);
+  };
+  if (!within(s.tau, kTauRange)) return outside("tau", kTauRange, "");
+  if (!within(s.reflectionWeight, kUnitRange)) return outside("reflectionWeight", kUnitRange, "");
+  if (!within(s.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
+  if (!within(s.surfaceFadeDepth, kFadeDepthRange))
+    return outside("surfaceFadeDepth", kFadeDepthRange, " m");
+  if (!within(s.triplanarSharpness, kTriplanarSharpnessRange))
+    return outside("triplanarSharpness", kTriplanarSharpnessRange, "");
+  if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", kLodBiasRange, "");
+  if (!within(s.minCascadeContrast, kUnitRange))
+    return outside("minCascadeContrast", kUnitRange, "");
+  if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio &&
+      s.model != CausticsModel::TileIrradiance)
+    return fail("caustics.model is not a CausticsModel");
+  const bool powerOfTwo = s.tileResolution > 0 && (s.tileResolution & (s.tileResolution - 1)) == 0;
+  if (!kTileResolutionRange.contains(s.tileResolution) || !powerOfTwo)
+    return fail("caustics.tileResolution must be a power of two in " +
+                rangeText(kTileResolutionRange) + ", got " + std::to_string(s.tileResolution));
+  if (!within(s.tileMinModulation, kTileMinModulationRange))
+    return outside("tileMinModulation", kTileMinModulationRange, "");
+  if (s.tileLookupResolution != CausticsLookupResolution::Full &&
+      s.tileLookupResolution != CausticsLookupResolution::Half)
+    return fail("caustics.tileLookupResolution is not a CausticsLookupResolution");
+  if (s.tilePointsPerTexel != 1 && s.tilePointsPerTexel != 2)
+    return fail("caustics.tilePointsPerTexel must be 1 or 2, got " +
+                std::to_string(s.tilePointsPerTexel));
+  if (s.tileDepthLayers != 4 && s.tileDepthLayers != 8)
+    return fail("caustics.tileDepthLayers must be 4 or 8, got " +
+                std::to_string(s.tileDepthLayers));
+  if (s.model == CausticsModel::WavefrontAreaRatio &&
+      !hasFeature(create.features, Feature::PhysicalCaustics))
+    return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");
+  if (!kGridResolutionRange.contains(s.gridResolution))
+    return fail("caustics.gridResolution must be in " + rangeText(kGridResolutionRange) + ", got " +
+                std::to_string(s.gridResolution));
+  if (!within(s.windowSize, kWindowSizeRange)) return outside("windowSize", kWindowSizeRange, " m");
+  if (!kDepthLayersRange.contains(s.depthLayers))
+    return fail("caustics.depthLayers must be in " + rangeText(kDepthLayersRange) + ", got " +
+                std::to_string(s.depthLayers));
+  if (!within(s.maxReceiverDepth, kMaxReceiverDepthRange))
+    return outside("maxReceiverDepth", kMaxReceiverDepthRange, " m");
+  if (!within(s.maxIrradiance, kMaxIrradianceRange))
+    return outside("maxIrradiance", kMaxIrradianceRange, "");
+  return Result::Ok;
+}
+
+}  // namespace postfx::detail
