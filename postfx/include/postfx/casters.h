@@ -1,6 +1,7 @@
 #pragma once
-// Caustic casters for Feature::ObjectCaustics (seeds 000 and 003): glass and metal objects the
-// plugin draws from the sun's view itself, from the host's own vertex buffers, every frame.
+// Caustic casters for Feature::ObjectCaustics: glass and metal objects the plugin draws from
+// the sun's (and each local light's) view itself, from the host's own vertex buffers, every
+// frame, traces a ray grid through and splats where the rays land (docs/passes.md).
 //
 // Ownership: the buffers are host-owned GL names. The plugin reads them only inside dispatch()
 // through a vertex array of its own (DSA attachment: the host's VAO, GL_ARRAY_BUFFER and
@@ -29,9 +30,9 @@ inline constexpr int kMaxCasters = 64;  // casters per frame
 
 // Limits of the glTF-style glass fields of CasterMaterial.
 // A rough surface spreads a ray's light over a cone; its splat grows with the distance to the
-// receiver up to this standard deviation (caster-map texels). The cap bounds the sprite
-// (2 * ceil(3 * 16) + 1 = 97 texels a side) and so the cost of a rough caster; beyond it the
-// caustic is too wide to be more than a faint wash anyway.
+// receiver up to this standard deviation (caster-map texels). The cap (on the round part, and
+// apart on the stretch along the rays' spread) bounds a sprite to 2 * ceil(3 * 16 * sqrt(2)) + 1
+// = 137 texels a side, and so the cost of a rough caster; wider would be a faint wash anyway.
 inline constexpr float kMaxRoughSplatSigma = 16.0f;
 // KHR_materials_dispersion's value is 20 / Abbe number; [0, 1] are real materials, rutile is
 // 2.04. At this cap the half spread is a quarter of (ior - 1), so the red index stays above 1.
@@ -44,8 +45,8 @@ enum class CasterMaterialType : std::uint32_t {
 
 struct CasterMaterial {
   CasterMaterialType type = CasterMaterialType::Refractive;
-  // Absolute index of refraction of the object, (1, 3] (1 accepted: no bending). Under water the
-  // plugin divides it by WaterSurface::ior itself.
+  // Absolute index of refraction of the object, [1, 3] (1: no bending). Under water the plugin
+  // divides it by WaterSurface::ior itself.
   float ior = 1.5f;
   // Refractive: Beer-Lambert absorption per metre inside the object, linear RGB, [0, 1e4]:
   // I = I0 * exp(-absorption * d), d the path length between the two surfaces. glTF's
@@ -54,8 +55,8 @@ struct CasterMaterial {
   // Reflective: specular colour at normal incidence (Schlick's F0), linear RGB, [0, 1].
   glm::vec3 reflectance{0.95f};
 
-  // glTF-style glass (KHR_materials_transmission, _volume, _dispersion). The defaults
-  // are clear, smooth, solid glass: the behaviour before these fields existed.
+  // glTF-style glass (KHR_materials_transmission, _volume, _dispersion); the defaults are
+  // clear, smooth, solid glass.
   //
   // Refractive: the share of the light crossing the surface that goes on as a refracted ray,
   // [0, 1] (glTF transmissionFactor x (1 - metallic)); the rest is scattered diffusely by the
@@ -96,10 +97,10 @@ struct CasterMesh {
   // Counts are at most 2^31 - 1 (one GL draw). The buffers must hold every vertex (position
   // and normal of the last one included) and index from the offsets on; checked without
   // overflow for any value, else SizeMismatch.
-  std::int64_t vertexCount = 0;  // vertices in the buffer from baseOffset on, >= 3
+  std::int64_t vertexCount = 0;  // vertices from baseOffset on, >= 1 (>= 3 when non-indexed)
   std::int64_t indexCount = 0;   // indices (indexed draws), >= 3, multiple of 3 not required
   std::int64_t baseOffset = 0;   // byte offset of vertex 0 in vertexBuffer, >= 0
-  std::int64_t indexOffset = 0;  // byte offset of index 0 in indexBuffer, >= 0
+  std::int64_t indexOffset = 0;  // byte offset of index 0, >= 0, a multiple of the index size
   int positionOffset = 0;        // bytes, >= 0, position + 12 <= stride
   int normalOffset = 12;         // bytes, < 0 = none, normal + 12 <= stride
   int stride = 24;               // bytes, [12, 2048]
@@ -130,10 +131,9 @@ struct ObjectCausticsSettings {
   // error), [1, 8]. When a step oscillates or leaves the bracketed root, a
   // false-position/bisection step replaces it.
   int iterations = 1;
-  // The same search for where a refracted ray leaves the glass through its back faces (Wyman's
-  // double refraction), [1, 8]. Curved glass needs more than the receivers: a 1 m glass sphere
-  // loses 16 % of its flux at 1 (rim rays exit through a misplaced normal and are lost to total
-  // internal reflection), 3 % at 3, 0.2 % at 5.
+  // The same search for where a refracted ray leaves the glass through its back faces (double
+  // refraction), [1, 8]. Curved glass needs more than the receivers: too few misplace the exit
+  // normal of rim rays, which are then lost to total internal reflection (docs/passes.md).
   int exitIterations = 5;
   // Gaussian splat standard deviation in caustic-map texels, [0.5, 8].
   float splatRadius = 1.0f;
@@ -142,14 +142,14 @@ struct ObjectCausticsSettings {
   float footprintScale = 2.0f;
   // Multiplier on the sun irradiance for the added light, [0, 1e4].
   float intensity = 1.0f;
-  // Temporal filter: each frame's sun caustic map is blended with the previous one (weight
-  // temporalWeight on the history), the history clamped to the new frame's 3x3 neighbourhood
-  // so that a moving caustic leaves no trail. The history lives in the map's texel grid, which
-  // is fitted around the casters every frame, so it is reset whenever that grid moves: when the
-  // sun turns or any caster moves (its bounds change). A moving caster is therefore never
-  // filtered; still casters under moving water are. Local lights' maps are not filtered.
+  // Temporal filter of the sun's caustic map: blended with the previous frame's (weight
+  // temporalWeight on the history, clamped to the new frame's 3x3 neighbourhood so that a
+  // moving caustic leaves no trail). The history is dropped whenever the map, refitted around
+  // the casters every frame, lies anywhere else: the sun turns, or the casters' bounds move
+  // (along the light by any amount, across it by about a ray cell). So a moving caster is in
+  // effect never filtered; still casters under moving water are. Local lights: no filter.
   bool temporalFilter = false;
-  float temporalWeight = 0.5f;  // [0, 0.95]
+  float temporalWeight = 0.5f;  // history weight, [0, 0.95]
 };
 
 }  // namespace postfx

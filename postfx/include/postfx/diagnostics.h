@@ -13,18 +13,19 @@ struct Context;
 inline constexpr int kTimerRingDepth = 4;      // frames of timestamp pairs in flight
 inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is taken over
 
-// The timed passes, in the order dispatch() runs them.
+// The timed passes, in the order dispatch() runs them; what each reads, writes and costs:
+// docs/passes.md. The model's pre-passes run for the seabed caustics or the god rays.
 enum class Pass : std::uint8_t {
-  CausticsIrradiance,  // CausticsModel::WavefrontAreaRatio's irradiance (Feature::PhysicalCaustics)
-  CausticsTileIrradiance,  // CausticsModel::TileIrradiance's pre-pass (Feature::Caustics)
-  Floor,                   // benchmark floor (postfx/testing.h: kBenchmarkFloor)
+  CausticsIrradiance,      // WavefrontAreaRatio's window (Feature::PhysicalCaustics)
+  CausticsTileIrradiance,  // TileIrradiance's field (also continues WavefrontAreaRatio's window)
+  Floor,                   // benchmark floor (testing::BenchmarkFloor, postfx/testing.h)
   Caustics,                // seabed caustics (Feature::Caustics)
   GodRays,                 // god rays, march and upsample together (Feature::GodRays)
-  ObjectCaustics,          // caster caustics (Feature::ObjectCaustics)
+  ObjectCaustics,          // the sun's object caustics (Feature::ObjectCaustics; lights apart)
 };
 inline constexpr int kPassCount = 6;
 
-// Stable snake_case name, e.g. "god_rays" (the sample's bench and report print it).
+// Stable snake_case name, e.g. "god_rays" for Pass::GodRays; "unknown" outside the enum.
 const char* toString(Pass pass) noexcept;
 
 struct PassStats {
@@ -71,8 +72,9 @@ struct FrameStats {
                                        // wrapped (read never, rather than stall)
   // CausticsModel::WavefrontAreaRatio: the flux CausticsSettings::maxIrradiance removed in the
   // most recent frame whose count has been read back (a few dispatches old, never stalled
-  // for), as a fraction of the window's flat-water flux summed over the depth layers. 0 in
-  // the RayDeviation model; -1 until a first count is read.
+  // for), as a fraction of the window's flat-water flux summed over the depth layers. With
+  // Feature::PhysicalCaustics: 0 after a RayDeviation frame, kept as it was by a TileIrradiance
+  // frame; -1 until a first count is read, and always without the feature.
   double clampedFluxFraction = -1.0;
 };
 

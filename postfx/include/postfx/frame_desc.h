@@ -56,8 +56,8 @@ struct Camera {
 struct Sun {
   // Vector TOWARD the sun, world space. Need not be unit: the plugin normalises it (in double;
   // a scaled vector gives the same image), but its length must be in kSunLengthRange (finite, its
-  // square too), else InvalidArgument. direction.y <= 0 (at or below the horizon) means no
-  // caustics this frame: the pass is skipped.
+  // square too), else InvalidArgument. direction.y <= 0 (at or below the horizon): no sunlight
+  // this frame; the seabed caustics, god rays and the sun's object caustics are skipped.
   glm::dvec3 direction{0.0, 1.0, 0.0};
   // Sun irradiance at the water surface in the host's HDR units, linear RGB, kIrradianceRange.
   glm::vec3 irradiance{1.0f};

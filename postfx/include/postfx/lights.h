@@ -40,9 +40,9 @@
 // Cost. The number of lights a frame may list is bounded by CreateDesc::maxLocalLights, fixed at
 // create(). Per frame, a light that reaches no caster (range 0, intensity 0, every caster beyond
 // its range or outside its cone or its receiver map) costs 0 ms and allocates nothing; each
-// light that does costs about what the sun's object caustics cost at the same gridSize and
-// mapSize (its own caster maps, trace, splat and composite, drawn after the sun's and timed on
-// its own: stats().objectLight(i)), so the cost is linear in the lights that reach a caster.
+// light that does runs the sun's passes again at the same gridSize and mapSize (its own caster
+// maps, trace, splat and composite, drawn after the sun's and timed on its own:
+// stats().objectLight(i)), so the cost is linear in the lights that reach a caster.
 // All lights share one caustic map (mapSize^2 x 16 bytes), allocated when the first one runs.
 #include <cstdint>
 

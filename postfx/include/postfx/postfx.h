@@ -39,18 +39,17 @@ enum class Feature : std::uint32_t {
   None = 0,
   Caustics = 1u << 0,        // seabed caustics (CausticsSettings)
   GodRays = 1u << 1,         // underwater light shafts (GodRaySettings)
-  ObjectCaustics = 1u << 2,  // light-map caustics of glass/metal casters (seeds 000, 003)
+  ObjectCaustics = 1u << 2,  // caustics of glass/metal casters (postfx/casters.h, lights.h)
   Dispersion = 1u << 3,      // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
   ShadowMask = 1u << 4,      // mask caustics by the host's sun shadow map (FrameDesc::shadow)
   // 1u << 5 and 1u << 6: test and benchmark hooks, postfx/testing.h.
   PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio; its pass
                                // is timed as Pass::CausticsIrradiance
-  // Full tri-planar water lookup: steep surfaces (more than ~30 degrees from horizontal
-  // at the default CausticsSettings::triplanarSharpness) also sample the water along the world
-  // x and z axes, blended by the G-buffer normal. Without it every surface samples the water
-  // where its light entered, along the refracted sun: seamless across surfaces, and on slopes
-  // of 45-60 degrees its pattern correlates with the traced one as on flat ground where the
-  // tri-planar one does not (error report), at a third of the fetches there.
+  // Full tri-planar water lookup: steep surfaces (more than ~30 degrees from horizontal at the
+  // default CausticsSettings::triplanarSharpness) also sample the water along the world x and
+  // z axes, blended by the G-buffer normal (three times the fetches there). Without it every
+  // surface samples the water where its light entered, along the refracted sun: seamless
+  // across surfaces, and closer to traced light on slopes (docs/measurements.md).
   TriplanarWalls = 1u << 8,
 };
 constexpr Feature operator|(Feature a, Feature b) {
@@ -97,9 +96,9 @@ struct CreateDesc {  // fixed for the context's life
   std::int64_t splatBudget = std::int64_t(1) << 25;
   // Most local lights a frame may list (ObjectCausticsFrame::lightCount), [0,
   // kMaxLocalLightsLimit] (postfx/lights.h), fixed at create(): it sizes the uniform blocks
-  // (one 3.75 KiB slot per light) and the per-light timers. A light runs the sun's own programs
-  // with its own block, so no shader is compiled per light and 0 (default) costs nothing. Read
-  // only with Feature::ObjectCaustics.
+  // (one 3664-byte block per light, 3.75 KiB at a 256-byte offset alignment) and the
+  // per-light timers. A light runs the sun's own programs with its own block, so no shader is
+  // compiled per light and 0 (default) costs nothing. Read only with Feature::ObjectCaustics.
   int maxLocalLights = 0;
 };
 
@@ -109,16 +108,20 @@ struct Context;  // opaque
 // lastError(nullptr) explains why.
 Result create(const CreateDesc& desc, Context*& out) noexcept;
 
-// Adds this frame's caustic light into desc.target. Every input is validated before any GL
-// state is touched: on error nothing is drawn and GL state is exactly as it was. A pass with
-// nothing to do (caustics disabled, sun at/below the horizon, no part of the view frustum below
-// the water level) is skipped and reports 0 ms. With Feature::GodRays the god-ray pass (timed as
-// Pass::GodRays; below full resolution the march and the upsample together) runs after the
-// caustics, skipped on the same conditions with godRays.enabled. With Feature::ObjectCaustics
-// the object caustics (postfx/casters.h; the sun's timed as Pass::ObjectCaustics) run last,
-// skipped (0 ms) with no caster, objectCaustics.settings.enabled off, objectCaustics.sunCaustics
-// off, the sun at/below the horizon, or no caster inside the receiver map's view; then each local
-// light (postfx/lights.h) that reaches a caster, timed in stats().objectLight(i).
+// Adds this frame's light into desc.target. Every input is validated before any GL state is
+// touched: on error nothing is drawn and GL state is exactly as it was. The passes run in the
+// order of the Pass enum (postfx/diagnostics.h; every pass, its inputs, outputs and settings:
+// docs/passes.md), each timed in stats().pass(Pass::...); a pass with nothing to do is skipped
+// and reports 0 ms. The model's pre-passes (Pass::CausticsTileIrradiance for TileIrradiance and
+// WavefrontAreaRatio, Pass::CausticsIrradiance for the latter's window) run when Pass::Caustics
+// or Pass::GodRays draws. Pass::Caustics and Pass::GodRays (Feature::GodRays; below full
+// resolution the march and the upsample together) are skipped when disabled, with the sun
+// at/below the horizon, or with no part of the view frustum below the water level;
+// Pass::GodRays also at godRays.intensity 0. Pass::ObjectCaustics (the sun's,
+// Feature::ObjectCaustics) is skipped with no caster, objectCaustics.settings.enabled off or
+// intensity 0, sunCaustics off, the sun at/below the horizon, or no caster inside the receiver
+// map's view; then each local light (postfx/lights.h) that reaches a caster runs, timed in
+// stats().objectLight(i).
 Result dispatch(Context& context, const FrameDesc& desc) noexcept;
 
 // Deletes the context's GL objects (current GL context required; without one they are leaked

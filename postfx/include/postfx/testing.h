@@ -7,23 +7,26 @@ namespace postfx::testing {
 
 // Create-time features beside the host's (CreateDesc::features | testing::BenchmarkFloor).
 //  - RawCausticOutput: the caustics pass also writes its raw factor to rawCausticTexture().
-//  - BenchmarkFloor: a "floor" pass (Pass::Floor) runs first whenever any timed pass runs: a
-//    full-screen pass that reads the G-buffer, the water cascades (when a water texture is
-//    given) and the shadow map and writes the same outputs with no math (adds exactly 0), so
-//    that caustics.medianMs / floor.medianMs measures a shader's cost independently of the
-//    machine. The GPU is drained before each timed pass (glFinish): never in a shipping frame.
+//  - BenchmarkFloor: a "floor" pass (Pass::Floor) runs whenever any timed pass runs (after the
+//    caustics model's pre-passes, before Pass::Caustics): a full-screen pass that reads the
+//    G-buffer, the water cascades (when a water texture is given) and the shadow map and
+//    writes the same outputs with no math (adds exactly 0), so that a pass's medianMs over the
+//    floor's measures its cost independently of the machine. The GPU is drained before each
+//    timed pass (glFinish): never in a shipping frame.
 inline constexpr Feature RawCausticOutput = static_cast<Feature>(1u << 5);
 inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
 
 // With RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last dispatched
-// target holding omega * (n.l) * shadow * fade (mean of R,G,B) — the caustic factor with N.L,
+// target holding omega * (n.l) * shadow * fade (mean of R,G,B): the caustic factor with N.L,
 // the shadow map and the surface fade, before albedo, irradiance, intensity and absorption
 // (flat water reads n.l, not 1); 0 where no caustics (sky, above water, back-facing, shadowed,
-// pass skipped). In [0, 1] in the RayDeviation model, [0, maxIrradiance] in WavefrontAreaRatio
-// (clamped to CausticsSettings::maxIrradiance), and in TileIrradiance (the default) the product
-// of the cascades' irradiances relative to flat water, each clamped to maxIrradiance: at most
-// maxIrradiance to the power of the cascades with irradiance.
-// 0 without the feature or before the first dispatch.
+// pass skipped). Range of omega, per CausticsSettings::model, with c = min(maxIrradiance, 1024):
+//  - TileIrradiance (the default): the product of the cascades' fields, each in [0, c]; the
+//    product is not clamped again: [0, c^k], k the cascades with irradiance (defaults: c = 32);
+//  - WavefrontAreaRatio: [0, maxIrradiance] inside the window, TileIrradiance's range where it
+//    fades to the tile field (outer eighth and beyond);
+//  - RayDeviation: [0, 1].
+// A GL_R16F texel holds at most 65504. 0 without the feature or before the first dispatch.
 GlName rawCausticTexture(const Context& context) noexcept;
 
 // The WavefrontAreaRatio model's irradiance of the most recent frame that computed it.
@@ -56,8 +59,8 @@ LightCausticMap lightCausticMap(const Context& context) noexcept;
 
 // How the god-ray march places its samples along each view ray.
 enum class GodRaySampling {
-  // What every context does: where the ray crosses the planes of a
-  // world-snapped grid, so the samples stay put in the world when the camera moves.
+  // What every context does: where the ray crosses the planes of a world-snapped grid, so the
+  // samples stay put in the world when the camera moves.
   WorldGrid,
   // sampleCount points evenly spread along the ray: slides with the camera (flickers). For
   // comparisons (the temporal-stability test, the report) only.
