@@ -29,7 +29,7 @@ bool renderHost(StabilityHost& host, const FrameInput& input, std::string& error
 
 bool isCaustics(StabilityPass pass) {
   return pass == StabilityPass::TileCaustics || pass == StabilityPass::RayDeviationCaustics ||
-         pass == StabilityPass::PhysicalCaustics;
+         pass == StabilityPass::WavefrontAreaRatio;
 }
 bool isObjectCaustics(StabilityPass pass) {
   return pass == StabilityPass::ObjectCaustics || pass == StabilityPass::FilteredObjectCaustics;
@@ -44,8 +44,8 @@ postfx::CreateDesc passCreateDesc(const postfx::CreateDesc& host, StabilityPass 
        {postfx::Feature::ShadowMask, postfx::Feature::Dispersion, postfx::Feature::TriplanarWalls})
     if (postfx::hasFeature(host.features, kept)) features = features | kept;
   if (isCaustics(pass)) features = features | postfx::Feature::Caustics;
-  if (pass == StabilityPass::PhysicalCaustics)
-    features = features | postfx::Feature::PhysicalCaustics;
+  if (pass == StabilityPass::WavefrontAreaRatio)
+    features = features | postfx::Feature::WavefrontAreaRatio;
   if (pass == StabilityPass::GodRays) features = features | postfx::Feature::GodRays;
   if (isObjectCaustics(pass)) features = features | postfx::Feature::ObjectCaustics;
   create.features = features;
@@ -58,12 +58,12 @@ postfx::FrameDesc passFrameDesc(const postfx::FrameDesc& host, StabilityPass pas
   frame.target = {target, GL_RGBA32F};
   frame.caustics.enabled = isCaustics(pass);
   // Settings are validated whether or not their pass runs: a host on the physical model would
-  // otherwise ask the other passes' contexts (created without Feature::PhysicalCaustics) for it.
+  // otherwise ask the other passes' contexts (created without Feature::WavefrontAreaRatio) for it.
   if (pass == StabilityPass::TileCaustics || !isCaustics(pass))
     frame.caustics.model = postfx::CausticsModel::TileIrradiance;
   if (pass == StabilityPass::RayDeviationCaustics)
     frame.caustics.model = postfx::CausticsModel::RayDeviation;
-  if (pass == StabilityPass::PhysicalCaustics)
+  if (pass == StabilityPass::WavefrontAreaRatio)
     frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
   frame.godRays.enabled = pass == StabilityPass::GodRays;
   // The god rays' dense reference (reference::renderGodRayReference) marches seed 002's factor:
@@ -131,7 +131,7 @@ const char* stabilityPassName(StabilityPass pass) {
       return "caustics, tile irradiance";
     case StabilityPass::RayDeviationCaustics:
       return "caustics, ray deviation";
-    case StabilityPass::PhysicalCaustics:
+    case StabilityPass::WavefrontAreaRatio:
       return "caustics, physical (wavefront area ratio)";
     case StabilityPass::GodRays:
       return "god rays";

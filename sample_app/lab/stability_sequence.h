@@ -23,7 +23,7 @@ namespace ocean {
 enum class StabilityPass {
   TileCaustics,          // CausticsModel::TileIrradiance (the default)
   RayDeviationCaustics,  // CausticsModel::RayDeviation
-  PhysicalCaustics,      // CausticsModel::WavefrontAreaRatio (Feature::PhysicalCaustics)
+  WavefrontAreaRatio,    // CausticsModel::WavefrontAreaRatio (Feature::WavefrontAreaRatio)
   GodRays,
   ObjectCaustics,          // temporal filter off (the default)
   FilteredObjectCaustics,  // ObjectCausticsSettings::temporalFilter on, default weight

@@ -69,7 +69,7 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
                   " layers, " + std::to_string(t.pointsPerTexel) + " pt/texel, " +
                   (t.lookup == kHalf ? "half-res lookups" : "full-res lookups"),
               postfx::CausticsSettings{}, false,
-              PrePass{postfx::Pass::CausticsTileIrradiance, "tile pre-pass"}};
+              PrePass{postfx::Pass::TileIrradiance, "tile pre-pass"}};
     v.caustics.model = postfx::CausticsModel::TileIrradiance;
     v.caustics.tileResolution = t.resolution;
     v.caustics.tileDepthLayers = t.layers;
@@ -102,7 +102,7 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
     if (!sizeSettings.everyModel && grid != 256) continue;
     Variant v{"physical (wavefront area ratio)", "grid " + std::to_string(grid),
               postfx::CausticsSettings{}, true,
-              PrePass{postfx::Pass::CausticsIrradiance, "irradiance pass"}};
+              PrePass{postfx::Pass::WavefrontAreaRatio, "irradiance pass"}};
     v.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
     v.caustics.gridResolution = grid;
     variants.push_back(v);
@@ -127,7 +127,7 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
     std::fprintf(stderr, "report: caustics at %dx%d, %s, %s (%zu/%zu)\n", settings.width,
                  settings.height, v.method.c_str(), v.setting.c_str(), k + 1, variants.size());
     postfx::CreateDesc create;
-    create.features = v.physical ? postfx::Feature::PhysicalCaustics : postfx::Feature::None;
+    create.features = v.physical ? postfx::Feature::WavefrontAreaRatio : postfx::Feature::None;
     validation::PassRun run;
     std::vector<double> binned;
     if (!seabed.run(create, v.caustics, sizeSettings.timedFrames, run, binned, error)) return false;
@@ -146,8 +146,8 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
       std::snprintf(cost, sizeof(cost), "incl. %s %.2f ms; ", v.prePass->label, prePassMs);
       row.note = cost;
       // The physical window is continued by the tile irradiance: its pre-pass runs too.
-      const postfx::PassStats& tile = run.stats.pass(postfx::Pass::CausticsTileIrradiance);
-      if (v.prePass->pass != postfx::Pass::CausticsTileIrradiance && !tile.skipped) {
+      const postfx::PassStats& tile = run.stats.pass(postfx::Pass::TileIrradiance);
+      if (v.prePass->pass != postfx::Pass::TileIrradiance && !tile.skipped) {
         row.medianMs += tile.medianMs;
         std::snprintf(cost, sizeof(cost), "incl. tile pre-pass %.2f ms; ", tile.medianMs);
         row.note += cost;

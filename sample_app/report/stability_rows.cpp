@@ -20,9 +20,9 @@ std::string number(double value, int digits) {
 }
 
 constexpr StabilityPass kPasses[] = {
-    StabilityPass::TileCaustics,     StabilityPass::RayDeviationCaustics,
-    StabilityPass::PhysicalCaustics, StabilityPass::GodRays,
-    StabilityPass::ObjectCaustics,   StabilityPass::FilteredObjectCaustics};
+    StabilityPass::TileCaustics,       StabilityPass::RayDeviationCaustics,
+    StabilityPass::WavefrontAreaRatio, StabilityPass::GodRays,
+    StabilityPass::ObjectCaustics,     StabilityPass::FilteredObjectCaustics};
 
 }  // namespace
 

@@ -157,8 +157,8 @@ int runBench(const Options& commandOptions) {
       const postfx::FrameStats* stats =
           runVariant("caustics_physical_" + n, physical, [](PluginSetup&) {});
       if (!stats) return commandFailed(error);
-      addRow("caustics_irradiance_" + n, *stats, postfx::Pass::CausticsIrradiance);
-      addRow("caustics_physical_tile_" + n, *stats, postfx::Pass::CausticsTileIrradiance);
+      addRow("caustics_irradiance_" + n, *stats, postfx::Pass::WavefrontAreaRatio);
+      addRow("caustics_physical_tile_" + n, *stats, postfx::Pass::TileIrradiance);
       addRow("caustics_physical_" + n, *stats, postfx::Pass::Caustics);
       std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
                    100.0 * stats->clampedFluxFraction);

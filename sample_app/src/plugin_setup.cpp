@@ -60,7 +60,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
                   postfx::Feature::Dispersion | postfx::Feature::GodRays;
   if (benchmarkFloor) desc.features = desc.features | postfx::testing::BenchmarkFloor;
   // The physical model's GL resources exist only when it is asked for.
-  if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::PhysicalCaustics;
+  if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::WavefrontAreaRatio;
   if (options.objectCaustics) {
     desc.features = desc.features | postfx::Feature::ObjectCaustics;
     renderer.enableReceiverMap();

@@ -18,7 +18,7 @@ namespace ocean::validation {
 
 struct PassRun {
   double medianMs = 0.0, floorMs = 0.0;  // of the pass asked for and of the floor
-  // Every pass the run timed (e.g. CausticsIrradiance beside Caustics): one run prices a method
+  // Every pass the run timed (e.g. WavefrontAreaRatio beside Caustics): one run prices a method
   // made of several passes.
   postfx::FrameStats stats;
   std::vector<glm::vec4> image;  // light the pass added, RGBA32F, GL order

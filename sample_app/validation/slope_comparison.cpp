@@ -35,8 +35,8 @@ bool runVariant(const postfx::FrameDesc& frame, postfx::Feature features, const 
     return false;
   // The pre-passes are part of the method's cost (as in the flat rows); 0 for one that did not
   // run (the physical window runs both: the tile irradiance continues it).
-  out.run.medianMs += out.run.stats.pass(postfx::Pass::CausticsIrradiance).medianMs +
-                      out.run.stats.pass(postfx::Pass::CausticsTileIrradiance).medianMs;
+  out.run.medianMs += out.run.stats.pass(postfx::Pass::WavefrontAreaRatio).medianMs +
+                      out.run.stats.pass(postfx::Pass::TileIrradiance).medianMs;
   out.binned = plane.binned(out.run.raw, scale);
   out.stats = compareWithReference(out.binned, truth);
   return true;
@@ -151,7 +151,7 @@ bool measureSlope(const postfx::FrameDesc& hostFrame, const SlopeSettings& setti
           plane.desc.viewDistance * (1.0 + std::max(plane.view.aspect, 1.0) / plane.view.focal);
       physical.caustics.windowSize = float(reach / 0.375);
       physical.caustics.maxReceiverDepth = float(plane.maxDepth + 1.0);
-      if (!runVariant(physical, postfx::Feature::PhysicalCaustics, plane, scale, c.reference,
+      if (!runVariant(physical, postfx::Feature::WavefrontAreaRatio, plane, scale, c.reference,
                       settings.timedFrames, c.physical, error))
         return false;
     }

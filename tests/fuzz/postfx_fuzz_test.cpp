@@ -192,7 +192,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
            postfx::testing::RawCausticOutput | Feature::Dispersion,
        0, 0},
       {"forward [0,1], xyz: physical caustics + god rays + tri-planar walls",
-       Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics | Feature::TriplanarWalls,
+       Feature::Caustics | Feature::GodRays | Feature::WavefrontAreaRatio | Feature::TriplanarWalls,
        1, 1},
       {"forward [-1,1], xyz UNORM: caustics + object caustics + floor",
        Feature::Caustics | Feature::ObjectCaustics | postfx::testing::BenchmarkFloor, 2, 2},
@@ -258,7 +258,7 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
     ordinary.shadow.depthConvention = postfx::DepthConvention::ForwardNegOneToOne;
     ordinary.godRays.sampleCount = 8;
     ordinary.caustics.gridResolution = 64;
-    if (hasFeature(spec.features, Feature::PhysicalCaustics))
+    if (hasFeature(spec.features, Feature::WavefrontAreaRatio))
       ordinary.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
 
     auto run = [&](postfx::Context& context, const postfx::FrameDesc& frame, Result& r) {

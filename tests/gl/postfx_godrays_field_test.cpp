@@ -83,7 +83,7 @@ void shaftSeabedCorrelation(double height, double& withField, double& withSlopes
   postfxtest::Scene scene(spec);
   const GLuint water = postfxtest::makeWaterTexture(64, 3, 0.01);
   const Feature physical = model == postfx::CausticsModel::WavefrontAreaRatio
-                               ? Feature::PhysicalCaustics
+                               ? Feature::WavefrontAreaRatio
                                : Feature::None;
   auto caustics = postfxtest::makeContext(Feature::Caustics | physical);
   auto godRays = postfxtest::makeContext(Feature::GodRays | physical);
@@ -149,7 +149,7 @@ TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsBeyondTheWindowAreTheTileFields) {
   postfxtest::Scene scene(spec);
   const GLuint water = postfxtest::makeWaterTexture(64, 3, 0.01);
   auto fx =
-      postfxtest::makeContext(Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics);
+      postfxtest::makeContext(Feature::Caustics | Feature::GodRays | Feature::WavefrontAreaRatio);
   postfx::FrameDesc frame = fieldFrame(scene, water, postfx::CausticsModel::TileIrradiance);
   frame.caustics.enabled = false;
   frame.godRays.sampleCount = 16;
@@ -217,7 +217,7 @@ TEST_F(PostfxGodRaysFieldTest, FieldComputedForGodRaysAloneAndLeftOutWithoutThem
   auto fx = postfxtest::makeContext(Feature::Caustics | Feature::GodRays);
   postfx::FrameDesc frame = fieldFrame(scene, water, postfx::CausticsModel::TileIrradiance);
   frame.caustics.enabled = false;
-  const postfx::PassStats& tile = postfx::stats(*fx).pass(postfx::Pass::CausticsTileIrradiance);
+  const postfx::PassStats& tile = postfx::stats(*fx).pass(postfx::Pass::TileIrradiance);
   const postfx::PassStats& caustics = postfx::stats(*fx).pass(postfx::Pass::Caustics);
   for (int i = 0; i < postfx::kTimerRingDepth + 1; ++i) {
     ASSERT_EQ(postfx::dispatch(*fx, frame), Result::Ok) << postfx::lastError(fx.get());
@@ -235,19 +235,19 @@ TEST_F(PostfxGodRaysFieldTest, FieldComputedForGodRaysAloneAndLeftOutWithoutThem
   EXPECT_EQ(tile.lastMs, 0.0);
   // The physical model's pre-pass likewise.
   auto physical =
-      postfxtest::makeContext(Feature::Caustics | Feature::GodRays | Feature::PhysicalCaustics);
+      postfxtest::makeContext(Feature::Caustics | Feature::GodRays | Feature::WavefrontAreaRatio);
   frame.godRays.enabled = true;
   frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
   for (int i = 0; i < postfx::kTimerRingDepth + 1; ++i) {
     ASSERT_EQ(postfx::dispatch(*physical, frame), Result::Ok) << postfx::lastError(physical.get());
     glFinish();
   }
-  EXPECT_FALSE(postfx::stats(*physical).pass(postfx::Pass::CausticsIrradiance).skipped);
+  EXPECT_FALSE(postfx::stats(*physical).pass(postfx::Pass::WavefrontAreaRatio).skipped);
   // The tile field continues the seabed's window beyond its edge, so it runs too.
-  EXPECT_FALSE(postfx::stats(*physical).pass(postfx::Pass::CausticsTileIrradiance).skipped);
+  EXPECT_FALSE(postfx::stats(*physical).pass(postfx::Pass::TileIrradiance).skipped);
   // A context with god rays and no caustics has the tile pre-pass too.
   auto godRaysOnly = postfxtest::makeContext(Feature::GodRays);
-  EXPECT_TRUE(postfx::stats(*godRaysOnly).pass(postfx::Pass::CausticsTileIrradiance).present);
+  EXPECT_TRUE(postfx::stats(*godRaysOnly).pass(postfx::Pass::TileIrradiance).present);
   glDeleteTextures(1, &water);
 }
 

@@ -277,7 +277,7 @@ TEST_F(PostfxHostileStateTest, AnyHostStateGivesTheSameImageAndIsRestored) {
   // The physical model (compute, instanced strips, points into its own framebuffer) with god
   // rays at full resolution.
   auto physical = makeContext(postfx::Feature::Caustics | postfx::Feature::GodRays |
-                              postfx::Feature::PhysicalCaustics);
+                              postfx::Feature::WavefrontAreaRatio);
   postfx::FrameDesc physicalFrame = makeFrame(seabed, water, 3);
   physicalFrame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
   physicalFrame.caustics.gridResolution = 64;

@@ -386,7 +386,7 @@ TEST_F(PostfxPhysicalTest, BadSettingsFailCleanly) {
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
   postfxtest::usePhysical(frame, 128, 2, 8.0f);
   EXPECT_EQ(postfx::dispatch(*plain, frame), postfx::Result::InvalidArgument);
-  EXPECT_NE(std::string(postfx::lastError(plain.get())).find("PhysicalCaustics"),
+  EXPECT_NE(std::string(postfx::lastError(plain.get())).find("Feature::WavefrontAreaRatio"),
             std::string::npos);
   glDeleteTextures(1, &water);
 }
@@ -412,22 +412,22 @@ TEST_F(PostfxPhysicalTest, RestoresStateAndTimesItsPass) {
   const postfx::FrameStats& stats = postfx::stats(*fx);
   EXPECT_TRUE(stats.pass(postfx::Pass::Caustics).present);
   EXPECT_TRUE(stats.pass(postfx::Pass::GodRays).present);
-  EXPECT_TRUE(stats.pass(postfx::Pass::CausticsIrradiance).present);
+  EXPECT_TRUE(stats.pass(postfx::Pass::WavefrontAreaRatio).present);
   EXPECT_FALSE(stats.pass(postfx::Pass::Floor).present);
   EXPECT_FALSE(stats.pass(postfx::Pass::ObjectCaustics).present);
-  EXPECT_TRUE(stats.pass(postfx::Pass::CausticsTileIrradiance).present);
-  EXPECT_FALSE(stats.pass(postfx::Pass::CausticsTileIrradiance).skipped)
+  EXPECT_TRUE(stats.pass(postfx::Pass::TileIrradiance).present);
+  EXPECT_FALSE(stats.pass(postfx::Pass::TileIrradiance).skipped)
       << "the tile irradiance continues the window: its pre-pass runs and is timed";
   std::printf(
       "timings: caustics %.3f ms, god_rays %.3f ms, caustics_irradiance %.3f ms, "
       "caustics_tile_irradiance %.3f ms (%llu frames resolved)\n",
       stats.pass(postfx::Pass::Caustics).medianMs, stats.pass(postfx::Pass::GodRays).medianMs,
-      stats.pass(postfx::Pass::CausticsIrradiance).medianMs,
-      stats.pass(postfx::Pass::CausticsTileIrradiance).medianMs,
+      stats.pass(postfx::Pass::WavefrontAreaRatio).medianMs,
+      stats.pass(postfx::Pass::TileIrradiance).medianMs,
       static_cast<unsigned long long>(stats.framesResolved));
   EXPECT_GT(stats.framesResolved, 0u);
-  EXPECT_GT(stats.pass(postfx::Pass::CausticsIrradiance).lastMs, 0.0);
-  EXPECT_FALSE(stats.pass(postfx::Pass::CausticsIrradiance).skipped);
+  EXPECT_GT(stats.pass(postfx::Pass::WavefrontAreaRatio).lastMs, 0.0);
+  EXPECT_FALSE(stats.pass(postfx::Pass::WavefrontAreaRatio).skipped);
   glDeleteTextures(1, &water);
 }
 

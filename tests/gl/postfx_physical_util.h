@@ -20,7 +20,7 @@ namespace postfxtest {
 
 inline constexpr postfx::Feature kPhysical = postfx::Feature::Caustics |
                                              postfx::testing::RawCausticOutput |
-                                             postfx::Feature::PhysicalCaustics;
+                                             postfx::Feature::WavefrontAreaRatio;
 
 // Camera 2 m under the level, looking down at a floor `floorDepth` m below it; camera xz at
 // the centre of a 16 m window whose snapped corner is the world origin for every grid size.

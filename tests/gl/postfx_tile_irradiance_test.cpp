@@ -92,7 +92,7 @@ TEST_F(PostfxTileIrradianceTest, NoneAboveWaterOnSkyOrFacingAwayAndBounded) {
     ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
     glFinish();
   }
-  const postfx::PassStats& tile = postfx::stats(*fx).pass(postfx::Pass::CausticsTileIrradiance);
+  const postfx::PassStats& tile = postfx::stats(*fx).pass(postfx::Pass::TileIrradiance);
   EXPECT_TRUE(tile.present);
   EXPECT_FALSE(tile.skipped);
   EXPECT_GT(tile.lastMs, 0.0);

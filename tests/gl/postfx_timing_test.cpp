@@ -28,7 +28,7 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   EXPECT_STREQ(postfx::toString(postfx::Pass::Floor), "floor");
   // The TileIrradiance pre-pass exists with Feature::Caustics; this frame's model (ray
   // deviation) does not run it.
-  EXPECT_TRUE(s.pass(postfx::Pass::CausticsTileIrradiance).present);
+  EXPECT_TRUE(s.pass(postfx::Pass::TileIrradiance).present);
 
   // The first dispatch cannot have read anything: its queries are read by later dispatches.
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
@@ -45,8 +45,8 @@ TEST_F(PostfxTimingTest, ResultsArriveLaterAndSkippedPassesReportZero) {
   EXPECT_GT(s.pass(postfx::Pass::Floor).lastMs, 0.0);
   EXPECT_GT(s.pass(postfx::Pass::Caustics).medianMs, 0.0);
   EXPECT_FALSE(s.pass(postfx::Pass::Caustics).skipped);
-  EXPECT_TRUE(s.pass(postfx::Pass::CausticsTileIrradiance).skipped);
-  EXPECT_EQ(s.pass(postfx::Pass::CausticsTileIrradiance).lastMs, 0.0);
+  EXPECT_TRUE(s.pass(postfx::Pass::TileIrradiance).skipped);
+  EXPECT_EQ(s.pass(postfx::Pass::TileIrradiance).lastMs, 0.0);
 
   // Caustics disabled: both passes skipped; once those frames resolve they report 0 ms.
   frame.caustics.enabled = false;

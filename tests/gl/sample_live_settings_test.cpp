@@ -78,7 +78,7 @@ TEST_F(LiveSettingsTest, NaNGodRayIntensityIsRefused) {
 // The view's context has the physical model's resources only when started with it.
 TEST_F(LiveSettingsTest, ModelWithoutItsFeatureIsRefused) {
   live_.edited.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
-  expectRefused("PhysicalCaustics");
+  expectRefused("Feature::WavefrontAreaRatio");
 }
 
 TEST_F(LiveSettingsTest, AcceptedEditReplacesTheSettingsAndClearsTheMessage) {

@@ -132,30 +132,30 @@ TEST_P(PassStability, StillIsStillAndShorterStepsChangeLess) {
     // off the 33 ms change, 0.34 -> 0.20, than off the 2 ms one, 0.069 -> 0.051). 0.25 (1/3 for
     // that one) fails per-frame noise, sliding samples or popping, which do not shrink with the
     // step.
-    const bool foldsInTime = !camera && pass == StabilityPass::PhysicalCaustics;
+    const bool foldsInTime = !camera && pass == StabilityPass::WavefrontAreaRatio;
     EXPECT_LT(shorter.mean, (foldsInTime ? 1.0 / 3.0 : 0.25) * normal.mean)
         << (camera ? "camera" : "time");
   }
 }
 
 std::string passTestName(const ::testing::TestParamInfo<StabilityPass>& param) {
-  static const char* const names[] = {"TileCaustics",     "RayDeviationCaustics",
-                                      "PhysicalCaustics", "GodRays",
-                                      "ObjectCaustics",   "FilteredObjectCaustics"};
+  static const char* const names[] = {
+      "TileCaustics", "RayDeviationCaustics", "WavefrontAreaRatioCaustics",
+      "GodRays",      "ObjectCaustics",       "FilteredObjectCaustics"};
   return names[int(param.param)];
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryPass, PassStability,
                          ::testing::Values(StabilityPass::TileCaustics,
                                            StabilityPass::RayDeviationCaustics,
-                                           StabilityPass::PhysicalCaustics, StabilityPass::GodRays,
-                                           StabilityPass::ObjectCaustics,
+                                           StabilityPass::WavefrontAreaRatio,
+                                           StabilityPass::GodRays, StabilityPass::ObjectCaustics,
                                            StabilityPass::FilteredObjectCaustics),
                          passTestName);
 
 // Each pass is isolated from the host's own frame, whose settings are validated even for passes
 // that do not run: a host on the physical model must not hand that model to the other passes'
-// contexts, created without Feature::PhysicalCaustics (the report's stability section aborted).
+// contexts, created without Feature::WavefrontAreaRatio (the report's stability section aborted).
 TEST_F(StabilityFixture, EveryPassRunsWhateverTheHostsCausticsModel) {
   ocean::Options options;
   options.physicalCaustics = true;
@@ -163,7 +163,7 @@ TEST_F(StabilityFixture, EveryPassRunsWhateverTheHostsCausticsModel) {
   if (HasFatalFailure()) return;
   for (const StabilityPass pass :
        {StabilityPass::TileCaustics, StabilityPass::RayDeviationCaustics,
-        StabilityPass::PhysicalCaustics, StabilityPass::GodRays, StabilityPass::ObjectCaustics,
+        StabilityPass::WavefrontAreaRatio, StabilityPass::GodRays, StabilityPass::ObjectCaustics,
         StabilityPass::FilteredObjectCaustics})
     EXPECT_GT(passChange(pass, ocean::stillMotion(), 2).meanLight, 0.0)
         << ocean::stabilityPassName(pass);
@@ -266,7 +266,7 @@ TEST_F(ReferenceStability, CausticsChangeLikeTracedLight) {
       double factor;
     } models[] = {{StabilityPass::TileCaustics, 1.5},
                   {StabilityPass::RayDeviationCaustics, 1.5},
-                  {StabilityPass::PhysicalCaustics, camera ? 3.0 : 6.0}};
+                  {StabilityPass::WavefrontAreaRatio, camera ? 3.0 : 6.0}};
     for (const auto& model : models) {
       const ocean::AddedLightChange plugin = passChange(model.pass, motion, 2);
       std::printf("%s, %s: plugin %.5f, traced %.5f\n", ocean::stabilityPassName(model.pass),

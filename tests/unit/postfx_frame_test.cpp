@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -141,6 +142,26 @@ TEST(PostfxValidation, RejectsNaNAndOutOfRangeValues) {
   expectInvalid([&](FrameDesc& f) { f.water.absorption.b = -0.1f; }, "absorption");
   expectInvalid([&](FrameDesc& f) { f.water.cascadeCount = 0; }, "cascadeCount");
   expectInvalid([&](FrameDesc& f) { f.camera.projection[2][2] = double(nan); }, "projection");
+}
+
+// Each pass has one stable, distinct name, and the former enumerator names still compile as
+// the same values (a host renames at leisure).
+TEST(PostfxNames, PassesHaveOneNameAndFormerNamesAreAliases) {
+  std::set<std::string> names;
+  for (int p = 0; p < kPassCount; ++p) {
+    const std::string name = toString(Pass(p));
+    EXPECT_NE(name, "unknown");
+    EXPECT_EQ(name.find_first_not_of("abcdefghijklmnopqrstuvwxyz_"), std::string::npos) << name;
+    EXPECT_TRUE(names.insert(name).second) << name;
+  }
+  EXPECT_STREQ(toString(Pass::WavefrontAreaRatio), "wavefront_area_ratio");
+  EXPECT_STREQ(toString(Pass::TileIrradiance), "tile_irradiance");
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  EXPECT_EQ(Pass::CausticsIrradiance, Pass::WavefrontAreaRatio);
+  EXPECT_EQ(Pass::CausticsTileIrradiance, Pass::TileIrradiance);
+  EXPECT_EQ(Feature::PhysicalCaustics, Feature::WavefrontAreaRatio);
+#pragma GCC diagnostic pop
 }
 
 }  // namespace

@@ -16,12 +16,15 @@ inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is 
 // The timed passes, in the order dispatch() runs them; what each reads, writes and costs:
 // docs/passes.md. The model's pre-passes run for the seabed caustics or the god rays.
 enum class Pass : std::uint8_t {
-  CausticsIrradiance,      // WavefrontAreaRatio's window (Feature::PhysicalCaustics)
-  CausticsTileIrradiance,  // TileIrradiance's field (also continues WavefrontAreaRatio's window)
-  Floor,                   // benchmark floor (testing::BenchmarkFloor, postfx/testing.h)
-  Caustics,                // seabed caustics (Feature::Caustics)
-  GodRays,                 // god rays, march and upsample together (Feature::GodRays)
-  ObjectCaustics,          // the sun's object caustics (Feature::ObjectCaustics; lights apart)
+  WavefrontAreaRatio,  // WavefrontAreaRatio's window (Feature::WavefrontAreaRatio)
+  TileIrradiance,      // TileIrradiance's field (also continues WavefrontAreaRatio's window)
+  Floor,               // benchmark floor (testing::BenchmarkFloor, postfx/testing.h)
+  Caustics,            // seabed caustics (Feature::Caustics)
+  GodRays,             // god rays, march and upsample together (Feature::GodRays)
+  ObjectCaustics,      // the sun's object caustics (Feature::ObjectCaustics; lights apart)
+  // Former names, kept so that a host compiles while it renames (CHANGELOG.md).
+  CausticsIrradiance [[deprecated("renamed Pass::WavefrontAreaRatio")]] = WavefrontAreaRatio,
+  CausticsTileIrradiance [[deprecated("renamed Pass::TileIrradiance")]] = TileIrradiance,
 };
 inline constexpr int kPassCount = 6;
 
@@ -73,7 +76,7 @@ struct FrameStats {
   // CausticsModel::WavefrontAreaRatio: the flux CausticsSettings::maxIrradiance removed in the
   // most recent frame whose count has been read back (a few dispatches old, never stalled
   // for), as a fraction of the window's flat-water flux summed over the depth layers. With
-  // Feature::PhysicalCaustics: 0 after a RayDeviation frame, kept as it was by a TileIrradiance
+  // Feature::WavefrontAreaRatio: 0 after a RayDeviation frame, kept as it was by a TileIrradiance
   // frame; -1 until a first count is read, and always without the feature.
   double clampedFluxFraction = -1.0;
 };

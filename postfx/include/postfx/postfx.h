@@ -43,14 +43,16 @@ enum class Feature : std::uint32_t {
   Dispersion = 1u << 3,      // per-channel IOR (WaterSurface::iorRgb): coloured caustic edges
   ShadowMask = 1u << 4,      // mask caustics by the host's sun shadow map (FrameDesc::shadow)
   // 1u << 5 and 1u << 6: test and benchmark hooks, postfx/testing.h.
-  PhysicalCaustics = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio; its pass
-                               // is timed as Pass::CausticsIrradiance
+  WavefrontAreaRatio = 1u << 7,  // allows CausticsModel::WavefrontAreaRatio; its pass
+                                 // is timed as Pass::WavefrontAreaRatio
   // Full tri-planar water lookup: steep surfaces (more than ~30 degrees from horizontal at the
   // default CausticsSettings::triplanarSharpness) also sample the water along the world x and
   // z axes, blended by the G-buffer normal (three times the fetches there). Without it every
   // surface samples the water where its light entered, along the refracted sun: seamless
   // across surfaces, and closer to traced light on slopes (docs/measurements.md).
   TriplanarWalls = 1u << 8,
+  // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
+  PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
 };
 constexpr Feature operator|(Feature a, Feature b) {
   return static_cast<Feature>(static_cast<std::uint32_t>(a) | static_cast<std::uint32_t>(b));
@@ -112,8 +114,8 @@ Result create(const CreateDesc& desc, Context*& out) noexcept;
 // touched: on error nothing is drawn and GL state is exactly as it was. The passes run in the
 // order of the Pass enum (postfx/diagnostics.h; every pass, its inputs, outputs and settings:
 // docs/passes.md), each timed in stats().pass(Pass::...); a pass with nothing to do is skipped
-// and reports 0 ms. The model's pre-passes (Pass::CausticsTileIrradiance for TileIrradiance and
-// WavefrontAreaRatio, Pass::CausticsIrradiance for the latter's window) run when Pass::Caustics
+// and reports 0 ms. The model's pre-passes (Pass::TileIrradiance for TileIrradiance and
+// WavefrontAreaRatio, Pass::WavefrontAreaRatio for the latter's window) run when Pass::Caustics
 // or Pass::GodRays draws. Pass::Caustics and Pass::GodRays (Feature::GodRays; below full
 // resolution the march and the upsample together) are skipped when disabled, with the sun
 // at/below the horizon, or with no part of the view frustum below the water level;

@@ -17,7 +17,7 @@ enum class CausticsModel {
   RayDeviation,
   // Caustic irradiance relative to flat water from the wavefront area ratio: every frame a grid
   // over the water is refracted onto depthLayers receiver depths and its triangles added up
-  // (brightness = beam area / refracted area). Needs Feature::PhysicalCaustics. Covers a
+  // (brightness = beam area / refracted area). Needs Feature::WavefrontAreaRatio. Covers a
   // camera-centred square (windowSize); across its outer eighth and beyond it, the light fades
   // to the TileIrradiance field (same units, computed too), so there is no edge.
   WavefrontAreaRatio,

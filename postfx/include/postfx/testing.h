@@ -33,7 +33,7 @@ GlName rawCausticTexture(const Context& context) noexcept;
 struct CausticIrradianceInfo {
   // Plugin-owned GL_TEXTURE_2D_ARRAY, GL_R32F, resolution^2 texels x layers: irradiance on a
   // horizontal receiver relative to flat water (flat water gives 1), clamped, no absorption.
-  // 0 without Feature::PhysicalCaustics or before the first frame in that model.
+  // 0 without Feature::WavefrontAreaRatio or before the first frame in that model.
   GlName texture = 0;
   int resolution = 0, layers = 0;
   glm::dvec2 windowOrigin{0.0};  // world xz of the corner of texel (0, 0) (m)

@@ -40,17 +40,17 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     present[int(Pass::Floor)] = hasFeature(desc.features, testing::BenchmarkFloor);
     // TileIrradiance needs no feature of its own: its pre-pass exists wherever caustics or god
     // rays (which read its field) do.
-    present[int(Pass::CausticsTileIrradiance)] =
+    present[int(Pass::TileIrradiance)] =
         hasFeature(desc.features, Feature::Caustics) || hasFeature(desc.features, Feature::GodRays);
     if (hasFeature(desc.features, Feature::GodRays)) {
       r = context->godRays.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
       present[int(Pass::GodRays)] = true;
     }
-    if (hasFeature(desc.features, Feature::PhysicalCaustics)) {
+    if (hasFeature(desc.features, Feature::WavefrontAreaRatio)) {
       r = context->wavefrontAreaRatio.init(detail::shaderDefines(desc), createError);
       if (r != Result::Ok) return r;
-      present[int(Pass::CausticsIrradiance)] = true;
+      present[int(Pass::WavefrontAreaRatio)] = true;
     }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
       r = context->objectCaustics.init(detail::shaderDefines(desc), desc.maxLocalLights,

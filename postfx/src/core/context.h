@@ -23,7 +23,7 @@ struct Context {
   detail::GodRayGridPivot godRayPivot;
   testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
   float godRayUniformPhase = 0.5f;
-  detail::WavefrontAreaRatioPass wavefrontAreaRatio;  // Feature::PhysicalCaustics only
+  detail::WavefrontAreaRatioPass wavefrontAreaRatio;  // Feature::WavefrontAreaRatio only
   // Compiled the first time a frame uses the TileIrradiance model.
   detail::TileIrradiancePass tileIrradiance;
   bool tileIrradianceReady = false;

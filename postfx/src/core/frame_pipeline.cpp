@@ -230,13 +230,13 @@ void recordPass(Context& context, const FrameDesc& frame, const FramePlan& plan,
                 const TileVariants& tile, const PlannedPass& step, GLuint irradiance) {
   const int w = textures.width, h = textures.height;
   switch (step.pass) {
-    case Pass::CausticsIrradiance:
-      timedPass(context, plan, step.pass, "postfx.caustics_irradiance",
+    case Pass::WavefrontAreaRatio:
+      timedPass(context, plan, step.pass, "postfx.wavefront_area_ratio",
                 [&] { context.wavefrontAreaRatio.draw(frame, textures); });
       context.caustics.bindState(frame, textures, context.wavefrontAreaRatio.texture());
       return;
-    case Pass::CausticsTileIrradiance:
-      timedPass(context, plan, step.pass, "postfx.caustics_tile_irradiance",
+    case Pass::TileIrradiance:
+      timedPass(context, plan, step.pass, "postfx.tile_irradiance",
                 [&] { context.tileIrradiance.draw(frame, textures); });
       context.caustics.bindState(frame, textures, irradiance, context.tileIrradiance.texture());
       return;
@@ -273,7 +273,7 @@ void record(Context& context, const FrameDesc& frame, const FramePlan& plan,
             const ValidatedTextures& textures, const FrameBlocks& blocks, const TileVariants& tile,
             HeldTargets& held) {
   TimedFrame timedFrame(context.timers);
-  if (hasFeature(context.desc.features, Feature::PhysicalCaustics)) {
+  if (hasFeature(context.desc.features, Feature::WavefrontAreaRatio)) {
     const double clamped = context.wavefrontAreaRatio.pollClampCounts();
     if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
     if (!plan.wavefrontAreaRatio && frame.caustics.model == CausticsModel::RayDeviation)

@@ -43,9 +43,9 @@ bool objectCausticsHaveWork(const Context& context, const FrameDesc& frame) {
 
 bool FramePlan::runs(Pass pass) const {
   switch (pass) {
-    case Pass::CausticsIrradiance:
+    case Pass::WavefrontAreaRatio:
       return wavefrontAreaRatio;
-    case Pass::CausticsTileIrradiance:
+    case Pass::TileIrradiance:
       return tile;
     case Pass::Floor:
       return floor && fullScreen;
@@ -82,7 +82,7 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   auto add = [&plan](Pass pass, int light = -1, int slot = -1) {
     plan.sequence[static_cast<std::size_t>(plan.sequenceLength++)] = {pass, light, slot};
   };
-  for (const Pass pass : {Pass::CausticsIrradiance, Pass::CausticsTileIrradiance, Pass::Floor,
+  for (const Pass pass : {Pass::WavefrontAreaRatio, Pass::TileIrradiance, Pass::Floor,
                           Pass::Caustics, Pass::GodRays, Pass::ObjectCaustics})
     if (plan.runs(pass)) add(pass);
   for (int k = 0; k < plan.lightCount; ++k)

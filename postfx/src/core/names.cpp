@@ -5,10 +5,10 @@ namespace postfx {
 
 const char* toString(Pass pass) noexcept {
   switch (pass) {
-    case Pass::CausticsIrradiance:
-      return "caustics_irradiance";
-    case Pass::CausticsTileIrradiance:
-      return "caustics_tile_irradiance";
+    case Pass::WavefrontAreaRatio:
+      return "wavefront_area_ratio";
+    case Pass::TileIrradiance:
+      return "tile_irradiance";
     case Pass::Floor:
       return "floor";
     case Pass::Caustics:

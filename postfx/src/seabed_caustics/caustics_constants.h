@@ -11,7 +11,7 @@
 
 namespace postfx::detail {
 
-// The frame uses the WavefrontAreaRatio model (and the context can: Feature::PhysicalCaustics).
+// The frame uses the WavefrontAreaRatio model (and the context can: Feature::WavefrontAreaRatio).
 // Derivative of the sun's landing offset per metre of depth with respect to the water slopes
 // (dh/dx, dh/dz) at flat water, column-major 2x2 packed as (d/dsx, d/dsz).
 glm::dvec4 landingDriftJacobian(const glm::dvec3& towardSun, double ior);

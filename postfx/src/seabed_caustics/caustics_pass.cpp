@@ -28,7 +28,8 @@ std::string shaderDefines(const CreateDesc& desc) {
   d += std::string("#define POSTFX_DISPERSION ") + flag(Feature::Dispersion) + "\n";
   d += std::string("#define POSTFX_SHADOW_MASK ") + flag(Feature::ShadowMask) + "\n";
   d += std::string("#define POSTFX_RAW_OUTPUT ") + flag(testing::RawCausticOutput) + "\n";
-  d += std::string("#define POSTFX_WAVEFRONT_AREA_RATIO ") + flag(Feature::PhysicalCaustics) + "\n";
+  d += std::string("#define POSTFX_WAVEFRONT_AREA_RATIO ") + flag(Feature::WavefrontAreaRatio) +
+       "\n";
   d += std::string("#define POSTFX_TRIPLANAR_WALLS ") + flag(Feature::TriplanarWalls) + "\n";
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
@@ -93,7 +94,7 @@ Result CausticsPass::init(const CreateDesc& desc, std::string& error) {
   // The tile repeats: filtering wraps across its edge.
   tileSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT,
                                       "postfx.sampler.tile_irradiance");
-  if (hasFeature(desc.features, Feature::PhysicalCaustics))
+  if (hasFeature(desc.features, Feature::WavefrontAreaRatio))
     irradianceSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
                                               "postfx.sampler.irradiance");
   return Result::Ok;

@@ -44,8 +44,8 @@ Result validateCausticsSettings(const CreateDesc& create, const CausticsSettings
     return fail("caustics.tileDepthLayers must be 4 or 8, got " +
                 std::to_string(s.tileDepthLayers));
   if (s.model == CausticsModel::WavefrontAreaRatio &&
-      !hasFeature(create.features, Feature::PhysicalCaustics))
-    return fail("caustics.model WavefrontAreaRatio needs Feature::PhysicalCaustics at create()");
+      !hasFeature(create.features, Feature::WavefrontAreaRatio))
+    return fail("caustics.model WavefrontAreaRatio needs Feature::WavefrontAreaRatio at create()");
   if (!kGridResolutionRange.contains(s.gridResolution))
     return fail("caustics.gridResolution must be in " + rangeText(kGridResolutionRange) + ", got " +
                 std::to_string(s.gridResolution));

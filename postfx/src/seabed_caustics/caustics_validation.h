@@ -1,6 +1,6 @@
 #pragma once
 // The seabed caustics' settings checks (part of validateFrameValues): every field of every
-// model in range, and WavefrontAreaRatio only where Feature::PhysicalCaustics was created.
+// model in range, and WavefrontAreaRatio only where Feature::WavefrontAreaRatio was created.
 #include <string>
 
 #include "core/validation.h"

@@ -17,23 +17,23 @@ Result WavefrontAreaRatioPass::init(const std::string& defines, std::string& err
   const Result r = buildPrograms(
       defines,
       {{vertices_,
-        "postfx.caustics_irradiance.grid",
+        "postfx.wavefront_area_ratio.grid",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_vertices.comp"}}},
        {triangles_,
-        "postfx.caustics_irradiance.triangles",
+        "postfx.wavefront_area_ratio.triangles",
         {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.vert"},
          {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.frag"}}},
        {points_,
-        "postfx.caustics_irradiance.points",
+        "postfx.wavefront_area_ratio.points",
         {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.vert"},
          {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
       error);
   if (r != Result::Ok) return r;
-  framebuffer_ = glkit::createFramebuffer("postfx.caustics_irradiance.framebuffer");
-  vertexArray_ = glkit::createVertexArray("postfx.caustics_irradiance.vao");
+  framebuffer_ = glkit::createFramebuffer("postfx.wavefront_area_ratio.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.wavefront_area_ratio.vao");
   for (ClampSlot& slot : clampSlots_)
     slot.buffer = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
-                                      "postfx.caustics_irradiance.clamp_count");
+                                      "postfx.wavefront_area_ratio.clamp_count");
   return Result::Ok;
 }
 
@@ -44,9 +44,9 @@ void WavefrontAreaRatioPass::ensureGridPoints(int pointsPerSide) {
   gridPoints_.reset();
   // Two vec4 per grid point (see irradiance_vertices.comp); reused by every layer in turn.
   const GLsizeiptr bytes = GLsizeiptr(pointsPerSide) * pointsPerSide * 2 * 16;
-  gridPoints_ = glkit::createBuffer(bytes, nullptr, 0, "postfx.caustics_irradiance.grid_points");
+  gridPoints_ = glkit::createBuffer(bytes, nullptr, 0, "postfx.wavefront_area_ratio.grid_points");
   gridPointView_ =
-      glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.caustics_irradiance.grid_points_view");
+      glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.wavefront_area_ratio.grid_points_view");
   glTextureBuffer(gridPointView_.id(), GL_RGBA32F, gridPoints_.id());
   gridPointsPerSide_ = pointsPerSide;
 }
@@ -54,7 +54,7 @@ void WavefrontAreaRatioPass::ensureGridPoints(int pointsPerSide) {
 void WavefrontAreaRatioPass::ensureTexture(int resolution, int layers) {
   if (texture_ && textureResolution_ == resolution && textureLayers_ == layers) return;
   texture_.reset();  // the old size goes first: never two of them allocated at once
-  texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_irradiance");
+  texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.wavefront_area_ratio");
   // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
   // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
   // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.

@@ -4,7 +4,7 @@
 // draw rasterises the refracted triangles, blended additively into a layer of a plugin-owned
 // GL_R32F 2D array; a point draw deposits the flux of the triangles too small to rasterise
 // without noise (under half a texel), split over its four nearest texels by bilinear weights.
-// Only built with Feature::PhysicalCaustics.
+// Only built with Feature::WavefrontAreaRatio.
 // Why a rasterised mesh rather than splatting photons: each triangle carries exactly the flux
 // of its piece of the beam, so the result is noise-free at any grid size and folds sum for free
 // in the blender. Why the area ratio in the fragment stage: it needs all three vertices, and

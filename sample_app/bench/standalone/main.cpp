@@ -89,8 +89,7 @@ std::vector<Config> configurations() {
   noGodRays.enabled = false;
   const Feature caustics = Feature::Caustics | Feature::Dispersion;
   // The default model: the tile irradiance, its pre-pass counted.
-  configs.push_back(
-      {"caustics", caustics, {}, noGodRays, {Pass::CausticsTileIrradiance, Pass::Caustics}});
+  configs.push_back({"caustics", caustics, {}, noGodRays, {Pass::TileIrradiance, Pass::Caustics}});
   postfx::CausticsSettings rayDeviation;
   rayDeviation.model = postfx::CausticsModel::RayDeviation;
   configs.push_back(
@@ -104,18 +103,18 @@ std::vector<Config> configurations() {
          caustics,
          tile,
          noGodRays,
-         {Pass::CausticsTileIrradiance, Pass::Caustics}});
+         {Pass::TileIrradiance, Pass::Caustics}});
   }
   for (int grid : {128, 256}) {
     postfx::CausticsSettings physical;
     physical.model = postfx::CausticsModel::WavefrontAreaRatio;
     physical.gridResolution = grid;
     configs.push_back({"caustics_physical_" + std::to_string(grid),
-                       caustics | Feature::PhysicalCaustics,
+                       caustics | Feature::WavefrontAreaRatio,
                        physical,
                        noGodRays,
                        // The tile irradiance continues the window: its pre-pass runs too.
-                       {Pass::CausticsIrradiance, Pass::CausticsTileIrradiance, Pass::Caustics}});
+                       {Pass::WavefrontAreaRatio, Pass::TileIrradiance, Pass::Caustics}});
   }
   // God rays alone (no seabed caustics): the default model's shafts read the tile irradiance,
   // whose pre-pass then runs for them (shown, not counted: a default frame shares it with the
@@ -134,7 +133,7 @@ std::vector<Config> configurations() {
                        noCaustics,
                        godRays,
                        {Pass::GodRays},
-                       {Pass::CausticsTileIrradiance}});
+                       {Pass::TileIrradiance}});
     configs.push_back({std::string("god_rays_ray_deviation_") + label + "_16",
                        Feature::Caustics | Feature::GodRays,
                        noCausticsRayDeviation,
@@ -145,7 +144,7 @@ std::vector<Config> configurations() {
                      caustics | Feature::GodRays,
                      {},
                      {},
-                     {Pass::CausticsTileIrradiance, Pass::Caustics, Pass::GodRays}});
+                     {Pass::TileIrradiance, Pass::Caustics, Pass::GodRays}});
   return configs;
 }
 

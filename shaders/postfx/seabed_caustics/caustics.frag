@@ -93,7 +93,7 @@ void main() {
   // One irradiance for all channels: the mesh is refracted with the mean IOR.
   vec3 physical = vec3(physicalIrradiance(p, depthBelow, logFootprint, physicalWeight));
 #endif
-  // Inside the physical window the ray-deviation and tile lookups are not needed: zero weights skip their
+  // Inside the window the ray-deviation lookups are not needed: zero weights skip their
   // fetches (on GPUs; a CPU rasteriser runs them masked).
   vec4 cascades = physicalWeight < 1.0 ? selectCascades(depthBelow, logFootprint) : kNoCascades;
   vec3 waterNormal = waterNormalFromSlopes(waterSlopes(p, n, logFootprint, cascades));
