@@ -36,7 +36,7 @@ postfx_add_test(postfx_object_caustics_tests
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})
 
-# The dispatch fuzz (issue 15): a few thousand deterministic cases over every FrameDesc field
+# The dispatch fuzz: a few thousand deterministic cases over every FrameDesc field
 # group, the settings, the casters and the G-buffer texels, in four contexts.
 postfx_add_test(postfx_fuzz_tests
   SOURCES fuzz/postfx_fuzz_test.cpp gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp

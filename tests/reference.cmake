@@ -4,7 +4,7 @@ postfx_add_test(reference_unit_tests
           unit/reference_local_light_test.cpp
   LIBS ocean_reference)
 
-# The WavefrontAreaRatio caustics model (seed 004): its own properties, its window as the
+# The WavefrontAreaRatio caustics model: its own properties, its window as the
 # caustics pass shows it, and its error against the seabed reference on the same read-back
 # water texture.
 postfx_add_test(postfx_physical_tests GL
@@ -65,7 +65,7 @@ postfx_add_test(postfx_shadow_bias_tests GL
   SOURCES gl/postfx_shadow_bias_test.cpp
   LIBS ocean_validation glm::glm postfx::epoxy)
 
-# Point and spot lights' object caustics (issue 18) against the exact CPU ray tracing of the same
+# Point and spot lights' object caustics against the exact CPU ray tracing of the same
 # glass sphere, through the validation library's host (light_caustic_run.h): focus, flux in air and under
 # water, inverse square over 1-10 m, a spot cone's edge.
 postfx_add_test(postfx_object_caustics_lights_accuracy_tests GL

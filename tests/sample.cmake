@@ -29,7 +29,7 @@ postfx_add_test(sample_live_settings_tests GL
 postfx_add_test(sample_view_flags_tests GL
   SOURCES gl/sample_view_flags_test.cpp
   LIBS ocean_host ocean_reference)
-# Issue 19 item 3: a flicker test per pass, and the plugin's change against its references'.
+# A flicker test per pass, and the plugin's change against its references'.
 postfx_add_test(sample_stability_tests GL
   SOURCES gl/sample_stability_test.cpp
   LIBS ocean_lab)

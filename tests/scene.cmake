@@ -13,7 +13,7 @@ if(TARGET ocean_scene)
          meshoptimizer::meshoptimizer PkgConfig::OIIO)
 endif()
 
-# The glTF loader's fuzz target (issue 28, item 6): seeded mutations of the unit test's seeds
+# The glTF loader's fuzz target: seeded mutations of the unit test's seeds
 # and of the regression corpus for OCEAN_GLTF_FUZZ_SECONDS (default 45 s); `ctest -L fuzz`.
 if(TARGET ocean_scene)
   postfx_add_test(scene_gltf_fuzz_tests

@@ -66,8 +66,8 @@ postfx::FrameDesc passFrameDesc(const postfx::FrameDesc& host, StabilityPass pas
   if (pass == StabilityPass::WavefrontAreaRatio)
     frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
   frame.godRays.enabled = pass == StabilityPass::GodRays;
-  // The god rays' dense reference (reference::renderGodRayReference) marches seed 002's factor:
-  // the RayDeviation model's god rays (the other models' read their irradiance field).
+  // The god rays' dense reference (reference::renderGodRayReference) marches ray deviation's
+  // factor: the RayDeviation model's god rays (the other models' read their irradiance field).
   if (pass == StabilityPass::GodRays) frame.caustics.model = postfx::CausticsModel::RayDeviation;
   frame.objectCaustics.settings.enabled = isObjectCaustics(pass);
   frame.objectCaustics.settings.temporalFilter = pass == StabilityPass::FilteredObjectCaustics;

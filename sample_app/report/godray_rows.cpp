@@ -139,7 +139,8 @@ bool measureGodRays(const postfx::CreateDesc& host, const postfx::FrameDesc& hos
   postfx::FrameDesc frame = hostFrame;
   frame.caustics.enabled = false;
   frame.godRays.enabled = true;
-  // The double-precision reference marches seed 002's factor: the RayDeviation model's god rays.
+  // The double-precision reference marches ray deviation's factor: the RayDeviation model's god
+  // rays.
   frame.caustics.model = postfx::CausticsModel::RayDeviation;
 
   std::fprintf(stderr, "report: god-ray reference, %d and %d samples per pixel\n",

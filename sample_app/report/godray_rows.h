@@ -1,10 +1,10 @@
 #pragma once
 // The report's god-ray rows: every sample count at full and half resolution, world-grid and
 // uniform sampling, each timed and compared with the dense double-precision march
-// (reference::renderGodRayReference) of the same frame with seed 002's factor (the RayDeviation
-// model); then the god rays of the TileIrradiance model (the seabed caustics' light field, the
-// default) at full, half and quarter resolution against the plugin's own dense march of that
-// field (referenceSamples uniform samples per pixel, full resolution).
+// (reference::renderGodRayReference) of the same frame with ray deviation's factor (the
+// RayDeviation model); then the god rays of the TileIrradiance model (the seabed caustics' light
+// field, the default) at full, half and quarter resolution against the plugin's own dense march of
+// that field (referenceSamples uniform samples per pixel, full resolution).
 #include <string>
 #include <vector>
 

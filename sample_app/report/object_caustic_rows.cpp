@@ -74,7 +74,7 @@ std::vector<double> blockMeans(const std::vector<glm::dvec3>& map, int size, int
   return out;
 }
 
-// The point and spot lights' rows (issue 18), every setting at its default: the light's own
+// The point and spot lights' rows, every setting at its default: the light's own
 // GPU time, its error against exact ray tracing into the same bins (two seeds: their half
 // difference is the reference's noise), focus and flux in the note. Appends to `note`.
 bool measureLightRows(const ObjectCausticReportSettings& settings, int timedFrames,
@@ -168,7 +168,7 @@ bool measureLightRows(const ObjectCausticReportSettings& settings, int timedFram
   char text[1200];
   std::snprintf(
       text, sizeof(text),
-      " Point and spot lights (issue 18): a glass ball (R = 0.25 m, IOR 1.5, absorption 0.2, 1, "
+      " Point and spot lights: a glass ball (R = 0.25 m, IOR 1.5, absorption 0.2, 1, "
       "3 per m) lit by a point light 2 m from its centre, 30 deg off the vertical, over a floor "
       "that cuts the axis at 0.98 of the paraxial image (in air; under water: relative IOR "
       "1.5/1.333, water absorbing 0.35, 0.06, 0.02 per m along both legs); a spot 2 m above a "

@@ -18,8 +18,8 @@ struct Row {
   // Error against the CPU reference over the compared pixels:
   double relativeRmse = kNotApplicable;  // sqrt(sum (x - r)^2 / sum r^2), absolute scale
   double affineRmse = kNotApplicable;    // the same after the best fit a x + b (methods whose
-                                         // output has no absolute scale, e.g. seed-002's omega)
-  double correlation = kNotApplicable;   // Pearson correlation with the reference
+                                       // output has no absolute scale, e.g. ray deviation's omega)
+  double correlation = kNotApplicable;  // Pearson correlation with the reference
   // Pattern contrast (std / mean over the compared bins) of the pass and of the reference; set
   // where the compared value is itself a pattern (the flat seabed's light relative to flat water).
   double contrast = kNotApplicable, referenceContrast = kNotApplicable;

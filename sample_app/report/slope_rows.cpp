@@ -77,7 +77,7 @@ bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame,
                 "%d x %d pixels on the plane), the sun at the frame's elevation turned to the "
                 "tilt's azimuth; reference: %.3g rays traced through the GPU's water texture onto "
                 "each plane, worst median per-bin error %.2g%s. Errors after the best affine fit "
-                "(seed 002's omega has no scale).",
+                "(ray deviation's omega has no scale).",
                 settings.receiverDepth, settings.viewDistance, settings.width, settings.height,
                 settings.binPixels, settings.binPixels, double(rays), worstError,
                 converged ? "" : " (ray cap reached)");

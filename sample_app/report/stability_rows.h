@@ -1,5 +1,5 @@
 #pragma once
-// The report's temporal-stability rows (issue 19 item 3): for every pass (the caustics in each
+// The report's temporal-stability rows: for every pass (the caustics in each
 // model, the god rays, the object caustics with and without their temporal filter) the
 // frame-to-frame change of the light it adds under two slow motions (time frozen with the
 // camera moving; the camera still with time running), beside its reference's own change over

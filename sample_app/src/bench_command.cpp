@@ -4,7 +4,7 @@
 // God rays: after the default run, one short run per sample count (4..64) at full, half and
 // quarter resolution, each with a fresh plugin context (fresh timers) and its own floor measured
 // in the same run, reported as rows god_rays_<n>, god_rays_half_<n> and god_rays_quarter_<n>.
-// Physical caustics (seed 004): one short run per grid resolution (64..1024), rows
+// The wavefront area ratio: one short run per grid resolution (64..1024), rows
 // caustics_irradiance_<n> (the extra pass), caustics_physical_tile_<n> (the tile pre-pass that
 // continues the window) and caustics_physical_<n> (the full-screen caustics pass sampling both),
 // with the clamp's bias on stderr.

@@ -42,7 +42,7 @@ struct Options {
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
   double tau = -1.0;           // caustics tightening; < 0 keeps the plugin's default
   // Caustics model: the tile irradiance (the plugin's default) unless one of these is set:
-  // the wavefront area-ratio irradiance window (seed 004, Feature::WavefrontAreaRatio, with this
+  // the wavefront area-ratio irradiance window (Feature::WavefrontAreaRatio, with this
   // grid resolution) or the ray deviation.
   bool physicalCaustics = false;
   bool rayDeviationCaustics = false;  // the ray-deviation model instead of the tile irradiance

@@ -108,7 +108,7 @@ int runReport(const Options& given) {
     if (!measureErrorRows(session, given.quick, rows, info, error)) return commandFailed(error);
   }
 
-  // Temporal stability (issue 19 item 3) on frames of its own size: the traced reference of
+  // Temporal stability on frames of its own size: the traced reference of
   // each frame is what it costs.
   report::StabilityReportSettings stability;
   stability.waterResolution = options.waterResolution;

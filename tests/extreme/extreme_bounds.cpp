@@ -87,8 +87,8 @@ Excess boundExcess(const Output& out, Pass pass) {
 
 // God-ray samples on the world grid jump when the grid rotates (sun, IOR) or when a march end
 // passes a plane (water level): per pixel the sum of rho*omega over the samples is
-// discontinuous, by design of the seed's quadrature (the image mean is what stays smooth). For
-// those sweeps the light model itself is checked, with samples evenly along each ray (fixed
+// discontinuous, by design of the god-ray grid's quadrature (the image mean is what stays smooth).
+// For those sweeps the light model itself is checked, with samples evenly along each ray (fixed
 // positions for a fixed range).
 bool continuityNeedsUniformSampling(Pass pass, Sweep sweep) {
   return isGodRayPass(pass) &&

@@ -11,7 +11,7 @@
 namespace extreme {
 
 enum class Pass {
-  Caustics,            // seabed caustics, seed-002 coefficient
+  Caustics,            // seabed caustics, ray-deviation coefficient
   CausticsDispersion,  // ... with Feature::Dispersion (per-channel IOR) and TriplanarWalls
   CausticsShadow,      // ... with Feature::ShadowMask (synthetic sun shadow map)
   GodRaysFull,         // god rays, full resolution

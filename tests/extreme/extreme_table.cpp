@@ -21,7 +21,8 @@ void bad(K& k) {
 const std::vector<Row>& rows() {
   static const std::vector<Row> table = {
       // Sun elevation 0..90 deg, grazing down to 0.01 deg, and below the horizon.
-      // Exactly at the zenith the seed's reference vector (normal of the plane of incidence) is
+      // Exactly at the zenith ray deviation's reference vector (normal of the plane of incidence)
+      // is
       // undefined and takes a fixed fallback, so the zenith frame is a point discontinuity of the
       // model for any azimuth but that fallback's: no sweep there; the approach is swept below.
       {"sun_90deg", kPlugin, [](K& k) { k.sunElevationDeg = 90.0; }},

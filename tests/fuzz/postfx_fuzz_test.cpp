@@ -1,4 +1,4 @@
-// Dispatch fuzz (issue 15): a deterministic seed drives a few thousand frames, each a valid frame
+// Dispatch fuzz: a deterministic seed drives a few thousand frames, each a valid frame
 // with one field group spoiled by wild values (IEEE specials, values at and past every bound,
 // far magnitudes), in contexts that differ in depth convention, normal encoding and features.
 // Every case must end one of two ways:

@@ -1,4 +1,4 @@
-// The glTF loader's fuzz target (issue 28, item 6): seeded mutations of the valid seeds and of
+// The glTF loader's fuzz target: seeded mutations of the valid seeds and of
 // the whole regression corpus (gltf_hostile_corpus.h: damaged GLBs, broken data: URIs, long
 // names, narrowed integers, amplifications in small), for a bounded time, each load held to
 // the loader's promises (gltf_mutations.h: one bounded line naming the file, or a usable

@@ -1,7 +1,8 @@
 // Where the caustics pass looks the water up. By default every surface samples the water where
 // its light entered (the receiver moved along the refracted sun to the water plane), so the
 // caustic factor at a point does not depend on the orientation of the surface there, only N.L
-// does; Feature::TriplanarWalls brings back seed 002's world-axis projections on steep surfaces.
+// does; Feature::TriplanarWalls brings back ray deviation's world-axis projections on steep
+// surfaces.
 #include <gtest/gtest.h>
 #include <postfx/testing.h>
 

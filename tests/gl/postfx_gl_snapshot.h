@@ -62,7 +62,7 @@ inline GlSnapshot snapshotGlState() {
     s[name] = scaled;
   };
   floats("blend_color", GL_BLEND_COLOR, 4);
-  // Fixed-function state that changes what a draw writes (issue 15's list).
+  // Fixed-function state that changes what a draw writes (the host-state list).
   enabled("color_logic_op", GL_COLOR_LOGIC_OP);
   ints("logic_op_mode", GL_LOGIC_OP_MODE, 1);
   enabled("sample_alpha_to_coverage", GL_SAMPLE_ALPHA_TO_COVERAGE);

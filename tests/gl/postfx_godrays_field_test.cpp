@@ -1,5 +1,5 @@
 // God rays from the caustics' own light field (the TileIrradiance model, the default): the
-// shafts line up with the seabed pattern below them (far better than seed 002's slope factor),
+// shafts line up with the seabed pattern below them (far better than ray deviation's slope factor),
 // flat water gives exactly the unmodulated shafts, the field's pre-pass runs for god rays alone
 // and is left out when nothing reads it, and the contracts hold (no light above the water or on
 // the sky, finite, bounded by the field's clamp).
@@ -70,7 +70,7 @@ postfx::FrameDesc fieldFrame(const postfxtest::Scene& scene, GLuint water,
 // ray follows one flat-water light ray, so its shaft is the light that lands on the seabed pixel
 // it ends on, integrated over the `height` above it. Returns the correlation of the shafts with
 // the seabed caustics (tile model) below them, the god rays reading the tile field (withField)
-// or seed 002's factor (withSlopes).
+// or ray deviation's factor (withSlopes).
 void shaftSeabedCorrelation(double height, double& withField, double& withSlopes,
                             postfx::CausticsModel model = postfx::CausticsModel::TileIrradiance) {
   postfxtest::SceneSpec spec;
@@ -106,7 +106,7 @@ void shaftSeabedCorrelation(double height, double& withField, double& withSlopes
   withSlopes = correlation(slopes, seabed, floor);
   std::printf(
       "god rays over %.1f m vs the seabed caustics below (correlation, %s model): its field "
-      "%.3f, seed 002 %.3f\n",
+      "%.3f, ray deviation %.3f\n",
       height, physical == Feature::None ? "tile" : "physical", withField, withSlopes);
   glDeleteTextures(1, &water);
 }
@@ -114,7 +114,7 @@ void shaftSeabedCorrelation(double height, double& withField, double& withSlopes
 // Seed 002's factor depends on the slopes where the light entered, not on how far it has
 // travelled since: it cannot show where the light focuses. The tile field is the seabed's own
 // light at every depth. Measured (96 x 96, 64 uniform samples): 0.5 m above the seabed (the
-// in-water source just above it) correlation 0.84 against -0.11 for seed 002; over 3 m, where
+// in-water source just above it) correlation 0.84 against -0.11 for ray deviation; over 3 m, where
 // the shaft averages the pattern over its changing focus, 0.44 against 0.21.
 TEST_F(PostfxGodRaysFieldTest, ShaftsLineUpWithTheSeabedPattern) {
   double field = 0.0, slopes = 0.0;
@@ -139,7 +139,7 @@ TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsLineUpWithTheSeabedPattern) {
 
 // Beyond the physical window the seabed is lit by the tile field, and so are the shafts: with a
 // window of 1 m around the camera nearly every sample lies beyond it, and the physical model's
-// shafts are the tile model's (they were seed 002's factor, which does not match that seabed).
+// shafts are the tile model's (they were ray deviation's factor, which does not match that seabed).
 TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsBeyondTheWindowAreTheTileFields) {
   postfxtest::SceneSpec spec;
   spec.width = 96;
@@ -168,7 +168,7 @@ TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsBeyondTheWindowAreTheTileFields) {
   ASSERT_GT(level, 1e-3 * double(tile.size())) << "the test must see god rays";
   std::printf(
       "physical model's shafts, 1 m window: mean |difference| from the tile model's %.4f "
-      "of its light (seed 002's %.4f)\n",
+      "of its light (ray deviation's %.4f)\n",
       fromTile / level, seed002FromTile / level);
   RecordProperty("physical_vs_tile", std::to_string(fromTile / level));
   RecordProperty("seed002_vs_tile", std::to_string(seed002FromTile / level));
@@ -177,7 +177,8 @@ TEST_F(PostfxGodRaysFieldTest, PhysicalShaftsBeyondTheWindowAreTheTileFields) {
   glDeleteTextures(1, &water);
 }
 
-// Flat water: the field is 1 everywhere, as seed 002's factor is, so both give the same shafts.
+// Flat water: the field is 1 everywhere, as ray deviation's factor is, so both give the same
+// shafts.
 TEST_F(PostfxGodRaysFieldTest, FlatWaterGivesTheUnmodulatedShafts) {
   postfxtest::SceneSpec spec;
   spec.width = 64;

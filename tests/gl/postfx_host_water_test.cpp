@@ -1,4 +1,4 @@
-// Issue 26: the default model's pattern on water this project did not make. A host's own sea,
+// The default model's pattern on water this project did not make. A host's own sea,
 // a sum of Gerstner (trochoidal) waves with their exact heights and slopes on the texture's
 // grid, drives the TileIrradiance pass on the report's flat seabed, against converged light
 // tracing through the same texture (report/caustic_rows.h). On a flat seabed the irradiance

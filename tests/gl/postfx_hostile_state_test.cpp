@@ -1,4 +1,4 @@
-// Any host GL state gives the same image (issue 15): each piece of state that can change what a
+// Any host GL state gives the same image: each piece of state that can change what a
 // draw writes is set, one at a time, to a hostile value before dispatch(); the light added to
 // the target (and the raw caustic output) must be bit-identical to the clean run, and every
 // piece of state must read back as the host set it. The list below is written from the GL 4.5

@@ -1,6 +1,6 @@
-// Object caustics against exact CPU ray tracing (seed 000's glass sphere, the metal ring's
-// cardioid): focus position, total flux, caustic curve; and the error/time table over map size,
-// grid size and hit iterations.
+// Object caustics against exact CPU ray tracing (the caustics-mapping glass sphere, the metal
+// ring's cardioid): focus position, total flux, caustic curve; and the error/time table over map
+// size, grid size and hit iterations.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,7 +82,7 @@ TEST_F(PostfxObjectCausticsAccuracyTest, GlassSphereMatchesExactRayTracing) {
   postfx::ObjectCausticsSettings s;
   s.mapSize = 512;
   s.gridSize = 512;
-  s.footprintScale = 3.0f;  // defaults otherwise: 1 receiver iteration (the seed's), 5 exit
+  s.footprintScale = 3.0f;  // defaults otherwise: 1 receiver iteration (caustics mapping's), 5 exit
   const SphereRun run = runSphere(s, 2400, true);
   // Issue #7: focus within 2 % of the radius, flux within 5 %.
   EXPECT_LT(run.focusErrorVsReference, 0.02);
@@ -250,8 +250,8 @@ TEST_F(PostfxObjectCausticsAccuracyTest, UnderWaterTheLightIsTheRefractedSun) {
   glassMaterial.ior = 1.5f;
   const postfx::CasterMesh caster = mesh.caster(translation(sphere.centre), glassMaterial);
   auto fx = makeObjectContext();
-  // A weak lens (relative IOR 1.125) seen at 35 degrees: the seed's single receiver iteration
-  // leaves a few per cent of R; three converge.
+  // A weak lens (relative IOR 1.125) seen at 35 degrees: caustics mapping's single receiver
+  // iteration leaves a few per cent of R; three converge.
   for (int iterations : {1, 3}) {
     postfx::ObjectCausticsSettings s;
     s.mapSize = 512;

@@ -139,7 +139,7 @@ TEST_F(PostfxObjectCausticsContractTest, BadInputFailsCleanly) {
        [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.vertexCount *= 4; }},
       // Sizes and offsets that overflow 64-bit arithmetic if multiplied or added naively: the
       // first drew 1.4e9 vertices from an 864-byte buffer, INT64_MAX counts raised GL errors
-      // after Ok, and a huge base offset dropped the caster silently (issue 15).
+      // after Ok, and a huge base offset dropped the caster silently.
       {"vertex count whose byte size wraps", Result::InvalidArgument, "vertexCount",
        [](postfx::CasterMesh& m, postfx::FrameDesc&) { m.vertexCount = 384307168202282566; }},
       {"vertex count INT64_MAX", Result::InvalidArgument, "vertexCount",

@@ -109,8 +109,8 @@ TEST_F(PostfxObjectCausticsDefaultsTest, GlassSphereInAir) {
   const DefaultsRun run = runDefaults(scene.sphere, scene.towardSun, 0.0, "air");
   EXPECT_LT(run.focusError, 0.02);
   for (int c = 0; c < 3; ++c) EXPECT_LT(std::abs(run.fluxError[c]), 0.05) << "channel " << c;
-  // The halo around the focus: with the seed's single step the rim rays stopped short and the
-  // halo ended in a hard edge with rings (relative RMS 0.73, whole map 0.235); with the secant
+  // The halo around the focus: with caustics mapping's single step the rim rays stopped short and
+  // the halo ended in a hard edge with rings (relative RMS 0.73, whole map 0.235); with the secant
   // step and splats widened to the rays' spacing it follows the trace (0.04 and 0.03).
   EXPECT_LT(run.haloError, 0.1);
   EXPECT_LT(run.placementError, 0.06);

@@ -1,5 +1,5 @@
 // Point and spot lights' object caustics against exact CPU ray tracing of the same glass sphere
-// (ocean::reference::traceSphereFromLight, issue 18 item 4): what the plugin adds over a white
+// (ocean::reference::traceSphereFromLight): what the plugin adds over a white
 // floor, binned by pixel, against the traced light in the same bins. Focus of a glass sphere lit
 // by a point light 2 m away, flux after Fresnel and absorption (in air and under water), the
 // inverse-square law over 1-10 m, and a spot cone's edge cutting the sphere.
@@ -83,7 +83,7 @@ TEST_F(PostfxObjectCausticsLightsAccuracyTest, PointLightFocusAndFluxMatchTracin
   const double toFocus = glm::length(scene.light.position - scene.binCentre);
   std::printf("focus error %.2f %% of R, %.3f %% of the light's distance to it\n",
               100.0 * c.focusError / radius, 100.0 * c.focusError / toFocus);
-  // Issue 18: the focus within 2 % (of the radius, as the sun's), the flux within 5 %.
+  // The focus within 2 % (of the radius, as the sun's), the flux within 5 %.
   EXPECT_LT(c.focusError, 0.02 * radius);
   for (int ch = 0; ch < 3; ++ch) EXPECT_LT(std::abs(c.fluxError[ch]), 0.05) << "channel " << ch;
 }

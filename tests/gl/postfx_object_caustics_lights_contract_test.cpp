@@ -1,4 +1,4 @@
-// Local lights' contracts (issue 18): bad input is refused naming the field, with nothing drawn
+// Local lights' contracts: bad input is refused naming the field, with nothing drawn
 // and the host's GL state untouched; the light count is bounded by CreateDesc::maxLocalLights;
 // sunCaustics = false leaves the sun out.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// What a local light's object caustics cost (issue 18, item 2): against a fair floor that draws
+// What a local light's object caustics cost: against a fair floor that draws
 // the same caster (front and back maps), splats the same number of points with the same sprite
 // and composites the same map, with no math; and linear in the lights that reach a caster.
 // Timed on the GPU in one process, interleaved (GL_TIME_ELAPSED around each, the GPU drained

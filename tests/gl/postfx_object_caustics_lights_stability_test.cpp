@@ -1,4 +1,4 @@
-// Local lights' object caustics at the edges (issue 18, items 2 and 5): a light that reaches no
+// Local lights' object caustics at the edges: a light that reaches no
 // caster costs nothing and allocates nothing; the extreme cases (light inside the caster, on the
 // receiver, 1e6 m from the origin, cone 179 degrees, range 0 and 1e6 m, intensity 0 and 1e6, at
 // and above the water surface) stay finite and bounded; the host's GL state survives.

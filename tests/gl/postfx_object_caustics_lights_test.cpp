@@ -1,4 +1,4 @@
-// Local lights' object caustics against what optics says they must be (issue 18): the inverse
+// Local lights' object caustics against what optics says they must be: the inverse
 // square through a thin pane, a spot cone's edge, a glass sphere's focus and flux.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The glTF-style glass fields of postfx::CasterMaterial (issue 17) change the caustic as the
+// The glTF-style glass fields of postfx::CasterMaterial change the caustic as the
 // glTF extensions mean: the transmission weight scales the flux, the tint colours it, thicker
 // absorbing glass darkens it per Beer-Lambert, thin-walled glass does not focus, roughness
 // widens the caustic by the stated cone, dispersion separates the channels' foci; each against
@@ -164,8 +164,8 @@ SphereComparison compareSphere(const SphereCaster& sphere, const glm::dvec3& sun
   s.mapSize = 512;
   s.gridSize = 512;
   s.footprintScale = 3.0f;
-  // A converged receiver search: with the seed's single iteration the strongly bent rim rays
-  // land short of where the trace puts them (the flux and the focus agree either way).
+  // A converged receiver search: with caustics mapping's single iteration the strongly bent rim
+  // rays land short of where the trace puts them (the flux and the focus agree either way).
   s.iterations = 5;
   SphereComparison out;
   out.gpu = runCasters(host, &caster, 1, s, extra);

@@ -1,4 +1,4 @@
-// The object caustics' work budget through dispatch (issue 28): a caster set over
+// The object caustics' work budget through dispatch: a caster set over
 // CreateDesc::casterTriangleBudget or a grid over ::splatBudget is refused with
 // InvalidArgument before anything is drawn, and the same frame within the budget draws.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The WavefrontAreaRatio caustics model (seed 004) on its own terms: flat water gives 1, the
+// The WavefrontAreaRatio caustics model on its own terms: flat water gives 1, the
 // mesh conserves flux, the clamp's reported bias is what it removed, the caustics pass really
 // samples the irradiance, no light where there must be none, and bad settings fail cleanly.
 #include <gtest/gtest.h>
@@ -155,7 +155,7 @@ TEST_F(PostfxPhysicalTest, ReportsTheFluxTheClampRemoved) {
 
   frame.caustics.model = postfx::CausticsModel::RayDeviation;
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok);
-  EXPECT_EQ(postfx::stats(*fx).clampedFluxFraction, 0.0) << "no clamp in the seed-002 model";
+  EXPECT_EQ(postfx::stats(*fx).clampedFluxFraction, 0.0) << "no clamp in the ray-deviation model";
 }
 
 // The caustics pass's raw output on a floor at a layer's depth is that layer at the pixel's

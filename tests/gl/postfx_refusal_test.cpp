@@ -1,4 +1,4 @@
-// Validation that cannot be fooled (issue 15): values that once passed validation and then
+// Validation that cannot be fooled: values that once passed validation and then
 // wrote NaN, raised GL errors in the host's context or poisoned the context are refused with a
 // message and the target bit-identical, or accepted with finite output; an accepted extreme
 // frame leaves no trace in the next ordinary frame.

@@ -1,7 +1,7 @@
 // The caustics' two water lookups on sloped receivers against converged light tracing onto the
 // same tilted plane (sample_app/validation/slope_comparison.h, the code the report's rows run),
 // through a real 3-cascade FFT sea read back from GL. Asserted: at slope 0 the default lookup
-// (along the refracted light, to where the light entered the water) and seed 002's world-axis
+// (along the refracted light, to where the light entered the water) and ray deviation's world-axis
 // tri-planar one (Feature::TriplanarWalls) give the same raw output; on 45 and 60 degree slopes the
 // comparison itself is sound (the physical model, which uses neither lookup, follows the traced
 // pattern). Printed: both lookups' errors against the traced pattern on those slopes.
@@ -101,7 +101,7 @@ TEST_F(PostfxSlopeLookupTest, SlopedReceiversAgainstTheTracedPattern) {
       EXPECT_LT(physical, (c.normalDotLight > 0.4 ? 0.5 : 0.75) * none);
       // The lookups themselves: along the light against tri-planar walls, with the standard
       // deviation the reference's noise puts into their difference. Printed, not asserted: with
-      // seed 002's omega (correlation ~0.1-0.2 with the traced pattern even on a flat floor)
+      // ray deviation's omega (correlation ~0.1-0.2 with the traced pattern even on a flat floor)
       // both stay within ~2 % of drawing no pattern at all, and which one is closer changes
       // with the water's realisation (here tri-planar at 60 degrees facing the sun, by 23
       // noise standard deviations), so neither order is a property of the lookups.

@@ -3,7 +3,7 @@
 // pattern must be no more streaked along the sun's azimuth than traced light (streak ratio, the
 // gradient energy across / along the azimuth, within 1.5x of the reference's). Measured here:
 // 0.75 against the trace's 0.91 (85 degrees) and 0.84 (70 degrees), correlation 0.37-0.39;
-// seed 002's single reference across the plane of incidence gave 2.38 and 2.54, correlation
+// ray deviation's single reference across the plane of incidence gave 2.38 and 2.54, correlation
 // 0.22-0.25, and fails.
 #include <gtest/gtest.h>
 

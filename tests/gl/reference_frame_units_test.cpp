@@ -1,5 +1,5 @@
 // The traced frame reference adds light in the plugin's own units: on a flat seabed under flat
-// water the plugin's added light (seed 002: omega = 1) equals, per pixel and channel, the
+// water the plugin's added light (ray deviation: omega = 1) equals, per pixel and channel, the
 // reference's light for the flat-water irradiance read through the same G-buffer, and the
 // traced irradiance reproduces it within its stated noise.
 #include <gtest/gtest.h>

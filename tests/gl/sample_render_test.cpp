@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(Presets, SampleRender,
 
 class SampleTorch : public SampleRender {};
 
-// Issue 18: the torch preset's spot light lights the sand itself (the renderer's own direct
+// The torch preset's spot light lights the sand itself (the renderer's own direct
 // light, shadowed) and the plugin adds the glass sphere's caustic of it only inside the
 // sphere's shadow: where the added light is bright, the torch's direct light is gone.
 TEST_F(SampleTorch, CausticLiesInsideTheSphereShadow) {

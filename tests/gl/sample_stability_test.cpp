@@ -1,4 +1,4 @@
-// Issue 19, item 3: a flicker test per pass. Each pass's added light, isolated as the report's
+// A flicker test per pass. Each pass's added light, isolated as the report's
 // temporal-stability rows isolate it (stability_sequence.h), follows the camera and time
 // smoothly: nothing changes when nothing moves, and 16 times shorter steps change each frame
 // far less (a smooth signal changes about 16 times less; noise drawn anew each frame, samples

@@ -1,5 +1,5 @@
 #pragma once
-// The regression corpus of issue 28: every hostile or odd file the issue lists, generated here
+// The regression corpus: every hostile or odd file found so far, generated here
 // (no committed binaries) so that the loader's tests, its message-length test and its fuzz
 // target all start from the same files. Each case is a folder: the model and the files it
 // refers to, what a refusal must say, or that it loads.
@@ -24,7 +24,7 @@ struct Case {
   std::string notes;
 };
 
-// The three files that multiply their work without bound (issue 28, item 1), small on disk:
+// The three files that multiply their work without bound, small on disk:
 // 100,000 primitives reusing one 1024-triangle sphere; 250 nodes x 4000 EXT_mesh_gpu_instancing
 // copies of a 10,000-triangle sphere (10^10 triangles); a million nodes drawing a sphere.
 Bytes manyPrimitives(int primitives);

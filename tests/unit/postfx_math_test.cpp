@@ -98,8 +98,8 @@ TEST(PostfxCausticMath, FactorEqualsDeviationOfRefractAndReflectInDouble) {
   EXPECT_LT(worst, 5e-5);
 }
 
-// The seed's single reference across the plane of incidence made the pattern streak along the
-// sun's azimuth: a tilt of the water along that plane did not dim the light at all. With the
+// Ray deviation's single reference [1] across the plane of incidence made the pattern streak along
+// the sun's azimuth: a tilt of the water along that plane did not dim the light at all. With the
 // whole deviation, a sun at the zenith sees every tilt direction alike, and a high sun nearly so.
 TEST(PostfxCausticMath, FactorIsIsotropicForAZenithSun) {
   const glm::vec3 zenith(0.0f, 1.0f, 0.0f);
@@ -115,7 +115,7 @@ TEST(PostfxCausticMath, FactorIsIsotropicForAZenithSun) {
     }
   }
   // A sun 60 degrees high: a tilt along the plane of incidence dims it as much as one across,
-  // within the refraction's own foreshortening (the seed's factor: 1 along, exp(-tau a^2) across).
+  // within the refraction's own foreshortening (the paper's factor: 1 along, exp(-tau a^2) across).
   const glm::vec3 sun = glm::normalize(glm::vec3(0.5f, std::sqrt(3.0f) / 2.0f, 0.0f));
   const float along =
       sh::causticFactor(sun, sh::waterNormalFromSlopes({0.05f, 0.0f}), 0.75f, 800.0f, 0.0f);
@@ -126,7 +126,7 @@ TEST(PostfxCausticMath, FactorIsIsotropicForAZenithSun) {
   EXPECT_LT(ratio, 2.0);
 }
 
-// The god rays' factor (the seed's: only the deviation across the plane of incidence) is written
+// The god rays' factor (the paper's: only the deviation across the plane of incidence) is written
 // with dot products; it must equal refract()/reflect() dotted with that plane's normal.
 TEST(PostfxCausticMath, AcrossIncidenceFactorEqualsRefractAndReflect) {
   double worst = 0.0;

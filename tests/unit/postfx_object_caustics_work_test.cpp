@@ -1,4 +1,4 @@
-// The object caustics' work budget (issue 28, CreateDesc::casterTriangleBudget and
+// The object caustics' work budget (CreateDesc::casterTriangleBudget and
 // ::splatBudget), counted on the CPU: what a caster set asks of the GPU in one frame, exactly
 // and without overflow for any counts a host passes.
 #include <gtest/gtest.h>

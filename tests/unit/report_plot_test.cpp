@@ -1,4 +1,4 @@
-// The report's plot (issue 19, item 5): one panel per effect with one error definition each,
+// The report's plot: one panel per effect with one error definition each,
 // the Pareto front, labels that collide with nothing, and a PNG from either drawing.
 #include <gtest/gtest.h>
 

@@ -93,7 +93,7 @@ class SampleCli : public ::testing::Test {
                       const std::string& command = "render",
                       const std::string& outName = "out.png") {
     const fs::path out = dir_ / outName;
-    // compare renders nothing, so it offers no scene options (issue 19: each command its own).
+    // compare renders nothing, so it offers no scene options (each command its own).
     const std::string size =
         command == "compare" ? " " : " --width 64 --height 36 --water-resolution 16 ";
     const RunResult result = runSample(command + size + arguments + " --out " + out.string(), dir_);
@@ -160,7 +160,7 @@ TEST_F(SampleCli, TruncatedModel) {
   bytes.resize(bytes.size() / 2);
   expectRejected("--model " + writeFile("truncated.glb", bytes).string(), "truncated.glb");
 }
-// Issue 17: a directory, a FIFO and a device as --model are named for what they are; the FIFO
+// A directory, a FIFO and a device as --model are named for what they are; the FIFO
 // is never waited on (a hang trips the alarm and fails the test).
 TEST_F(SampleCli, ModelThatIsNotARegularFile) {
   ::alarm(60);
@@ -175,7 +175,7 @@ TEST_F(SampleCli, MalformedModelPlacement) {
   expectRejected("--model a.glb:fit=0", "fit must be a size in metres");
 }
 
-// Issue 17, item 2: a valid file with a node hidden by scale 0 and a glass node whose
+// A valid file with a node hidden by scale 0 and a glass node whose
 // attenuation the plugin refuses still renders; each left-out node is a warning naming the
 // file and the node.
 TEST_F(SampleCli, ModelWithNodesThePluginCannotUseStillRenders) {
@@ -212,7 +212,7 @@ TEST_F(SampleCli, ModelWithNodesThePluginCannotUseStillRenders) {
       << result.stderrText;
 }
 
-// Issue 28: a file whose name has the placement syntax in it ('@', ':fit=') loads through
+// A file whose name has the placement syntax in it ('@', ':fit=') loads through
 // --model-file, which takes the path literally; --model reads the same name as a placement.
 TEST_F(SampleCli, ModelFileTakesItsPathLiterally) {
   std::ifstream asset(std::string(OCEAN_ASSETS) + "/glass_sphere.glb", std::ios::binary);
@@ -229,7 +229,7 @@ TEST_F(SampleCli, ModelFileTakesItsPathLiterally) {
   EXPECT_TRUE(fs::exists(out));
 }
 
-// Issue 28, item 1: a model over the work budget is refused naming the limit, its count and
+// A model over the work budget is refused naming the limit, its count and
 // the option that raises it; a bad --model-limits is refused before any work.
 TEST_F(SampleCli, ModelOverTheWorkBudget) {
   const std::string sphere = std::string(OCEAN_ASSETS) + "/glass_sphere.glb";
@@ -255,7 +255,7 @@ TEST_F(SampleCli, UnknownExtension) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-// Issue 15: each of these once failed late (after the whole render, naming an internal file),
+// Each of these once failed late (after the whole render, naming an internal file),
 // or misleadingly, or not at all. Each is now one up-front line naming the option.
 TEST_F(SampleCli, WaterResolutionTheSceneCannotUse) {
   const RunResult result = runSample("render --width 64 --height 36 --water-resolution 8", dir_);
@@ -300,7 +300,7 @@ TEST_F(SampleCli, OutputDirectoryThatRefusesFilesFailsUpFront) {
       << "names the internal temporary: " << result.stderrText;
 }
 
-// Issue 19: the camera and sun flags are checked up front like every other value.
+// The camera and sun flags are checked up front like every other value.
 TEST_F(SampleCli, CameraAndSunValuesAreChecked) {
   expectRejected("--fov 0", "--fov must be a number of degrees in [5, 150]");
   expectRejected("--fov inf", "--fov");
@@ -317,7 +317,7 @@ TEST_F(SampleCli, CameraAndSunValuesAreChecked) {
   EXPECT_FALSE(fs::exists(dir_ / "seq_0000.png"));
 }
 
-// Issue 18: --light is checked field by field before any GL work, naming the field.
+// --light is checked field by field before any GL work, naming the field.
 TEST_F(SampleCli, LightValuesAreChecked) {
   expectRejected("--light lamp:0,-5,0:10", "the type must be point or spot");
   expectRejected("--light point:0,-5:10", "the position must be X,Y,Z");
@@ -487,7 +487,7 @@ void SampleCli::expectChangeFollowsTheStep(const std::string& arguments) {
       << arguments << ": 30 fps " << change[0] << ", 480 fps " << change[1];
 }
 
-// Issue 19, item 3: --frames N writes N numbered images and nothing under the plain name.
+// --frames N writes N numbered images and nothing under the plain name.
 TEST_F(SampleCli, RenderFramesWritesANumberedSequence) {
   const RunResult result =
       runSample("render --width 48 --height 27 --water-resolution 16 --frames 3 --fps 30 --out " +
@@ -521,7 +521,7 @@ TEST_F(SampleCli, FramesWithTimeFrozenChangeOnlyWithTheCamera) {
   expectChangeFollowsTheStep("--freeze-time --camera-velocity 0.2,0,-0.1");
 }
 
-// report --only names a section (issue 19 item 3: 'stability', the temporal-stability table);
+// report --only names a section ('stability', the temporal-stability table);
 // another name fails before any work, with one line and no report directory.
 TEST_F(SampleCli, ReportOnlyUnknownSection) {
   const fs::path out = dir_ / "report_dir";
@@ -667,7 +667,7 @@ TEST_F(SampleCli, ReferenceThenCompareWithItself) {
   EXPECT_GT(patternHeight, sideHeight) << "a third row";
 }
 
-// Issue 28, item 5: the reference traces the glass itself. A glass sphere of IOR 1.0 under water
+// The reference traces the glass itself. A glass sphere of IOR 1.0 under water
 // (an air bubble: it spreads its light and reflects its rim) and one of 1.5 (it focuses) once
 // gave the same reference; now the traced light through them differs as the optics say.
 TEST_F(SampleCli, ReferenceTracesTheGlassOfAModel) {
@@ -714,7 +714,7 @@ TEST_F(SampleCli, ReferenceTracesTheGlassOfAModel) {
   EXPECT_GT(sum[1], 1.5 * sum[0]);
 }
 
-// Issue 28, item 5: a local light's object caustics are traced too. The night dive (the sun
+// A local light's object caustics are traced too. The night dive (the sun
 // below the horizon, a torch shining through the glass sphere) has nothing else to compare; the
 // plugin's caustic under the sphere agrees with the traced one.
 TEST_F(SampleCli, ReferenceTracesATorchThroughTheGlass) {
@@ -750,7 +750,7 @@ TEST_F(SampleCli, ReferenceTracesATorchThroughTheGlass) {
   EXPECT_LT(flux, 1.25);
 }
 
-// Issue 27, item 4: motion a browser shows. --frames N with a .gif output writes one looping
+// Motion a browser shows. --frames N with a .gif output writes one looping
 // animation of N frames at the stated rate (GIF's whole hundredths of a second), and the
 // caustics move between its frames.
 TEST_F(SampleCli, RenderWritesAnAnimatedGif) {

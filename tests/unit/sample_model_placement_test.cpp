@@ -1,4 +1,4 @@
-// The sample's handling of users' glTF models (issue 17): the --model placement syntax, the
+// The sample's handling of users' glTF models: the --model placement syntax, the
 // fit-and-set-down transform, and the casters the plugin would refuse (or has no room for)
 // left out with a warning instead of failing the render.
 #include <cmath>
@@ -21,7 +21,7 @@ double slopedSand(double x, double z) {
   return -10.0 + 0.1 * x + 0.2 * z;
 }
 
-// Issue 28: --model-limits sets the keys it names and leaves the others.
+// --model-limits sets the keys it names and leaves the others.
 TEST(SampleModelLimits, SetsTheKeysGiven) {
   ocean_scene::GltfLimits limits;
   std::string error;
@@ -190,7 +190,7 @@ TEST(SampleCasterAdmission, CasterBudgetIsNeverSilent) {
   EXPECT_NE(warnings[0].find("the last 5 (from 'piece64' on)"), std::string::npos) << warnings[0];
 }
 
-// Issue 17, item 4: the glTF glass fields reach the plugin's material as the spec means them.
+// The glTF glass fields reach the plugin's material as the spec means them.
 TEST(SampleCasterMaterial, GlassFieldsFollowTheGltfSpec) {
   ocean_scene::Material m = glass();
   m.transmission = 0.5f;

@@ -1,4 +1,4 @@
-// Issue 28, item 1: the files that multiply their work without bound are refused from their
+// The files that multiply their work without bound are refused from their
 // own counts before anything is expanded, in well under a second, naming the limit. They are
 // generated small here (gltf_hostile_corpus.h); before the budget the first held 13 GB at 120 s
 // and the others were killed there.

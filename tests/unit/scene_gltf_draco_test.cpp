@@ -1,4 +1,4 @@
-// Draco-compressed glTF (KHR_draco_mesh_compression, issue 17 item 3): a quad encoded here with
+// Draco-compressed glTF (KHR_draco_mesh_compression): a quad encoded here with
 // libdraco's encoder loads as the quad, and a compressed primitive that disagrees with its own
 // accessors (point count, bounds) is refused by name. No committed blobs.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// glTF features the loader reads beyond plain float triangle lists (issue 17, item 3), and a
+// glTF features the loader reads beyond plain float triangle lists, and a
 // valid file that hides a node with scale 0 (item 2). Files are generated here.
 #include <cstdint>
 #include <cstring>
@@ -184,7 +184,7 @@ TEST(SceneGltfFeatures, HiddenNodeLeftOutWithANote) {
             std::string::npos);
 }
 
-// Issue 17, item 4: the glass extensions as the specs allow them. KHR_materials_ior 0 is the
+// The glass extensions as the specs allow them. KHR_materials_ior 0 is the
 // spec's infinite IOR (it loads; the sample makes it a mirror), KHR_materials_dispersion is
 // read, and textures the sample does not use are named in a note instead of passing silently.
 TEST(SceneGltfFeatures, GlassExtensionsAndIgnoredTexturesNoted) {
@@ -203,7 +203,7 @@ TEST(SceneGltfFeatures, GlassExtensionsAndIgnoredTexturesNoted) {
   ASSERT_EQ(model.materials.size(), 1u);
   EXPECT_EQ(model.materials[0].ior, 0.0f);
   EXPECT_FLOAT_EQ(model.materials[0].dispersion, 0.36f);
-  // Issue 28: a whole sentence, saying why the base colour's texture was not used.
+  // A whole sentence, saying why the base colour's texture was not used.
   EXPECT_NE(warnings.find("material 'prism': shaded from its factors, without baseColorTexture "
                           "(its texture has no image), "
                           "KHR_materials_transmission.transmissionTexture"),

@@ -1,4 +1,4 @@
-// A deterministic mutation fuzz of the glTF loader (issue 17, item 6): small valid files,
+// A deterministic mutation fuzz of the glTF loader: small valid files,
 // generated here, are damaged in thousands of seeded ways (byte flips, truncation, spliced and
 // deleted runs, hostile numbers and brackets in the JSON, GLB length fields). Every load must
 // return, with either one line of valid UTF-8 naming the file, or a model that keeps the

@@ -1,4 +1,4 @@
-// The glTF loader against files built to hurt it (issue 17): each is refused with one line
+// The glTF loader against files built to hurt it: each is refused with one line
 // of valid UTF-8 naming the file and the reason, without crashing, blocking, or reading
 // anything outside the model's own folder. All files are generated here.
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// Issue 28, item 1: each limit of the work budget (scene/gltf_limits.h) is named when it is
+// Each limit of the work budget (scene/gltf_limits.h) is named when it is
 // exceeded, with the count, the limit and the option that raises it, and raising it lets the
 // same file through.
 #include <filesystem>

@@ -1,4 +1,4 @@
-// meshopt-compressed glTF (EXT_meshopt_compression, issue 17 item 3): a quad whose positions and
+// meshopt-compressed glTF (EXT_meshopt_compression): a quad whose positions and
 // triangles are encoded here with libmeshoptimizer, behind a fallback buffer that has no data
 // (as gltfpack writes them), loads as the quad from .gltf and .glb; malformed compressed views
 // are refused by name. No committed blobs.

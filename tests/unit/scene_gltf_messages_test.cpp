@@ -1,4 +1,4 @@
-// Issue 28, items 2-4: every refusal says what was wrong and where, in a bounded message, and
+// Every refusal says what was wrong and where, in a bounded message, and
 // nothing a library prints reaches stderr. The files are the regression corpus
 // (gltf_hostile_corpus.h): GLB containers damaged field by field, broken data: URIs, 1 MB
 // names, paths with "." and "..", integers tinygltf would narrow, meshopt fields, a PNG libpng

@@ -1,4 +1,4 @@
-// Base-colour textures (issue 17, item 3): an embedded PNG's mean colour (sRGB-decoded) scales
+// Base-colour textures: an embedded PNG's mean colour (sRGB-decoded) scales
 // the material's base colour; an undecodable or oversized image leaves the factor alone with a
 // note. Images are written here through OpenImageIO; nothing is committed.
 #include <filesystem>
@@ -64,7 +64,7 @@ TEST(SceneGltfTexture, UndecodableOrHugeImagesLeaveTheFactor) {
   }
 }
 
-// Issue 28, item 4 (the Duck was yellow from its .glb, white from its .gltf): the same image
+// Found by a user (the Duck was yellow from its .glb, white from its .gltf): the same image
 // as a GLB's bufferView, a file beside a .gltf and a data: URI gives the same colour, through
 // the same decoder.
 TEST(SceneGltfTexture, SameColourFromEveryContainer) {

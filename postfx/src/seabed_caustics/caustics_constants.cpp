@@ -57,7 +57,7 @@ glm::dvec3 sunDiscLandingCovariance(const glm::dvec3& towardSun, double ior, dou
 }
 
 bool wavefrontAreaRatioActive(const CreateDesc& create, const FrameDesc& frame) {
-  return hasFeature(create.features, Feature::PhysicalCaustics) &&
+  return hasFeature(create.features, Feature::WavefrontAreaRatio) &&
          frame.caustics.model == CausticsModel::WavefrontAreaRatio && frame.sun.direction.y > 0.0;
 }
 

@@ -118,7 +118,7 @@ std::vector<Config> configurations() {
   }
   // God rays alone (no seabed caustics): the default model's shafts read the tile irradiance,
   // whose pre-pass then runs for them (shown, not counted: a default frame shares it with the
-  // caustics); ray_deviation: the seed-002 factor from the slopes at every sample.
+  // caustics); ray_deviation: the ray-deviation factor from the slopes at every sample.
   postfx::CausticsSettings noCaustics;
   noCaustics.enabled = false;
   postfx::CausticsSettings noCausticsRayDeviation = noCaustics;
