@@ -12,34 +12,34 @@ postfx_add_test(postfx_unit_tests
 target_include_directories(postfx_unit_tests PRIVATE ${_postfx_private})
 
 postfx_add_test(postfx_gl_tests
-  SOURCES gl/postfx_scene.cpp gl/postfx_state_test.cpp gl/postfx_bad_input_test.cpp
+  SOURCES gl/postfx_state_test.cpp gl/postfx_bad_input_test.cpp
           gl/postfx_caustics_test.cpp gl/postfx_composition_test.cpp gl/postfx_stability_test.cpp
           gl/postfx_timing_test.cpp
           gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp gl/postfx_godrays_field_test.cpp
           gl/postfx_cascade_skip_test.cpp gl/postfx_caustics_lookup_test.cpp
           gl/postfx_refusal_test.cpp
-  LIBS postfx gbuffer glm::glm postfx::epoxy
+  LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
 
 # The scene fixtures, the CPU ray tracer and the map measurements come from ocean_reference
 # (sample_app/reference), which the report's object-caustics rows use too.
 postfx_add_test(postfx_object_caustics_tests
-  SOURCES gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
+  SOURCES gl/postfx_object_caustics_util.cpp
           gl/postfx_object_caustics_accuracy_test.cpp gl/postfx_object_caustics_contract_test.cpp
           gl/postfx_object_caustics_host_test.cpp gl/postfx_hostile_state_test.cpp
           gl/postfx_object_caustics_material_test.cpp gl/postfx_object_caustics_defaults_test.cpp
           gl/postfx_object_caustics_lights_contract_test.cpp gl/postfx_object_caustics_lights_util.cpp
           gl/postfx_object_caustics_lights_test.cpp gl/postfx_object_caustics_lights_stability_test.cpp
           gl/postfx_object_caustics_lights_cost_test.cpp gl/postfx_object_caustics_work_test.cpp
-  LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
+  LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})
 
 # The dispatch fuzz: a few thousand deterministic cases over every FrameDesc field
 # group, the settings, the casters and the G-buffer texels, in four contexts.
 postfx_add_test(postfx_fuzz_tests
-  SOURCES fuzz/postfx_fuzz_test.cpp gl/postfx_scene.cpp gl/postfx_object_caustics_util.cpp
-  LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy
+  SOURCES fuzz/postfx_fuzz_test.cpp gl/postfx_object_caustics_util.cpp
+  LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL LABELS fuzz)
 target_include_directories(postfx_fuzz_tests PRIVATE ${_postfx_private} ${CMAKE_CURRENT_SOURCE_DIR}/gl)

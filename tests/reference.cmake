@@ -8,9 +8,9 @@ postfx_add_test(reference_unit_tests
 # caustics pass shows it, and its error against the seabed reference on the same read-back
 # water texture.
 postfx_add_test(postfx_physical_tests GL
-  SOURCES gl/postfx_scene.cpp gl/postfx_physical_mode_test.cpp
+  SOURCES gl/postfx_physical_mode_test.cpp
           gl/postfx_physical_reference_test.cpp gl/postfx_physical_window_test.cpp
-  LIBS postfx ocean_reference water gbuffer glm::glm postfx::epoxy)
+  LIBS postfx_test_scene postfx ocean_reference water gbuffer glm::glm postfx::epoxy)
 target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
 
@@ -34,10 +34,10 @@ postfx_add_test(postfx_streak_tests GL
 # The TileIrradiance model (the default): flat water, where light may land, flux, and against
 # converged light tracing on the flat seabed comparison (sample_app/validation); its spread keeps the flux.
 postfx_add_test(postfx_tile_irradiance_tests GL
-  SOURCES gl/postfx_scene.cpp gl/postfx_tile_irradiance_test.cpp
+  SOURCES gl/postfx_tile_irradiance_test.cpp
           gl/postfx_tile_lookup_resolution_test.cpp gl/postfx_tile_spread_test.cpp
           gl/postfx_host_water_test.cpp gl/postfx_tile_footprint_test.cpp
-  LIBS ocean_validation postfx gbuffer water glm::glm postfx::epoxy)
+  LIBS postfx_test_scene ocean_validation postfx gbuffer water glm::glm postfx::epoxy)
 target_include_directories(postfx_tile_irradiance_tests
   PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})
 
@@ -50,8 +50,8 @@ postfx_add_test(reference_frame_tests
 
 # The traced frame reference's light against the plugin's own added light (same units).
 postfx_add_test(reference_frame_units_tests GL
-  SOURCES gl/postfx_scene.cpp gl/reference_frame_units_test.cpp
-  LIBS postfx ocean_reference gbuffer glm::glm postfx::epoxy)
+  SOURCES gl/reference_frame_units_test.cpp
+  LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy)
 target_include_directories(reference_frame_units_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
 # The report's plot: panels per effect, Pareto front, label placement, both drawings.

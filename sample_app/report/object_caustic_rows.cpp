@@ -221,7 +221,7 @@ bool measureObjectCaustics(const validation::ReportTarget& target,
   const ref::SphereCaster& sphere = scene.sphere;
   const int w = target.width(), h = target.height();
   const validation::PlaneView topDown = validation::topDownView(w, h, kCameraHeight - scene.planeY);
-  validation::PlaneGbuffer gbuffer(w, h, topDown.windowDepth);
+  validation::PlaneGbuffer gbuffer(w, h, topDown);
   const ref::GlMesh mesh = ref::makeSphereMesh(sphere.radius, 160, 80);
   // Under water the light reaching the sphere is the sun refracted by the flat surface, and the
   // glass bends it by its IOR over the water's.

@@ -46,7 +46,7 @@ bool FlatSeabedComparison::prepare(const postfx::FrameDesc& hostFrame,
   const double level = frame_.water.level;
   const glm::dvec3 camera(hostFrame.camera.position.x, level - settings.cameraDepth,
                           hostFrame.camera.position.z);
-  gbuffer_ = std::make_unique<PlaneGbuffer>(w, h, topDown.windowDepth);
+  gbuffer_ = std::make_unique<PlaneGbuffer>(w, h, topDown);
   target_ = std::make_unique<ReportTarget>(w, h);
   frame_.depth = {gbuffer_->depth(), GL_DEPTH_COMPONENT32F};
   frame_.normal = {gbuffer_->normal(), GL_RGBA16F};

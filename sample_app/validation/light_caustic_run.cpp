@@ -75,7 +75,7 @@ bool runOnHost(const LightCausticScene& scene, const postfx::ObjectCausticsSetti
   // 60 degree vertical field of view: the square image spans binSide at this height.
   const double height = 0.5 * scene.binSide / std::tan(glm::radians(30.0));
   const PlaneView topDown = topDownView(n, n, height);
-  PlaneGbuffer gbuffer(n, n, topDown.windowDepth);
+  PlaneGbuffer gbuffer(n, n, topDown);
   const reference::GlMesh mesh = reference::makeSphereMesh(scene.sphere.radius, 160, 80);
   postfx::CasterMaterial glass;
   glass.ior = float(scene.sphere.ior * (scene.underWater ? scene.waterIor : 1.0));

@@ -1,7 +1,6 @@
 #include "plane_gbuffer.h"
 
 #include <cmath>
-#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -9,6 +8,22 @@ namespace ocean::validation {
 namespace {
 
 constexpr double kNear = 0.1;
+
+SyntheticScene planeScene(int width, int height, const PlaneView& view) {
+  SyntheticScene scene;
+  scene.width = width;
+  scene.height = height;
+  scene.view = view.view;
+  scene.projection = view.projection;
+  scene.depthConvention = 0;
+  scene.normalEncoding = 1;
+  scene.albedoFormat = GL_RGBA8;
+  SyntheticSurface plane;
+  plane.point = -view.normal * view.distance;
+  plane.normal = view.normal;
+  scene.surfaces.push_back(plane);
+  return scene;
+}
 
 }  // namespace
 
@@ -23,7 +38,8 @@ PlaneView planeView(int width, int height, double distance, const glm::dvec3& no
   v.projection[1][1] = v.focal;
   v.projection[2][3] = -1.0;
   v.projection[3][2] = kNear;
-  v.windowDepth = float(kNear / distance);
+  v.normal = normal;
+  v.distance = distance;
   return v;
 }
 
@@ -32,17 +48,7 @@ PlaneView topDownView(int width, int height, double floorDistance) {
                    glm::dvec3(0.0, 0.0, -1.0));
 }
 
-PlaneGbuffer::PlaneGbuffer(int width, int height, float windowDepth, const glm::vec3& normal) {
-  const size_t pixels = size_t(width) * size_t(height);
-  for (glkit::Texture& texture : textures_) texture = glkit::createTexture(GL_TEXTURE_2D, {});
-  glTextureStorage2D(depth(), 1, GL_DEPTH_COMPONENT32F, width, height);
-  glTextureStorage2D(this->normal(), 1, GL_RGBA16F, width, height);
-  glTextureStorage2D(albedo(), 1, GL_RGBA8, width, height);
-  const std::vector<float> depths(pixels, windowDepth);
-  glTextureSubImage2D(depth(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
-  const float n[4] = {normal.x, normal.y, normal.z, 0.0f}, white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  glClearTexImage(this->normal(), 0, GL_RGBA, GL_FLOAT, n);
-  glClearTexImage(albedo(), 0, GL_RGBA, GL_FLOAT, white);
-}
+PlaneGbuffer::PlaneGbuffer(int width, int height, const PlaneView& view)
+    : gbuffer_(planeScene(width, height, view)) {}
 
 }  // namespace ocean::validation

@@ -6,11 +6,9 @@
 // to give every pixel that plane. Seen face-on, pixel rows and columns are straight, evenly
 // spaced lines on the plane, so blocks of pixels map to a regular grid there (and on any plane
 // it is projected onto along an image axis, such as the horizontal grid of a reference).
-#include <epoxy/gl.h>
-
-#include <glkit/handle.h>
-
 #include <glm/glm.hpp>
+
+#include "synthetic_gbuffer.h"
 
 namespace ocean::validation {
 
@@ -19,28 +17,29 @@ namespace ocean::validation {
 // convention 0).
 struct PlaneView {
   glm::dmat4 view{1.0}, projection{1.0};
-  float windowDepth = 0.0f;  // of the plane `distance` (m) in front of the camera
-  double focal = 0.0;        // projection[1][1]
-  double aspect = 1.0;       // width / height
+  glm::dvec3 normal{0.0, 1.0, 0.0};  // the plane's, toward the camera
+  double distance = 1.0;             // from the camera to the plane, m
+  double focal = 0.0;                // projection[1][1]
+  double aspect = 1.0;               // width / height
   // Size on the plane of one pixel (square pixels), m.
-  double pixelSize(int height, double distance) const { return 2.0 * distance / focal / height; }
+  double pixelSize(int height) const { return 2.0 * distance / focal / height; }
 };
 PlaneView planeView(int width, int height, double distance, const glm::dvec3& normal,
                     const glm::dvec3& imageUp);
 // A horizontal floor seen straight down, image up = world -z (view x = world x, view y = -world z).
 PlaneView topDownView(int width, int height, double floorDistance);
 
+// Depth GL_DEPTH_COMPONENT32F, normals GL_RGBA16F world xyz (normal encoding 1), albedo RGBA8
+// white; no target.
 class PlaneGbuffer {
  public:
-  // Depth GL_DEPTH_COMPONENT32F, normals GL_RGBA16F world xyz (normal encoding 1), albedo RGBA8.
-  PlaneGbuffer(int width, int height, float windowDepth,
-               const glm::vec3& normal = glm::vec3(0.0f, 1.0f, 0.0f));
-  GLuint depth() const { return textures_[0].id(); }
-  GLuint normal() const { return textures_[1].id(); }
-  GLuint albedo() const { return textures_[2].id(); }
+  PlaneGbuffer(int width, int height, const PlaneView& view);
+  GLuint depth() const { return gbuffer_.depth(); }
+  GLuint normal() const { return gbuffer_.normal(); }
+  GLuint albedo() const { return gbuffer_.albedo(); }
 
  private:
-  glkit::Texture textures_[3];
+  SyntheticGbuffer gbuffer_;
 };
 
 }  // namespace ocean::validation

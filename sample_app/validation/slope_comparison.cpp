@@ -121,8 +121,7 @@ bool measureSlope(const postfx::FrameDesc& hostFrame, const SlopeSettings& setti
     c.uniform =
         compareWithReference(std::vector<double>(c.reference.size(), c.flatWater), c.reference);
 
-    const PlaneGbuffer gbuffer(plane.desc.width, plane.desc.height, plane.view.windowDepth,
-                               glm::vec3(plane.normal));
+    const PlaneGbuffer gbuffer(plane.desc.width, plane.desc.height, plane.view);
     postfx::FrameDesc view = frame;
     view.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
     view.normal = {gbuffer.normal(), GL_RGBA16F};

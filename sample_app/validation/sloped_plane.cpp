@@ -13,7 +13,7 @@ SlopedPlane slopedPlane(const SlopedPlaneDesc& desc, double level) {
   const glm::dvec3 up(std::cos(slope), -sign * std::sin(slope), 0.0);
   s.view = planeView(desc.width, desc.height, desc.viewDistance, s.normal, up);
   s.camera = desc.centre + desc.viewDistance * s.normal;
-  const double p = s.view.pixelSize(desc.height, desc.viewDistance);
+  const double p = s.view.pixelSize(desc.height);
   s.bins.binSize = desc.binPixels * p * std::cos(slope);  // x: down the slope, foreshortened
   s.bins.binSizeZ = desc.binPixels * p;
   s.bins.countX = desc.height / desc.binPixels;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include <gbuffer/codec.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace postfxtest {
@@ -26,96 +25,66 @@ glm::dmat4 projectionFor(const SceneSpec& s) {
   return p;
 }
 
-double windowDepth(double viewZ, const glm::dmat4& p, int convention) {
-  const double ndc = (p[2][2] * viewZ + p[3][2]) / -viewZ;
-  return convention == 2 ? ndc * 0.5 + 0.5 : ndc;
+glm::mat4 viewFor(const SceneSpec& s) {
+  return glm::mat4(
+      glm::lookAt(glm::dvec3(0.0), glm::normalize(s.lookDirection), glm::dvec3(0.0, 1.0, 0.0)));
 }
 
-GLuint makeTexture(GLenum format, int w, int h) {
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &t);
-  glTextureStorage2D(t, 1, format, w, h);
-  return t;
+ocean::validation::SyntheticScene syntheticScene(const SceneSpec& s, GLenum targetFormat) {
+  ocean::validation::SyntheticScene scene;
+  scene.width = s.width;
+  scene.height = s.height;
+  scene.view = glm::dmat4(viewFor(s));  // the float view the frame gives the plugin
+  scene.projection = projectionFor(s);
+  scene.depthConvention = s.depthConvention;
+  scene.normalEncoding = s.normalEncoding;
+  scene.albedoFormat = GL_SRGB8_ALPHA8;
+  scene.targetFormat = targetFormat;
+  scene.maxDistance = s.farPlane * 0.999;
+  scene.skyAlbedo = glm::vec4(s.albedo, 1.0f);
+  scene.zeroNormals = s.zeroNormals;
+  scene.allSky = s.allSky;
+  using Surface = ocean::validation::SyntheticSurface;
+  Surface floor;  // where x <= stepX
+  floor.point = {0.0, s.floorY - s.camera.y, 0.0};
+  floor.keep = {-1.0, 0.0, 0.0, s.stepX};
+  floor.albedo = s.albedo;
+  Surface step = floor;  // where x > stepX
+  step.point.y = s.floorY2 - s.camera.y;
+  step.keep = {1.0, 0.0, 0.0, -s.stepX};
+  scene.surfaces = {floor, step};
+  if (s.sphere) {
+    Surface sphere;
+    sphere.kind = Surface::Kind::Sphere;
+    sphere.point = s.sphereCenter;
+    sphere.radius = s.sphereRadius;
+    sphere.albedo = s.albedo;
+    scene.surfaces.push_back(sphere);
+  }
+  return scene;
 }
 
 }  // namespace
 
-Scene::Scene(const SceneSpec& spec, GLenum targetFormatIn) : spec_(spec) {
-  const int w = spec.width, h = spec.height;
+Scene::Scene(const SceneSpec& spec, GLenum targetFormatIn)
+    : spec_(spec), gbuffer_(syntheticScene(spec, targetFormatIn)) {
+  view = viewFor(spec);
   projection = projectionFor(spec);
-  view = glm::mat4(
-      glm::lookAt(glm::dvec3(0.0), glm::normalize(spec.lookDirection), glm::dvec3(0.0, 1.0, 0.0)));
-  const glm::dmat3 viewToWorld = glm::transpose(glm::dmat3(view));
-  truth_.assign(static_cast<size_t>(w * h), PixelTruth{});
-  std::vector<float> depthTexels(static_cast<size_t>(w * h));
-  std::vector<glm::vec4> normalTexels(static_cast<size_t>(w * h));
-  std::vector<glm::vec4> albedoTexels(static_cast<size_t>(w * h), glm::vec4(spec.albedo, 1.0f));
-  const double farDepth = spec.depthConvention == 0 ? 0.0 : 1.0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = static_cast<size_t>(y * w + x);
-      const double ndcX = (x + 0.5) / w * 2.0 - 1.0, ndcY = (y + 0.5) / h * 2.0 - 1.0;
-      // Ray at 1 m along the view axis, so the hit parameter is the view distance.
-      const glm::dvec3 dirView(ndcX / projection[0][0], ndcY / projection[1][1], -1.0);
-      const glm::dvec3 dir = viewToWorld * dirView;
-      const glm::dvec3 eye = spec.camera - spec.camera;  // camera-relative origin
-      double best = std::numeric_limits<double>::infinity();
-      PixelTruth t;
-      if (!spec.allSky) {
-        for (double floorY : {spec.floorY, spec.floorY2}) {
-          const double rel = floorY - spec.camera.y;
-          if (dir.y < 0.0) {
-            const double s = rel / dir.y;
-            const glm::dvec3 p = eye + dir * s;
-            const bool side = (p.x > spec.stepX) == (floorY == spec.floorY2);
-            if (s > 0.0 && s < best && side) {
-              best = s;
-              t = {Hit::Floor, p, {0.0, 1.0, 0.0}};
-            }
-          }
-        }
-        if (spec.sphere) {
-          const glm::dvec3 oc = eye - spec.sphereCenter;
-          const double a = glm::dot(dir, dir), b = glm::dot(oc, dir);
-          const double c = glm::dot(oc, oc) - spec.sphereRadius * spec.sphereRadius;
-          const double disc = b * b - a * c;
-          if (disc > 0.0) {
-            const double s = (-b - std::sqrt(disc)) / a;
-            if (s > 0.0 && s < best) {
-              best = s;
-              const glm::dvec3 p = eye + dir * s;
-              t = {Hit::Sphere, p, glm::normalize(p - spec.sphereCenter)};
-            }
-          }
-        }
-      }
-      if (best < spec.farPlane * 0.999) {
-        truth_[i] = t;
-        depthTexels[i] = static_cast<float>(windowDepth(-best, projection, spec.depthConvention));
-        const glm::vec3 n = spec.zeroNormals ? glm::vec3(0.0f) : glm::vec3(t.normal);
-        normalTexels[i] = gbuffer::shared::encodeNormal(n, spec.normalEncoding);
-      } else {
-        depthTexels[i] = static_cast<float>(farDepth);
-        normalTexels[i] = gbuffer::shared::encodeNormal(glm::vec3(0, 1, 0), spec.normalEncoding);
-      }
+  depth = gbuffer_.depth();
+  normal = gbuffer_.normal();
+  albedo = gbuffer_.albedo();
+  target = gbuffer_.target();
+  normalFormat = gbuffer_.normalFormat();
+  targetFormat = targetFormatIn;
+  truth_.resize(size_t(spec.width) * size_t(spec.height));
+  for (int y = 0; y < spec.height; ++y) {
+    for (int x = 0; x < spec.width; ++x) {
+      const ocean::validation::SyntheticPixel& p = gbuffer_.pixel(x, y);
+      PixelTruth& t = truth_[size_t(y) * size_t(spec.width) + size_t(x)];
+      if (p.surface < 0) continue;
+      t = {p.surface < 2 ? Hit::Floor : Hit::Sphere, p.position, p.normal};
     }
   }
-  depth = makeTexture(depthFormat, w, h);
-  glTextureSubImage2D(depth, 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depthTexels.data());
-  normalFormat =
-      spec.normalEncoding == 0 ? GL_RG16_SNORM : (spec.normalEncoding == 1 ? GL_RGBA16F : GL_RGBA8);
-  normal = makeTexture(normalFormat, w, h);
-  glTextureSubImage2D(normal, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, normalTexels.data());
-  albedo = makeTexture(GL_SRGB8_ALPHA8, w, h);
-  glTextureSubImage2D(albedo, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, albedoTexels.data());
-  targetFormat = targetFormatIn;
-  target = makeTexture(targetFormat, w, h);
-  clearTarget(glm::vec4(0.0f));
-}
-
-Scene::~Scene() {
-  const GLuint textures[] = {depth, normal, albedo, target};
-  glDeleteTextures(4, textures);
 }
 
 void Scene::clearTarget(const glm::vec4& value) const {

@@ -1,13 +1,15 @@
 #pragma once
-// Test scenes for the postfx GL tests: a G-buffer ray-traced on the CPU (in double) and uploaded
-// in any depth convention and normal encoding, synthetic water textures with known slopes, and
-// read-back helpers. Every pixel's true world position and surface are kept for assertions.
+// Test scenes for the postfx GL tests: a floor (optionally stepped) and a sphere under a camera,
+// as a G-buffer from the synthetic G-buffer builder (sample_app/validation), synthetic water
+// textures with known slopes, and read-back helpers. Every pixel's true world position and
+// surface are kept for assertions.
 #include <epoxy/gl.h>
 
 #include <glm/glm.hpp>
 #include <vector>
 
 #include <postfx/postfx.h>
+#include <synthetic_gbuffer.h>
 
 namespace postfxtest {
 
@@ -21,7 +23,7 @@ struct SceneSpec {
   glm::dvec3 lookDirection{0.0, -0.6, -1.0};
   double fovYDegrees = 60.0, nearPlane = 0.1, farPlane = 200.0;
   double floorY = -8.0;
-  double stepX = 1e30;  // floor is at floorY2 for x > stepX (camera-relative x)
+  double stepX = 1e30;  // the floor is at floorY2 where camera-relative x > stepX
   double floorY2 = -10.0;
   bool sphere = true;                        // sphere straddling the water level, partly on screen
   glm::dvec3 sphereCenter{2.0, -1.0, -8.0};  // camera-relative
@@ -41,7 +43,6 @@ struct PixelTruth {
 class Scene {
  public:
   explicit Scene(const SceneSpec& spec, GLenum targetFormat = GL_RGBA32F);
-  ~Scene();
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
 
@@ -55,6 +56,7 @@ class Scene {
 
  private:
   SceneSpec spec_;
+  ocean::validation::SyntheticGbuffer gbuffer_;
   std::vector<PixelTruth> truth_;
 };
 

@@ -135,7 +135,7 @@ TEST_F(PostfxShadowBiasTest, SelfShadowingPlanesKeepTheirLight) {
     const glm::dvec3 imageUp = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), n));
     const ocean::validation::PlaneView view =
         ocean::validation::planeView(kSize, kSize, kDistance, n, imageUp);
-    ocean::validation::PlaneGbuffer gbuffer(kSize, kSize, view.windowDepth, glm::vec3(n));
+    ocean::validation::PlaneGbuffer gbuffer(kSize, kSize, view);
     Gl target;
     glCreateTextures(GL_TEXTURE_2D, 1, &target.texture);
     glTextureStorage2D(target.texture, 1, GL_RGBA32F, kSize, kSize);

@@ -1,12 +1,11 @@
 #pragma once
-// A G-buffer the standalone bench can make without the sample's renderer: a dune seabed 4-9 m
-// under the water seen from 2 m below the surface, looking 20 degrees down, sky (nothing drawn)
-// above the horizon. Computed on the CPU by marching each pixel's ray against the height field,
-// uploaded once. Depth forward [0,1] (depth convention 1), normals world xyz RGBA16F (normal
-// encoding 1), albedo RGBA8 sand, target RGBA16F.
-#include <epoxy/gl.h>
-
+// The standalone bench's scene: a dune seabed 4-9 m under the water seen from 2 m below the
+// surface, looking 20 degrees down, sky (nothing drawn) above the horizon, as a G-buffer from the
+// synthetic G-buffer builder (uploaded once). Depth forward [0,1] (depth convention 1), normals
+// world xyz RGBA16F (normal encoding 1), albedo RGBA8 sand, target RGBA16F.
 #include <glm/glm.hpp>
+
+#include <synthetic_gbuffer.h>
 
 namespace postfx::bench {
 
@@ -19,21 +18,17 @@ struct SeabedView {
 class SeabedGbuffer {
  public:
   SeabedGbuffer(int width, int height);
-  ~SeabedGbuffer();
-  SeabedGbuffer(const SeabedGbuffer&) = delete;
-  SeabedGbuffer& operator=(const SeabedGbuffer&) = delete;
 
-  GLuint depth() const { return textures_[0]; }
-  GLuint normal() const { return textures_[1]; }
-  GLuint albedo() const { return textures_[2]; }
-  GLuint target() const { return textures_[3]; }
+  GLuint depth() const { return gbuffer_.depth(); }
+  GLuint normal() const { return gbuffer_.normal(); }
+  GLuint albedo() const { return gbuffer_.albedo(); }
+  GLuint target() const { return gbuffer_.target(); }
   const SeabedView& view() const { return view_; }
-  double seabedFraction() const { return seabedFraction_; }  // pixels that show the seabed
+  double seabedFraction() const { return gbuffer_.coverage(); }  // pixels that show the seabed
 
  private:
-  GLuint textures_[4] = {};
   SeabedView view_;
-  double seabedFraction_ = 0.0;
+  ocean::validation::SyntheticGbuffer gbuffer_;
 };
 
 }  // namespace postfx::bench
