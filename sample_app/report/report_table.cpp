@@ -28,6 +28,13 @@ std::string size(const Row& row, int width, int height) {
 
 }  // namespace
 
+std::string measuredLine(const ReportInfo& info) {
+  return "Measured " +
+         (info.date.empty() ? std::string("on an unknown date") : info.date + " (UTC)") +
+         " from code revision `" +
+         (info.revision.empty() ? std::string("unknown") : info.revision) + "`.";
+}
+
 bool writeCsv(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
               std::string& error) {
   std::ostringstream out;
@@ -48,6 +55,7 @@ bool writeMarkdown(const std::string& path, const ReportInfo& info, const std::v
                    const std::string& plotFile, std::string& error) {
   std::ostringstream out;
   out << "# Error against run time\n\n"
+      << measuredLine(info) << "\n\n"
       << "Device: " << info.device << ". Passes timed at " << info.width << "x" << info.height
       << " (GPU timer queries, median after warm-up; floor = a pass that reads the same inputs "
          "and writes the same outputs with no math, measured in the same run)"

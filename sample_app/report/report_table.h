@@ -34,10 +34,15 @@ struct Row {
 
 struct ReportInfo {
   std::string device;
+  std::string date;           // of the run, YYYY-MM-DD (UTC)
+  std::string revision;       // of the code measured (git describe); empty: unknown
   int width = 0, height = 0;  // of the timed passes
   bool quick = false;
   std::string referenceNote;  // how the references were computed and how converged they are
 };
+
+// "Measured DATE (UTC) from code revision `REV`." (either part "unknown" where not given).
+std::string measuredLine(const ReportInfo& info);
 
 bool writeCsv(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
               std::string& error);

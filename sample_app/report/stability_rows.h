@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <options.h>
+#include <report_table.h>
 #include <stability_sequence.h>
 #include <temporal_stability.h>
 
@@ -37,7 +38,7 @@ struct StabilityReportSettings {
 bool measureStability(const Options& options, const StabilityReportSettings& settings,
                       std::vector<StabilityRow>& rows, std::string& note, std::string& error);
 
-bool writeStabilityTables(const std::string& directory, const std::string& device,
+bool writeStabilityTables(const std::string& directory, const ReportInfo& info,
                           const StabilityReportSettings& settings,
                           const std::vector<StabilityRow>& rows, const std::string& note,
                           std::string& error);

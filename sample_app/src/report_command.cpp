@@ -14,6 +14,7 @@
 #include <pass_runner.h>
 #include <report_table.h>
 #include <slope_rows.h>
+#include <source_revision.h>
 #include <stability_rows.h>
 
 #include "commands.h"
@@ -95,6 +96,8 @@ int runReport(const Options& given) {
     return commandFailed(error);
   report::ReportInfo info;
   info.device = session.context->renderer();
+  info.date = report::utcDate();
+  info.revision = report::sourceRevision();
   info.width = options.width;
   info.height = options.height;
   info.quick = given.quick;
@@ -125,8 +128,7 @@ int runReport(const Options& given) {
                                rows, error) ||
        !report::writeMarkdown(dir + "error_vs_time.md", info, rows, "error_vs_time.png", error)))
     return commandFailed(error);
-  if (!report::writeStabilityTables(dir, info.device, stability, stabilityRows, stabilityNote,
-                                    error))
+  if (!report::writeStabilityTables(dir, info, stability, stabilityRows, stabilityNote, error))
     return commandFailed(error);
   if (!onlyStability)
     std::fprintf(stderr, "report: wrote %serror_vs_time.{csv,md,png} (%zu rows)\n", dir.c_str(),

@@ -14,6 +14,7 @@
 #include <gnuplot_plot.h>
 #include <plot_layout.h>
 #include <report_table.h>
+#include <source_revision.h>
 
 namespace {
 
@@ -215,6 +216,40 @@ TEST_F(ReportPlotFile, TableNamesEachRowsSizeAndContrast) {
   EXPECT_NE(csvText.find(",0.48,0.55,"), std::string::npos) << csvText;
   EXPECT_NE(mdText.find("| 1280x720 |"), std::string::npos) << mdText;
   EXPECT_NE(mdText.find("| 0.480 / 0.550 |"), std::string::npos) << mdText;
+}
+
+// The table says when and from which code it was measured, so docs/measurements.md can quote it;
+// a run that knows neither says so rather than leaving the line out.
+TEST_F(ReportPlotFile, TableNamesItsDateAndCodeRevision) {
+  const std::vector<Row> rows = {row("god_rays", "god rays", "16 samples", 1.0, 0.2, 0.1)};
+  ocean::report::ReportInfo info;
+  info.width = 320;
+  info.height = 180;
+  info.date = "2026-12-05";
+  info.revision = "9ef65c6-dirty";
+  std::string error;
+  const fs::path md = dir_ / "t.md";
+  auto read = [](const fs::path& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  ASSERT_TRUE(ocean::report::writeMarkdown(md.string(), info, rows, "", error)) << error;
+  const std::string named = read(md);
+  EXPECT_NE(named.find("\nMeasured 2026-12-05 (UTC) from code revision `9ef65c6-dirty`.\n"),
+            std::string::npos)
+      << named;
+  info.date.clear();
+  info.revision.clear();
+  ASSERT_TRUE(ocean::report::writeMarkdown(md.string(), info, rows, "", error)) << error;
+  const std::string unnamed = read(md);
+  EXPECT_NE(unnamed.find("Measured on an unknown date from code revision `unknown`."),
+            std::string::npos)
+      << unnamed;
+  // The build's own revision: one line, no quote that would break the markdown.
+  const std::string revision = ocean::report::sourceRevision();
+  EXPECT_FALSE(revision.empty());
+  EXPECT_EQ(revision.find_first_of("\n`\""), std::string::npos) << revision;
+  EXPECT_EQ(ocean::report::utcDate().size(), 10u);
 }
 
 TEST_F(ReportPlotFile, GnuplotDrawsWhenInstalled) {
