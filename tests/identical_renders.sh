@@ -30,7 +30,7 @@ render_all() {
   for preset in shallow seabed sunward above waterline torch; do
     run "preset_$preset" --preset "$preset"
   done
-  for model in ray-deviation physical; do
+  for model in ray-deviation wavefront-area-ratio; do
     run "seabed_$model" --preset seabed --caustics-model "$model"
     run "above_$model" --preset above --caustics-model "$model"
   done

@@ -7,11 +7,11 @@ postfx_add_test(reference_unit_tests
 # The WavefrontAreaRatio caustics model: its own properties, its window as the
 # caustics pass shows it, and its error against the seabed reference on the same read-back
 # water texture.
-postfx_add_test(postfx_physical_tests GL
-  SOURCES gl/postfx_physical_mode_test.cpp
-          gl/postfx_physical_reference_test.cpp gl/postfx_physical_window_test.cpp
+postfx_add_test(postfx_wavefront_area_ratio_tests GL
+  SOURCES gl/postfx_wavefront_area_ratio_mode_test.cpp
+          gl/postfx_wavefront_area_ratio_reference_test.cpp gl/postfx_wavefront_area_ratio_window_test.cpp
   LIBS postfx_test_scene postfx ocean_reference water gbuffer glm::glm postfx::epoxy)
-target_include_directories(postfx_physical_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
+target_include_directories(postfx_wavefront_area_ratio_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
 
 # The caustics' water lookups on sloped receivers (along the light vs Feature::TriplanarWalls)

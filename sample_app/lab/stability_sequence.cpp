@@ -132,7 +132,7 @@ const char* stabilityPassName(StabilityPass pass) {
     case StabilityPass::RayDeviationCaustics:
       return "caustics, ray deviation";
     case StabilityPass::WavefrontAreaRatio:
-      return "caustics, physical (wavefront area ratio)";
+      return "caustics, wavefront area ratio";
     case StabilityPass::GodRays:
       return "god rays";
     case StabilityPass::ObjectCaustics:

@@ -100,9 +100,8 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
   }
   for (int grid : sizeSettings.physicalGrids) {
     if (!sizeSettings.everyModel && grid != 256) continue;
-    Variant v{"physical (wavefront area ratio)", "grid " + std::to_string(grid),
-              postfx::CausticsSettings{}, true,
-              PrePass{postfx::Pass::WavefrontAreaRatio, "irradiance pass"}};
+    Variant v{"wavefront area ratio", "grid " + std::to_string(grid), postfx::CausticsSettings{},
+              true, PrePass{postfx::Pass::WavefrontAreaRatio, "irradiance pass"}};
     v.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
     v.caustics.gridResolution = grid;
     variants.push_back(v);

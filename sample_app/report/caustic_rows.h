@@ -1,7 +1,7 @@
 #pragma once
 // The report's caustics rows: the tile irradiance (the default model) at several tile sizes and
 // layer counts, the ray-deviation coefficient at several tau, with and without the reflection
-// term, with and without cascade skipping, and the physical (wavefront area ratio) window at
+// term, with and without cascade skipping, and the wavefront area ratio window at
 // each grid resolution, each timed and compared on the flat seabed (flat_seabed_comparison.h)
 // with converged CPU light tracing through the same water texture the GPU used, at each of the
 // sizes asked for.

@@ -54,7 +54,7 @@ bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame,
     if (!c.physical.run.raw.empty()) {
       Row row;
       row.pass = "caustics";
-      row.method = "physical on a slope (check of the comparison)";
+      row.method = "wavefront area ratio on a slope (check of the comparison)";
       row.setting = setting;
       row.medianMs = c.physical.run.medianMs;
       row.floorMs = c.physical.run.floorMs;

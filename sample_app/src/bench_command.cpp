@@ -5,9 +5,9 @@
 // quarter resolution, each with a fresh plugin context (fresh timers) and its own floor measured
 // in the same run, reported as rows god_rays_<n>, god_rays_half_<n> and god_rays_quarter_<n>.
 // The wavefront area ratio: one short run per grid resolution (64..1024), rows
-// caustics_irradiance_<n> (the extra pass), caustics_physical_tile_<n> (the tile pre-pass that
-// continues the window) and caustics_physical_<n> (the full-screen caustics pass sampling both),
-// with the clamp's bias on stderr.
+// wavefront_area_ratio_<n> (its own pass), wavefront_area_ratio_<n>_tile_irradiance (the tile
+// pre-pass that continues the window) and wavefront_area_ratio_<n>_caustics (the full-screen
+// caustics pass sampling both), with the clamp's bias on stderr.
 // Object caustics: likewise one short run per caustic-map size, ray-grid size and hit-iteration
 // count, reported as rows object_caustics_<map>_<grid>_<iterations>.
 #include <algorithm>
@@ -150,16 +150,16 @@ int runBench(const Options& commandOptions) {
   if (options.caustics) {
     for (int grid : {64, 128, 256, 512, 1024}) {
       const std::string n = std::to_string(grid);
-      if (!wanted("caustics_physical_" + n) && !wanted("caustics_irradiance_" + n)) continue;
+      const std::string row = "wavefront_area_ratio_" + n;
+      if (!wanted(row) && !wanted(row + "_tile_irradiance") && !wanted(row + "_caustics")) continue;
       Options physical = options;
       physical.physicalCaustics = true;
       physical.causticsGrid = grid;
-      const postfx::FrameStats* stats =
-          runVariant("caustics_physical_" + n, physical, [](PluginSetup&) {});
+      const postfx::FrameStats* stats = runVariant(row, physical, [](PluginSetup&) {});
       if (!stats) return commandFailed(error);
-      addRow("caustics_irradiance_" + n, *stats, postfx::Pass::WavefrontAreaRatio);
-      addRow("caustics_physical_tile_" + n, *stats, postfx::Pass::TileIrradiance);
-      addRow("caustics_physical_" + n, *stats, postfx::Pass::Caustics);
+      addRow(row, *stats, postfx::Pass::WavefrontAreaRatio);
+      addRow(row + "_tile_irradiance", *stats, postfx::Pass::TileIrradiance);
+      addRow(row + "_caustics", *stats, postfx::Pass::Caustics);
       std::fprintf(stderr, "bench: grid %d: clamp removed %.4f %% of the window's flux\n", grid,
                    100.0 * stats->clampedFluxFraction);
     }

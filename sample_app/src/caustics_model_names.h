@@ -13,11 +13,12 @@ struct CausticsModelName {
   bool listed;        // shown in --help and in the refusal; false for a former name kept working
 };
 
-inline constexpr std::array<CausticsModelName, 4> kCausticsModelNames{{
-    {"tile", false, false, true},          // per-cascade tile irradiance (the default)
-    {"ray-deviation", false, true, true},  // exp(-tau a^2) of the refracted ray's deviation
-    {"seed002", false, true, false},       // ray-deviation's former name
-    {"physical", true, false, true},       // irradiance window from the wavefront area ratio
+inline constexpr std::array<CausticsModelName, 5> kCausticsModelNames{{
+    {"tile", false, false, true},                 // per-cascade tile irradiance (the default)
+    {"ray-deviation", false, true, true},         // exp(-tau a^2) of the refracted ray's deviation
+    {"seed002", false, true, false},              // ray-deviation's former name
+    {"wavefront-area-ratio", true, false, true},  // irradiance window from the area ratio
+    {"physical", true, false, false},             // wavefront-area-ratio's former name
 }};
 
 }  // namespace ocean

@@ -138,7 +138,8 @@ const std::vector<CommandSpec>& commands() {
        "Per-pass GPU times (timer queries, median after warm-up) and each pass's ratio to a "
        "floor pass that reads the same inputs and writes the same outputs with no math; also "
        "each variant (caustics_all_cascades, caustics_triplanar_walls, god_rays[_half|_quarter]"
-       "_<n>, caustics_physical_<n>, object_caustics_<map>_<grid>_<iterations>).",
+       "_<n>, wavefront_area_ratio_<n>[_tile_irradiance|_caustics], "
+       "object_caustics_<map>_<grid>_<iterations>).",
        {"--frames", "--json", "--only"},
        true,
        "",

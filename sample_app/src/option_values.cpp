@@ -182,7 +182,8 @@ const std::array kValueOptions{
                 [](std::string_view text, Options& o, std::string& error) {
                   return doubleIn(text, 0.0, 1e6, o.tau, "--tau", "a number in [0, 1e6]", error);
                 }},
-    ValueOption{"--caustics-model", "MODEL", "tile (default), ray-deviation or physical", false,
+    ValueOption{"--caustics-model", "MODEL",
+                "tile (default), ray-deviation or wavefront-area-ratio", false,
                 [](std::string_view text, Options& o, std::string& error) {
                   for (const CausticsModelName& model : kCausticsModelNames) {
                     if (model.name != text) continue;
@@ -193,7 +194,7 @@ const std::array kValueOptions{
                   error = "--caustics-model must be " + causticsModelList() + got(text);
                   return false;
                 }},
-    ValueOption{"--caustics-grid", "N", "physical model's water grid, 64..1024 (default 256)",
+    ValueOption{"--caustics-grid", "N", "wavefront area ratio's water grid, 64..1024 (default 256)",
                 false,
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 64, 1024, o.causticsGrid, "--caustics-grid", error);

@@ -38,8 +38,7 @@ bool causticsModel(postfx::CausticsModel& model) {
   static const postfx::CausticsModel kModels[] = {postfx::CausticsModel::TileIrradiance,
                                                   postfx::CausticsModel::RayDeviation,
                                                   postfx::CausticsModel::WavefrontAreaRatio};
-  static const char* const kNames[] = {"tile irradiance", "ray deviation",
-                                       "wavefront area ratio (physical)"};
+  static const char* const kNames[] = {"tile irradiance", "ray deviation", "wavefront area ratio"};
   int current = 0;
   for (int i = 0; i < 3; ++i)
     if (kModels[i] == model) current = i;
@@ -52,7 +51,8 @@ bool caustics(postfx::CausticsSettings& s, const ViewFeatures& features) {
   bool changed = ImGui::Checkbox("seabed caustics (C)", &s.enabled);
   changed |= causticsModel(s.model);
   if (s.model == postfx::CausticsModel::WavefrontAreaRatio && !features.physicalCaustics)
-    ImGui::TextDisabled("physical needs --caustics-model physical at start");
+    ImGui::TextDisabled(
+        "the wavefront area ratio needs --caustics-model wavefront-area-ratio at start");
   changed |= ImGui::SliderFloat("intensity##caustics", &s.intensity, 0.0f, 4.0f);
   changed |= ImGui::SliderFloat("surface fade (m)", &s.surfaceFadeDepth, 0.0f, 10.0f);
   changed |= ImGui::SliderFloat("lod bias", &s.lodBias, -4.0f, 8.0f);

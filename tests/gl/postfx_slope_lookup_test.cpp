@@ -16,7 +16,7 @@
 #include <slope_comparison.h>
 
 #include "gl_fixture.h"
-#include "postfx_physical_util.h"
+#include "postfx_wavefront_area_ratio_util.h"
 
 namespace {
 
@@ -90,10 +90,11 @@ TEST_F(PostfxSlopeLookupTest, SlopedReceiversAgainstTheTracedPattern) {
       // The comparison itself (tilted plane, bins, units): the physical model reads neither
       // lookup inside its window, and on flat floors stays within 0.3 (on a layer) to 0.5
       // (between layers) of the pattern's own contrast at grid 256
-      // (postfx_physical_reference_test). A slope crosses layers, hence 0.5, in absolute units
-      // (it checks the conversion raw / (L.y n.y) too). Facing away at n.L 0.26 the light
-      // grazes the plane and the true N.L varies with each ray's own refracted direction, which
-      // the plugin's flat-water N.L does not follow: 0.75 there. Measured 0.20, 0.33, 0.28, 0.46.
+      // (postfx_wavefront_area_ratio_reference_test). A slope crosses layers, hence 0.5, in
+      // absolute units (it checks the conversion raw / (L.y n.y) too). Facing away at n.L 0.26 the
+      // light grazes the plane and the true N.L varies with each ray's own refracted direction,
+      // which the plugin's flat-water N.L does not follow: 0.75 there. Measured 0.20, 0.33, 0.28,
+      // 0.46.
       const double physical = c.physical.stats.relativeRmse, none = c.uniform.relativeRmse;
       std::printf(
           "  physical grid %d: relative RMSE %.4f (corr %.3f), no pattern %.4f, ratio %.2f\n",

@@ -16,7 +16,7 @@
 #include <flat_seabed_comparison.h>
 
 #include "gl_fixture.h"
-#include "postfx_physical_util.h"
+#include "postfx_wavefront_area_ratio_util.h"
 
 namespace {
 

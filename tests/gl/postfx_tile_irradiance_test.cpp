@@ -15,9 +15,9 @@
 #include "core/frame_geometry.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
-#include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_wavefront_area_ratio_util.h"
 
 namespace {
 

@@ -39,7 +39,7 @@ std::vector<Row> reportLikeRows() {
       row("god_rays", "god rays, world grid", "16 samples", 1.0, 0.10, 0.05),
       row("god_rays", "god rays, half res", "16 samples", 0.4, 0.15, 0.05),
       row("caustics", "ray deviation", "tau 800", 0.8, ocean::report::kNotApplicable, 0.6),
-      row("caustics", "physical (wavefront area ratio)", "grid 256", 2.0, 0.9, 0.3),
+      row("caustics", "wavefront area ratio", "grid 256", 2.0, 0.9, 0.3),
       row("caustics", "ray deviation on a slope, along the light", "slope 30, facing the sun", 0.8,
           ocean::report::kNotApplicable, 0.7),
       row("object_caustics", "caustic map", "512 / 256 / 1", 3.0, 0.05, 0.01),

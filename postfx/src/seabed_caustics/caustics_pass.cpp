@@ -116,7 +116,7 @@ Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced
     return buildPrograms(
         defines,
         {{program,
-          physical ? "postfx.caustics_physical_tile" : "postfx.caustics_tile",
+          physical ? "postfx.caustics_wavefront_area_ratio" : "postfx.caustics_tile",
           {kFullScreenVertex, {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/caustics.frag"}},
           tileDefines}},
         error);

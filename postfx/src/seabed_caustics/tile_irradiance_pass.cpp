@@ -99,27 +99,27 @@ Result TileIrradiancePass::init(const std::string& defines, std::string& error) 
   return buildPrograms(
       defines,
       {{scatter_,
-        "postfx.caustics_tile.scatter",
+        "postfx.tile_irradiance.scatter",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_scatter.comp"}},
         "#define POSTFX_TILE_FOOTPRINT 0\n"},
        {scatterFootprint_,
-        "postfx.caustics_tile.scatter_footprint",
+        "postfx.tile_irradiance.scatter_footprint",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_scatter.comp"}},
         "#define POSTFX_TILE_FOOTPRINT 1\n"},
        {resolve_,
-        "postfx.caustics_tile.resolve",
+        "postfx.tile_irradiance.resolve",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_resolve.comp"}}},
        {downsample_,
-        "postfx.caustics_tile.downsample",
+        "postfx.tile_irradiance.downsample",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_downsample.comp"}}},
        {spreadStatistics_,
-        "postfx.caustics_tile.spread_statistics",
+        "postfx.tile_irradiance.spread_statistics",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_spread.comp"}}},
        {spreadBox_,
-        "postfx.caustics_tile.spread_box",
+        "postfx.tile_irradiance.spread_box",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_spread_box.comp"}}},
        {spreadPack_,
-        "postfx.caustics_tile.spread_pack",
+        "postfx.tile_irradiance.spread_pack",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_spread_pack.comp"}}}},
       error);
 }
@@ -130,7 +130,7 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   const int arrayLayers = std::max(l.cascadeCount * l.groups, 1);
   if (!texture_ || textureResolution_ != l.resolution || textureLayers_ != arrayLayers) {
     texture_.reset();  // the old size goes first: never two of them allocated at once
-    texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.caustics_tile.irradiance");
+    texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.tile_irradiance.irradiance");
     glTextureStorage3D(texture_.id(), glkit::mipLevelCount(l.resolution), GL_RGBA16F, l.resolution,
                        l.resolution, arrayLayers);
     textureResolution_ = l.resolution;
@@ -141,7 +141,7 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
   if (!accumulators_ || accumulatorBytes_ != bytes) {
     accumulators_.reset();
     accumulators_ = glkit::createBuffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT,
-                                        "postfx.caustics_tile.accumulators");
+                                        "postfx.tile_irradiance.accumulators");
     // Zero once; the resolve leaves them zero for the next frame.
     const GLuint zero = 0;
     glClearNamedBufferData(accumulators_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -154,10 +154,10 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
     spreadStatisticsBuffer_.reset();
     if (blurBytes > 0) {
       blur_ = glkit::createBuffer(blurBytes, nullptr, GL_DYNAMIC_STORAGE_BIT,
-                                  "postfx.caustics_tile.spread_blur");
+                                  "postfx.tile_irradiance.spread_blur");
       spreadStatisticsBuffer_ =
           glkit::createBuffer(GLsizeiptr(kSpreadStatisticsBytes), nullptr, GL_DYNAMIC_STORAGE_BIT,
-                              "postfx.caustics_tile.spread_statistics");
+                              "postfx.tile_irradiance.spread_statistics");
     }
     blurBytes_ = blurBytes;
   }

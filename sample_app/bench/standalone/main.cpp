@@ -109,7 +109,7 @@ std::vector<Config> configurations() {
     postfx::CausticsSettings physical;
     physical.model = postfx::CausticsModel::WavefrontAreaRatio;
     physical.gridResolution = grid;
-    configs.push_back({"caustics_physical_" + std::to_string(grid),
+    configs.push_back({"wavefront_area_ratio_" + std::to_string(grid),
                        caustics | Feature::WavefrontAreaRatio,
                        physical,
                        noGodRays,

@@ -1,5 +1,5 @@
 #pragma once
-// Helpers for the WavefrontAreaRatio (physical caustics) GL tests: a frame in that model, the
+// Helpers for the wavefront area ratio GL tests: a frame in that model, the
 // irradiance read back, and box averages of it over the CPU reference's bins.
 #include <epoxy/gl.h>
 
@@ -24,7 +24,7 @@ inline constexpr postfx::Feature kPhysical = postfx::Feature::Caustics |
 
 // Camera 2 m under the level, looking down at a floor `floorDepth` m below it; camera xz at
 // the centre of a 16 m window whose snapped corner is the world origin for every grid size.
-inline SceneSpec physicalScene(double floorDepth, int width = 96, int height = 64) {
+inline SceneSpec wavefrontAreaRatioScene(double floorDepth, int width = 96, int height = 64) {
   SceneSpec s;
   s.width = width;
   s.height = height;
@@ -35,8 +35,8 @@ inline SceneSpec physicalScene(double floorDepth, int width = 96, int height = 6
   return s;
 }
 
-inline void usePhysical(postfx::FrameDesc& frame, int grid, int layers, float maxDepth,
-                        float maxIrradiance = 1e4f) {
+inline void useWavefrontAreaRatio(postfx::FrameDesc& frame, int grid, int layers, float maxDepth,
+                                  float maxIrradiance = 1e4f) {
   frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
   frame.caustics.gridResolution = grid;
   frame.caustics.windowSize = 16.0f;

@@ -16,15 +16,15 @@
 #include "core/memory_estimate.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
-#include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_wavefront_area_ratio_util.h"
 
 namespace {
 
 using postfxtest::kPhysical;
 
-class PostfxPhysicalWindowTest : public testsupport::GlTest {};
+class PostfxWavefrontAreaRatioWindowTest : public testsupport::GlTest {};
 
 double upY(const postfx::FrameDesc& frame) {
   return -postfx::detail::refractedSunDown(frame.sun.direction, frame.water.ior).y;
@@ -55,14 +55,15 @@ struct Creases {
 // second difference across the texel grid's knots (texel centres: bilinear creases there) must
 // be no larger than inside the cells. The same measure on the texture read back and
 // interpolated bilinearly proves it would see the blocks.
-TEST_F(PostfxPhysicalWindowTest, NoTexelGridWhereAPixelIsUnderATexel) {
+TEST_F(PostfxWavefrontAreaRatioWindowTest, NoTexelGridWhereAPixelIsUnderATexel) {
   auto ocean = postfxtest::makeSmallOcean(5.0);
   ASSERT_TRUE(ocean);
-  postfxtest::Scene scene(postfxtest::physicalScene(4.0, 160, 120));
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(4.0, 160, 120));
   auto fx = postfxtest::makeContext(kPhysical);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
   postfxtest::useOcean(frame, *ocean);
-  postfxtest::usePhysical(frame, 64, 2, 4.0f);  // layers at 1 and 4 m; the floor on the second
+  postfxtest::useWavefrontAreaRatio(frame, 64, 2,
+                                    4.0f);  // layers at 1 and 4 m; the floor on the second
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   const std::vector<float> texels = postfxtest::readIrradiance(info);
@@ -123,17 +124,17 @@ TEST_F(PostfxPhysicalWindowTest, NoTexelGridWhereAPixelIsUnderATexel) {
 // texture read back) and the tile field have the same mean, so the band blends one light's two
 // estimates, not two looks (the former ray-deviation continuation had half the mean: an edge).
 // No light on the sky, NaN-free.
-TEST_F(PostfxPhysicalWindowTest, ContinuesBeyondTheWindowWithoutAnEdge) {
+TEST_F(PostfxWavefrontAreaRatioWindowTest, ContinuesBeyondTheWindowWithoutAnEdge) {
   auto ocean = postfxtest::makeSmallOcean(5.0);
   ASSERT_TRUE(ocean);
-  postfxtest::SceneSpec spec = postfxtest::physicalScene(4.0, 192, 128);
+  postfxtest::SceneSpec spec = postfxtest::wavefrontAreaRatioScene(4.0, 192, 128);
   spec.lookDirection = {0.0, -0.7, -1.0};  // the floor from 1 m to 20 m ahead
   postfxtest::Scene scene(spec);
   const int w = spec.width, h = spec.height;
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
   postfxtest::useOcean(frame, *ocean);
-  postfxtest::usePhysical(frame, 256, 2, 4.0f);  // the floor on the second layer
-  frame.caustics.windowSize = 8.0f;              // its edge 4 m from the camera
+  postfxtest::useWavefrontAreaRatio(frame, 256, 2, 4.0f);  // the floor on the second layer
+  frame.caustics.windowSize = 8.0f;                        // its edge 4 m from the camera
   // The window's continuation looks the tile field up at every pixel; so does this
   // TileIrradiance frame (by default its lookups run at half resolution).
   frame.caustics.tileLookupResolution = postfx::CausticsLookupResolution::Full;
@@ -208,17 +209,17 @@ TEST_F(PostfxPhysicalWindowTest, ContinuesBeyondTheWindowWithoutAnEdge) {
 // The estimate the frame is refused by (CreateDesc::memoryBudgetMiB) is, byte for byte, what the
 // passes hold afterwards, asked of GL: the window's layers and mips, its grid points, the tile
 // irradiance that continues it, and the raw output.
-TEST_F(PostfxPhysicalWindowTest, MemoryEstimateIsWhatIsAllocated) {
+TEST_F(PostfxWavefrontAreaRatioWindowTest, MemoryEstimateIsWhatIsAllocated) {
   auto ocean = postfxtest::makeSmallOcean(5.0);
   ASSERT_TRUE(ocean);
-  postfxtest::Scene scene(postfxtest::physicalScene(4.0));
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(4.0));
   auto fx = postfxtest::makeContext(kPhysical);
   const int w = scene.spec().width, h = scene.spec().height;
   for (const auto& [grid, layers] : {std::pair{64, 1}, std::pair{256, 4}, std::pair{96, 8}}) {
     SCOPED_TRACE("grid " + std::to_string(grid) + ", " + std::to_string(layers) + " layers");
     postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
     postfxtest::useOcean(frame, *ocean);
-    postfxtest::usePhysical(frame, grid, layers, 8.0f);
+    postfxtest::useWavefrontAreaRatio(frame, grid, layers, 8.0f);
     ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
     const postfx::detail::FramePlan plan = postfx::detail::planFrame(*fx, frame);
     EXPECT_TRUE(plan.wavefrontAreaRatio && plan.tile) << "the tile irradiance continues the window";

@@ -12,28 +12,28 @@
 #include "core/frame_geometry.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
-#include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_wavefront_area_ratio_util.h"
 #include "water_readback.h"
 
 namespace {
 
 using postfxtest::kPhysical;
 
-class PostfxPhysicalReferenceTest : public testsupport::GlTest {};
+class PostfxWavefrontAreaRatioReferenceTest : public testsupport::GlTest {};
 
-TEST_F(PostfxPhysicalReferenceTest, AgainstTheSeabedReference) {
+TEST_F(PostfxWavefrontAreaRatioReferenceTest, AgainstTheSeabedReference) {
   auto ocean = postfxtest::makeSmallOcean(3.0);
   ASSERT_TRUE(ocean);
-  postfxtest::Scene scene(postfxtest::physicalScene(4.0, 64, 48));
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(4.0, 64, 48));
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
   postfxtest::useOcean(frame, *ocean);
 
   ocean::reference::WaterTextureSurface surface;
   std::string error;
   ASSERT_TRUE(surface.read(frame.water, error)) << error;
-  // The window is [0, 16] m (see physicalScene); compare inside its fade band: [2, 14] m.
+  // The window is [0, 16] m (see wavefrontAreaRatioScene); compare inside its fade band: [2, 14] m.
   ocean::reference::ReferenceDesc desc;
   desc.towardSun = frame.sun.direction;
   desc.ior = frame.water.ior;
@@ -59,7 +59,7 @@ TEST_F(PostfxPhysicalReferenceTest, AgainstTheSeabedReference) {
   double previous = 1e9, at256 = 0.0;
   for (int grid : {64, 128, 256}) {
     auto fx = postfxtest::makeContext(kPhysical);
-    postfxtest::usePhysical(frame, grid, 1, 4.0f);
+    postfxtest::useWavefrontAreaRatio(frame, grid, 1, 4.0f);
     ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
     const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
     ASSERT_DOUBLE_EQ(info.windowOrigin.x, 0.0);
@@ -83,7 +83,7 @@ TEST_F(PostfxPhysicalReferenceTest, AgainstTheSeabedReference) {
   // (caustics.frag layerIrradiance; the CPU twin below evaluates it at every texel centre of a
   // bin and averages).
   auto fx = postfxtest::makeContext(kPhysical);
-  postfxtest::usePhysical(frame, 256, 3, 9.0f);
+  postfxtest::useWavefrontAreaRatio(frame, 256, 3, 9.0f);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   const std::vector<float> texels = postfxtest::readIrradiance(info);

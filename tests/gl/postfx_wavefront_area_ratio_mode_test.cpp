@@ -15,26 +15,26 @@
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
 #include "postfx_host_state.h"
-#include "postfx_physical_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_wavefront_area_ratio_util.h"
 
 namespace {
 
 using postfxtest::kPhysical;
 
-class PostfxPhysicalTest : public testsupport::GlTest {};
+class PostfxWavefrontAreaRatioTest : public testsupport::GlTest {};
 
 bool allFinite(const std::vector<float>& v) {
   return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
 }
 
-TEST_F(PostfxPhysicalTest, FlatWaterGivesOneEverywhere) {
-  postfxtest::Scene scene(postfxtest::physicalScene(6.0));
+TEST_F(PostfxWavefrontAreaRatioTest, FlatWaterGivesOneEverywhere) {
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
   const GLuint water = postfxtest::makeWaterTexture(32, 2, 0.0);
   auto fx = postfxtest::makeContext(kPhysical);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
-  postfxtest::usePhysical(frame, 128, 3, 9.0f);
+  postfxtest::useWavefrontAreaRatio(frame, 128, 3, 9.0f);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   ASSERT_NE(info.texture, 0u);
@@ -74,13 +74,13 @@ TEST_F(PostfxPhysicalTest, FlatWaterGivesOneEverywhere) {
 // transmittance ratio, ~1 - 1e-3 for these slopes. (Over a window of an incommensurate
 // multi-cascade sea the mean is not 1: a long swell's curvature focuses or spreads the whole
 // window by ~(n-1)/n d h'' -- the reference test compares such means with the reference.)
-TEST_F(PostfxPhysicalTest, ConservesFluxOverAPeriod) {
-  postfxtest::Scene scene(postfxtest::physicalScene(6.0));
+TEST_F(PostfxWavefrontAreaRatioTest, ConservesFluxOverAPeriod) {
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
   const GLuint water = postfxtest::makeWaterTexture(64, 1, 0.01);
   auto fx = postfxtest::makeContext(kPhysical);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 1);
   frame.water.tileSize[0] = 16.0;  // = the window
-  postfxtest::usePhysical(frame, 256, 4, 16.0f, 1e4f);
+  postfxtest::useWavefrontAreaRatio(frame, 256, 4, 16.0f, 1e4f);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   ASSERT_DOUBLE_EQ(info.windowOrigin.x, 0.0);
@@ -108,14 +108,14 @@ TEST_F(PostfxPhysicalTest, ConservesFluxOverAPeriod) {
 // clamped triangles; one that takes a sub-texel triangle's point deposit may be clamped while
 // its own value stays under the clamp). What it removed -- unclamped minus clamped texels, exact
 // since the rasterisation is the same -- must be what stats reports.
-TEST_F(PostfxPhysicalTest, ReportsTheFluxTheClampRemoved) {
+TEST_F(PostfxWavefrontAreaRatioTest, ReportsTheFluxTheClampRemoved) {
   auto ocean = postfxtest::makeSmallOcean(3.0);
   ASSERT_TRUE(ocean);
-  postfxtest::Scene scene(postfxtest::physicalScene(6.0));
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
   auto fx = postfxtest::makeContext(kPhysical);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
   postfxtest::useOcean(frame, *ocean);
-  postfxtest::usePhysical(frame, 256, 4, 16.0f, 1e4f);
+  postfxtest::useWavefrontAreaRatio(frame, 256, 4, 16.0f, 1e4f);
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   const std::vector<float> unclamped = postfxtest::readIrradiance(info);
@@ -162,15 +162,15 @@ TEST_F(PostfxPhysicalTest, ReportsTheFluxTheClampRemoved) {
 // world xz, times n . up: where a pixel is under half a texel, the layer's cubic B-spline
 // reconstruction (the magnification filter; the pixels in the octave where it blends in, and
 // the outer band where the tile field takes over, are excluded here).
-TEST_F(PostfxPhysicalTest, CausticsPassSamplesTheIrradiance) {
+TEST_F(PostfxWavefrontAreaRatioTest, CausticsPassSamplesTheIrradiance) {
   auto ocean = postfxtest::makeSmallOcean(5.0);
   ASSERT_TRUE(ocean);
   const double floorDepth = 4.0;
-  postfxtest::Scene scene(postfxtest::physicalScene(floorDepth));
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(floorDepth));
   auto fx = postfxtest::makeContext(kPhysical);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
   postfxtest::useOcean(frame, *ocean);
-  postfxtest::usePhysical(frame, 128, 2, 4.0f);  // layers at 1 and 4 m
+  postfxtest::useWavefrontAreaRatio(frame, 128, 2, 4.0f);  // layers at 1 and 4 m
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const postfx::testing::CausticIrradianceInfo info = postfx::testing::causticIrradiance(*fx);
   ASSERT_FLOAT_EQ(info.layerDepth[1], 4.0f);
@@ -234,15 +234,15 @@ TEST_F(PostfxPhysicalTest, CausticsPassSamplesTheIrradiance) {
 // World-snapped: a camera move inside one snap step (16 texels: the coarsest mip level's texel)
 // leaves the irradiance bit for bit the same (no swimming), and a move of whole steps shifts it
 // by exactly those texels.
-TEST_F(PostfxPhysicalTest, PatternStaysPutWhenTheCameraMoves) {
+TEST_F(PostfxWavefrontAreaRatioTest, PatternStaysPutWhenTheCameraMoves) {
   auto ocean = postfxtest::makeSmallOcean(2.0);
   ASSERT_TRUE(ocean);
-  postfxtest::Scene scene(postfxtest::physicalScene(6.0));
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
   auto fx = postfxtest::makeContext(kPhysical);
   auto irradianceAt = [&](const glm::dvec3& offset, postfx::testing::CausticIrradianceInfo& info) {
     postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3, offset);
     postfxtest::useOcean(frame, *ocean);
-    postfxtest::usePhysical(frame, 128, 2, 8.0f);
+    postfxtest::useWavefrontAreaRatio(frame, 128, 2, 8.0f);
     EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
     info = postfx::testing::causticIrradiance(*fx);
     return postfxtest::readIrradiance(info);
@@ -283,7 +283,7 @@ TEST_F(PostfxPhysicalTest, PatternStaysPutWhenTheCameraMoves) {
   EXPECT_DOUBLE_EQ(c.windowOrigin.x - a.windowOrigin.x, stepTexels * texel);
 }
 
-TEST_F(PostfxPhysicalTest, NoneAboveWaterOnSkyAndNanFree) {
+TEST_F(PostfxWavefrontAreaRatioTest, NoneAboveWaterOnSkyAndNanFree) {
   // Camera 2 m under a level at -0.5, a sphere breaking the surface, the sky.
   postfxtest::SceneSpec spec;
   spec.lookDirection = {0.0, -0.1, -1.0};
@@ -295,7 +295,7 @@ TEST_F(PostfxPhysicalTest, NoneAboveWaterOnSkyAndNanFree) {
     const GLuint water = postfxtest::makeWaterTexture(64, 3, nanWater ? 0.0 : 0.01, nanWater);
     auto fx = postfxtest::makeContext(kPhysical);
     postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3, {}, -0.5);
-    postfxtest::usePhysical(frame, 64, 3, 12.0f, 32.0f);
+    postfxtest::useWavefrontAreaRatio(frame, 64, 3, 12.0f, 32.0f);
     scene.clearTarget(glm::vec4(0.0f));
     ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
     const std::vector<float> e =
@@ -331,8 +331,8 @@ TEST_F(PostfxPhysicalTest, NoneAboveWaterOnSkyAndNanFree) {
   }
 }
 
-TEST_F(PostfxPhysicalTest, BadSettingsFailCleanly) {
-  postfxtest::Scene scene(postfxtest::physicalScene(6.0));
+TEST_F(PostfxWavefrontAreaRatioTest, BadSettingsFailCleanly) {
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
   const GLuint water = postfxtest::makeWaterTexture(32, 2, 0.01);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   struct Case {
@@ -362,7 +362,7 @@ TEST_F(PostfxPhysicalTest, BadSettingsFailCleanly) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
-    postfxtest::usePhysical(frame, 128, 2, 8.0f);
+    postfxtest::useWavefrontAreaRatio(frame, 128, 2, 8.0f);
     c.spoil(frame.caustics, nan);
     scene.clearTarget(marker);
     host.set();
@@ -384,7 +384,7 @@ TEST_F(PostfxPhysicalTest, BadSettingsFailCleanly) {
   // The model without the feature that builds its resources.
   auto plain = postfxtest::makeContext(postfx::Feature::Caustics);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
-  postfxtest::usePhysical(frame, 128, 2, 8.0f);
+  postfxtest::useWavefrontAreaRatio(frame, 128, 2, 8.0f);
   EXPECT_EQ(postfx::dispatch(*plain, frame), postfx::Result::InvalidArgument);
   EXPECT_NE(std::string(postfx::lastError(plain.get())).find("Feature::WavefrontAreaRatio"),
             std::string::npos);
@@ -393,12 +393,12 @@ TEST_F(PostfxPhysicalTest, BadSettingsFailCleanly) {
 
 // A physical frame leaves the host's GL state (SSBO bindings included) as it found it, and the
 // extra pass is timed under its own name next to the others.
-TEST_F(PostfxPhysicalTest, RestoresStateAndTimesItsPass) {
-  postfxtest::Scene scene(postfxtest::physicalScene(6.0));
+TEST_F(PostfxWavefrontAreaRatioTest, RestoresStateAndTimesItsPass) {
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
   const GLuint water = postfxtest::makeWaterTexture(32, 2, 0.01);
   auto fx = postfxtest::makeContext(kPhysical | postfx::Feature::GodRays);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 2);
-  postfxtest::usePhysical(frame, 64, 2, 8.0f);
+  postfxtest::useWavefrontAreaRatio(frame, 64, 2, 8.0f);
   postfxtest::HostState host;
   host.set();
   const postfxtest::GlSnapshot before = postfxtest::snapshotGlState();
