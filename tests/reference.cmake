@@ -37,6 +37,7 @@ postfx_add_test(postfx_tile_irradiance_tests GL
   SOURCES gl/postfx_tile_irradiance_test.cpp
           gl/postfx_tile_lookup_resolution_test.cpp gl/postfx_tile_spread_test.cpp
           gl/postfx_host_water_test.cpp gl/postfx_tile_footprint_test.cpp
+          gl/postfx_tile_product_test.cpp
   LIBS postfx_test_scene ocean_validation postfx gbuffer water glm::glm postfx::epoxy)
 target_include_directories(postfx_tile_irradiance_tests
   PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src ${POSTFX_SHADER_ROOT})

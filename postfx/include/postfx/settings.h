@@ -143,7 +143,8 @@ struct CausticsSettings {
   float maxReceiverDepth = 16.0f;
   // Irradiance clamp relative to flat water, kMaxIrradianceRange: folds focus to infinite
   // irradiance. WavefrontAreaRatio clamps its window to it (the flux removed:
-  // FrameStats::clampedFluxFraction); TileIrradiance each cascade's field to min(it, 1024).
+  // FrameStats::clampedFluxFraction); TileIrradiance each cascade's field to min(it, 1024),
+  // and their product to 1024 (half-float targets and lookups stay finite).
   float maxIrradiance = 32.0f;
 };
 

@@ -21,8 +21,8 @@ inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
 // the shadow map and the surface fade, before albedo, irradiance, intensity and absorption
 // (flat water reads n.l, not 1); 0 where no caustics (sky, above water, back-facing, shadowed,
 // pass skipped). Range of omega, per CausticsSettings::model, with c = min(maxIrradiance, 1024):
-//  - TileIrradiance (the default): the product of the cascades' fields, each in [0, c]; the
-//    product is not clamped again: [0, c^k], k the cascades with irradiance (defaults: c = 32);
+//  - TileIrradiance (the default): the product of the cascades' fields, each in [0, c]:
+//    [0, min(c^k, 1024)], k the cascades with irradiance (defaults: c = 32);
 //  - WavefrontAreaRatio: [0, maxIrradiance] inside the window, TileIrradiance's range where it
 //    fades to the tile field (outer eighth and beyond);
 //  - RayDeviation: [0, 1].

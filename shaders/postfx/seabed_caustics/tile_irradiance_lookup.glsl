@@ -64,7 +64,9 @@ float tileIrradianceAt(vec3 p, float depthBelow, float logFootprint) {
     }
   }
 #endif
-  return e;
+  // Clamped as each field is: cascades focusing on one receiver would otherwise multiply their
+  // clamps past a half float's range, the packed half-resolution lookups' and RGBA16F targets'.
+  return min(e, TILE_MAX_IRRADIANCE);
 }
 
 #if POSTFX_WAVEFRONT_AREA_RATIO
