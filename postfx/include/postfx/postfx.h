@@ -48,8 +48,8 @@ enum class Feature : std::uint32_t {
   // Full tri-planar water lookup: steep surfaces (more than ~30 degrees from horizontal at the
   // default CausticsSettings::triplanarSharpness) also sample the water along the world x and
   // z axes, blended by the G-buffer normal (three times the fetches there). Without it every
-  // surface samples the water where its light entered, along the refracted sun: seamless
-  // across surfaces, and closer to traced light on slopes (docs/measurements.md).
+  // surface samples the water where its light entered, along the refracted sun: one
+  // projection, seamless across floor, walls and overhangs, at a third of the fetches.
   TriplanarWalls = 1u << 8,
   // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
   PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
