@@ -126,8 +126,9 @@ GLuint makeWaterTextureFromTexels(int size, const std::vector<glm::vec4>& texels
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
   int levels = 1;
   for (int s = size; s > 1; s >>= 1) ++levels;
-  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, 1);
-  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, 1, GL_RGBA, GL_FLOAT, texels.data());
+  const int layers = std::max(1, int(texels.size() / (size_t(size) * size)));
+  glTextureStorage3D(t, levels, GL_RGBA32F, size, size, layers);
+  glTextureSubImage3D(t, 0, 0, 0, 0, size, size, layers, GL_RGBA, GL_FLOAT, texels.data());
   glGenerateTextureMipmap(t);
   return t;
 }

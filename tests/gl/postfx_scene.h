@@ -70,8 +70,9 @@ GLuint makeWaterTexture(int size, int layers, double amplitude, bool nan = false
 // to 16 texels) at every level of detail, so tests can compare pixels whose footprints differ.
 GLuint makeLevelIndependentWaterTexture(int size, double slope);
 
-// One cascade's water texture (RGBA32F, one layer, full mip chain) from size x size texels,
-// row by row: slopes x, z, height (m), 1. Whole periods per tile keep it seamless.
+// A water texture (RGBA32F, full mip chain) from size x size texels per cascade, row by row,
+// cascade after cascade (one layer each): slopes x, z, height (m), 1. Whole periods per tile
+// keep it seamless.
 GLuint makeWaterTextureFromTexels(int size, const std::vector<glm::vec4>& texels);
 
 // A frame for `scene` with the caustics defaults but the RayDeviation model, water at `level`

@@ -32,26 +32,19 @@ GLuint makeFocusingCascades() {
   const double k = 6.283185307179586 * kPeriods / kTile;
   const double n = 1.333;
   const double amplitude = 1.0 / ((1.0 - 1.0 / n) * k * k * kDepth);
-  std::vector<glm::vec4> texels(static_cast<size_t>(kWaterTexels * kWaterTexels));
+  const size_t perCascade = static_cast<size_t>(kWaterTexels * kWaterTexels);
+  std::vector<glm::vec4> texels(perCascade * kCascades);
   for (int y = 0; y < kWaterTexels; ++y) {
     for (int x = 0; x < kWaterTexels; ++x) {
       const double px = (x + 0.5) / kWaterTexels * kTile, pz = (y + 0.5) / kWaterTexels * kTile;
-      texels[static_cast<size_t>(y * kWaterTexels + x)] =
-          glm::vec4(float(-amplitude * k * std::sin(k * px) * std::cos(k * pz)),
-                    float(-amplitude * k * std::cos(k * px) * std::sin(k * pz)),
-                    float(amplitude * std::cos(k * px) * std::cos(k * pz)), 1.0f);
+      const glm::vec4 texel(float(-amplitude * k * std::sin(k * px) * std::cos(k * pz)),
+                            float(-amplitude * k * std::cos(k * px) * std::sin(k * pz)),
+                            float(amplitude * std::cos(k * px) * std::cos(k * pz)), 1.0f);
+      for (int c = 0; c < kCascades; ++c)  // the same sea in every cascade
+        texels[c * perCascade + static_cast<size_t>(y * kWaterTexels + x)] = texel;
     }
   }
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
-  int levels = 1;
-  for (int s = kWaterTexels; s > 1; s >>= 1) ++levels;
-  glTextureStorage3D(t, levels, GL_RGBA32F, kWaterTexels, kWaterTexels, kCascades);
-  for (int c = 0; c < kCascades; ++c)
-    glTextureSubImage3D(t, 0, 0, 0, c, kWaterTexels, kWaterTexels, 1, GL_RGBA, GL_FLOAT,
-                        texels.data());
-  glGenerateTextureMipmap(t);
-  return t;
+  return postfxtest::makeWaterTextureFromTexels(kWaterTexels, texels);
 }
 
 struct Light {
