@@ -6,8 +6,8 @@
 #   tests/identical_renders.sh render BUILD/sample_app/ocean_sample DIR   # before, then after
 #   tests/identical_renders.sh compare DIR_BEFORE DIR_AFTER              # exit 1 on any change
 #
-# compare reads both through OpenImageIO (oiiotool) and prints each frame's largest absolute
-# difference; a change passes only where every frame's is 0.
+# compare reads both through OpenImageIO (oiiotool, Debian's openimageio-tools) and prints each
+# frame's largest absolute difference; a change passes only where every frame's is 0.
 set -euo pipefail
 
 usage() {
@@ -50,6 +50,10 @@ render_all() {
 
 compare_all() {
   local a=$1 b=$2 failed=0 count=0
+  if ! command -v oiiotool > /dev/null; then
+    echo "compare needs oiiotool (Debian: apt-get install openimageio-tools)" >&2
+    exit 2
+  fi
   for fa in "$a"/*.exr; do
     local name
     name=$(basename "$fa")
