@@ -17,22 +17,21 @@ KAPPA = 0.25  # 1 - 1/n: landing offset per metre of depth and unit slope, sun o
 
 
 def sea(rng, X, Z, kmin, kmax, slope_rms, count):
-    """A sum of `count` waves with wavenumbers in [kmin, kmax], whole periods per tile."""
-    h, gx, gz = (np.zeros((N, N)) for _ in range(3))
+    """The slopes of `count` waves with wavenumbers in [kmin, kmax], whole periods per tile."""
+    gx, gz = np.zeros((N, N)), np.zeros((N, N))
     for _ in range(count):
         while True:
-            m = rng.integers(-int(kmax * L / 6.283), int(kmax * L / 6.283) + 1, 2)
+            m = rng.integers(-int(kmax * L / 6.283), int(kmax * L / 6.283) + 1, 2)  # cycles
             k = 2 * np.pi / L * m
             kl = np.hypot(*k)
             if kmin <= kl <= kmax:
                 break
         a, phase = 1.0 / kl, rng.uniform(0, 2 * np.pi)
         theta = k[0] * X + k[1] * Z + phase
-        h += a * np.cos(theta)
         gx -= a * k[0] * np.sin(theta)
         gz -= a * k[1] * np.sin(theta)
     scale = slope_rms / np.sqrt(np.mean(gx**2 + gz**2))
-    return h * scale, gx * scale, gz * scale
+    return gx * scale, gz * scale
 
 
 def main():
@@ -40,8 +39,8 @@ def main():
     rng = np.random.default_rng(1)
     x = (np.arange(N) + 0.5) / N * L
     X, Z = np.meshgrid(x, x, indexing="xy")
-    _, cx, cz = sea(rng, X, Z, 2 * np.pi / 16, 2 * np.pi / 2.0, 0.08, 24)
-    _, fx, fz = sea(rng, X, Z, 2 * np.pi / 2.0, 2 * np.pi / 0.1, 0.10, 60)
+    cx, cz = sea(rng, X, Z, 2 * np.pi / 16, 2 * np.pi / 2.0, 0.08, 24)
+    fx, fz = sea(rng, X, Z, 2 * np.pi / 2.0, 2 * np.pi / 0.1, 0.10, 60)
     flat = (N / B) ** 2
 
     def binned(ox, oz, weight=None):

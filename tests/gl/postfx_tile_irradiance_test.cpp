@@ -14,6 +14,7 @@
 
 #include "core/frame_geometry.h"
 #include "core/shared_math.h"
+#include "flat_seabed_settings.h"
 #include "gl_fixture.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
@@ -107,16 +108,10 @@ TEST_F(PostfxTileIrradianceTest, AgreesWithTracedLightOnAFlatSeabed) {
   auto ocean = postfxtest::makeSmallOcean(3.0);
   ASSERT_TRUE(ocean);
   for (double depth : {3.0, 12.0}) {
-    ocean::validation::FlatSeabedSettings settings;
-    settings.width = 128;
-    settings.height = 96;
-    settings.binPixels = 4;
-    settings.referenceError = 0.05;
-    settings.receiverDepth = depth;
     const postfx::FrameDesc frame = postfxtest::flatSeabedFrame(*ocean, 60.0);
     ocean::validation::FlatSeabedComparison seabed;
     std::string error;
-    ASSERT_TRUE(seabed.prepare(frame, settings, error)) << error;
+    ASSERT_TRUE(seabed.prepare(frame, postfxtest::flatSeabedTestSettings(depth), error)) << error;
     ASSERT_TRUE(seabed.reference().converged);
 
     postfx::CreateDesc create;

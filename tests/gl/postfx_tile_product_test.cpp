@@ -50,7 +50,6 @@ GLuint makeFocusingCascades() {
 struct Light {
   bool finite = true;
   double maxRaw = 0.0;  // the raw factor's largest value over the floor
-  double maxTarget = 0.0;
   int floorPixels = 0;
 };
 
@@ -96,7 +95,6 @@ class PostfxTileProductTest : public testsupport::GlTest {
         if (scene.truth(x, y).hit != Hit::Floor) continue;
         ++l.floorPixels;
         l.maxRaw = std::max(l.maxRaw, double(raw[i]));
-        l.maxTarget = std::max(l.maxTarget, double(std::max({t.r, t.g, t.b})));
       }
     }
     return l;
