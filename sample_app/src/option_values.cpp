@@ -199,6 +199,13 @@ const std::array kValueOptions{
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 64, 1024, o.causticsGrid, "--caustics-grid", error);
                 }},
+    ValueOption{"--caustics-window", "M",
+                "wavefront area ratio's window side around the camera (m), 1..1000 (default 32)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return doubleIn(text, 1.0, 1000.0, o.causticsWindow, "--caustics-window",
+                                  "a side in metres in [1, 1000]", error);
+                }},
     ValueOption{"--caustics-lookup", "RES",
                 "tile model's lookups at full or half (default) resolution", false,
                 [](std::string_view text, Options& o, std::string& error) {

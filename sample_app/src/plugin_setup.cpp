@@ -104,6 +104,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   if (options.physicalCaustics) {
     setup->caustics_.model = postfx::CausticsModel::WavefrontAreaRatio;
     setup->caustics_.gridResolution = options.causticsGrid;
+    setup->caustics_.windowSize = float(options.causticsWindow);
   }
   if (options.rayDeviationCaustics) setup->caustics_.model = postfx::CausticsModel::RayDeviation;
   PluginSetup* self = setup.get();

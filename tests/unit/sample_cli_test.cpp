@@ -141,6 +141,8 @@ TEST_F(SampleCli, UnknownGodRayResolution) {
   expectRejected("--tile-resolution 100", "--tile-resolution must be a power of two");
   expectRejected("--tile-resolution 2048", "--tile-resolution");
   expectRejected("--max-receiver-depth 0.1", "--max-receiver-depth");
+  expectRejected("--caustics-window 0.5", "--caustics-window");
+  expectRejected("--caustics-window nan", "--caustics-window");
   expectRejected("--max-receiver-depth nan", "--max-receiver-depth");
   expectRejected("--tile-depth-layers 6", "--tile-depth-layers must be 4 or 8");
 }

@@ -17,7 +17,9 @@ enum class CausticsModel {
   RayDeviation,
   // Caustic irradiance relative to flat water from the wavefront area ratio: every frame a grid
   // over the water is refracted onto depthLayers receiver depths and its triangles added up
-  // (brightness = beam area / refracted area). Needs Feature::WavefrontAreaRatio. Covers a
+  // (brightness = beam area / refracted area), then each depth blurred by the landing spread of
+  // the slopes finer than the grid's cells and of the sun's disc (tileUnresolvedSpread,
+  // Sun::angularDiameterDegrees). Needs Feature::WavefrontAreaRatio. Covers a
   // camera-centred square (windowSize); across its outer eighth and beyond it, the light fades
   // to the TileIrradiance field (same units, computed too), so there is no edge.
   WavefrontAreaRatio,
@@ -119,7 +121,10 @@ struct CausticsSettings {
   float tileMinModulation = 0.25f;
   // Soften each cascade's field, per depth layer, by the landing spread of the slopes its points
   // do not resolve (measured from the water texture every frame), as such ripples diffuse the
-  // light. Off: the points' pattern alone, sharper than the real light, with rings.
+  // light. Off: the points' pattern alone, sharper than the real light, with rings. Also the
+  // WavefrontAreaRatio window's, for the slopes inside its grid's cells: right for a sea of
+  // many ripples (an FFT ocean), too soft for a few coherent ones its grid does not resolve
+  // (docs/measurements.md, "The wavefront area ratio's landing spread").
   bool tileUnresolvedSpread = true;
   // Resolution of the lookups (CausticsLookupResolution). Half: a quarter of the lookups plus a
   // 4-tap upsample, 4 bytes per reduced texel (0.9 MB at 1280x720).
@@ -127,9 +132,10 @@ struct CausticsSettings {
 
   // --- WavefrontAreaRatio only; validated always ---
   // Surface grid vertices and irradiance texels per side, kGridResolutionRange; cost grows with
-  // its square, ripples finer than windowSize * 1.25 / gridResolution are smoothed away. GPU
-  // memory at 4 depthLayers: 0.85 / 3.36 / 13.4 / 53.4 MiB at 128 / 256 / 512 / 1024 (about
-  // (depthLayers * 16/3 + 32) bytes per grid point), plus the tile field's.
+  // its square, ripples finer than windowSize * 1.25 / gridResolution are smoothed away (their
+  // light is spread instead, tileUnresolvedSpread). GPU memory at 4 depthLayers: 1.1 / 4.4 /
+  // 17.4 / 69.4 MiB at 128 / 256 / 512 / 1024 (about (depthLayers * 28/3 + 32) bytes per grid
+  // point; 16/3 instead of 28/3 with neither spread nor sun disc), plus the tile field's.
   int gridResolution = 256;
   // Side of the square receiver window around the camera (m), kWindowSizeRange; snapped to
   // whole texels in world space so the pattern does not swim when the camera moves.

@@ -14,11 +14,6 @@
 namespace postfx::detail {
 namespace {
 
-// The spread statistics: tile_irradiance_spread_statistics.glsl's TILE_SPREAD_PARTS partial
-// sums (a vec4) per cascade.
-constexpr std::uint64_t kSpreadStatisticsBytes =
-    std::uint64_t(kMaxCascades) * shared::TILE_SPREAD_PARTS * 16;
-
 // The spread's blur buffer: two float copies of every slot's depth layers (0 without it).
 std::uint64_t spreadBlurBytes(const TileIrradianceLayout& l) {
   return l.spread ? 2 * std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
@@ -31,6 +26,11 @@ float tileClamp(const FrameDesc& frame) {
 }
 
 }  // namespace
+
+// TILE_SPREAD_PARTS partial sums (a vec4) per cascade.
+std::uint64_t tileSpreadStatisticsBytes() {
+  return std::uint64_t(kMaxCascades) * shared::TILE_SPREAD_PARTS * 16;
+}
 
 std::string tileVariantDefines(int groups, int cascadeMask, bool physical) {
   std::string d =
@@ -86,7 +86,7 @@ std::uint64_t tileIrradianceBytes(const TileIrradianceLayout& l) {
   const std::uint64_t accumulators = std::uint64_t(l.resolution) * std::uint64_t(l.resolution) *
                                      std::uint64_t(std::max(l.cascadeCount, 1)) *
                                      std::uint64_t(l.layers);
-  const std::uint64_t spread = l.spread ? spreadBlurBytes(l) + kSpreadStatisticsBytes : 0;
+  const std::uint64_t spread = l.spread ? spreadBlurBytes(l) + tileSpreadStatisticsBytes() : 0;
   return texels * arrayLayers * 8 + accumulators * 4 + spread;
 }
 
@@ -156,8 +156,8 @@ Result TileIrradiancePass::reserve(const FrameDesc& frame, std::string& error) {
       blur_ = glkit::createBuffer(blurBytes, nullptr, GL_DYNAMIC_STORAGE_BIT,
                                   "postfx.tile_irradiance.spread_blur");
       spreadStatisticsBuffer_ =
-          glkit::createBuffer(GLsizeiptr(kSpreadStatisticsBytes), nullptr, GL_DYNAMIC_STORAGE_BIT,
-                              "postfx.tile_irradiance.spread_statistics");
+          glkit::createBuffer(GLsizeiptr(tileSpreadStatisticsBytes()), nullptr,
+                              GL_DYNAMIC_STORAGE_BIT, "postfx.tile_irradiance.spread_statistics");
     }
     blurBytes_ = blurBytes;
   }
@@ -262,7 +262,8 @@ void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths)
   const GLuint statistics = spreadStatistics_.id();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_SPREAD,
                    spreadStatisticsBuffer_.id());
-  glProgramUniform1i(statistics, 0, l.resolution * frame.caustics.tilePointsPerTexel);
+  const float points = static_cast<float>(l.resolution * frame.caustics.tilePointsPerTexel);
+  glProgramUniform4f(statistics, 0, points, points, points, points);
   glUseProgram(statistics);
   glDispatchCompute(static_cast<GLuint>(cascades), static_cast<GLuint>(shared::TILE_SPREAD_PARTS),
                     1);

@@ -23,6 +23,10 @@ namespace postfx::detail {
 
 inline constexpr int kTileLayersPerTexel = 4;
 
+// The slope statistics' buffer (tile_irradiance_spread_statistics.glsl's partial sums, every
+// cascade), which the wavefront area ratio's spread fills too.
+std::uint64_t tileSpreadStatisticsBytes();
+
 struct TileIrradianceLayout {
   int resolution = 0;  // irradiance texels per tile side
   int layers = 0;      // depth layers per cascade (a multiple of 4)

@@ -7,6 +7,7 @@
 
 #include "core/frame_geometry.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
 
@@ -41,6 +42,7 @@ WavefrontAreaRatioLayout wavefrontAreaRatioLayout(const FrameDesc& frame) {
     const glm::dvec2 start = windowCentre - drift * l.depth[k] - 0.5 * gridSpan;
     l.gridOrigin[k] = glm::floor(start / l.cell) * l.cell;
   }
+  l.spread = s.tileUnresolvedSpread || frame.sun.angularDiameterDegrees > 0.0f;
   return l;
 }
 
@@ -48,7 +50,7 @@ int wavefrontAreaRatioMipLevels(int resolution) {
   return std::min(glkit::mipLevelCount(resolution), shared::IRRADIANCE_MIP_LEVELS + 1);
 }
 
-std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers) {
+std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers, bool spread) {
   std::uint64_t texels = 0;
   for (int level = 0; level < wavefrontAreaRatioMipLevels(gridResolution); ++level) {
     const std::uint64_t side = std::max(gridResolution >> level, 1);
@@ -56,7 +58,10 @@ std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers) {
   }
   const std::uint64_t points =
       std::uint64_t(gridResolution + 2) * std::uint64_t(gridResolution + 2);
-  return texels * std::uint64_t(depthLayers) * 4 + points * 2 * 16;
+  const std::uint64_t rows =
+      spread ? std::uint64_t(gridResolution) * std::uint64_t(gridResolution) : 0;
+  return (texels + rows) * std::uint64_t(depthLayers) * 4 + points * 2 * 16 +
+         (spread ? tileSpreadStatisticsBytes() : 0);
 }
 
 }  // namespace postfx::detail

@@ -27,6 +27,9 @@ struct WavefrontAreaRatioLayout {
   int cells = 0;                 // grid cells per side (resolution + 1: snapping headroom)
   double depth[kMaxWavefrontAreaRatioLayers] = {};
   glm::dvec2 gridOrigin[kMaxWavefrontAreaRatioLayers] = {};  // world xz of grid vertex (0, 0)
+  // The layers are blurred by the landing spread of the slopes finer than a cell
+  // (CausticsSettings::tileUnresolvedSpread) and of the sun's disc (Sun::angularDiameterDegrees).
+  bool spread = false;
 };
 
 // Depth of layer k of `layers` (m below the level).
@@ -38,8 +41,9 @@ WavefrontAreaRatioLayout wavefrontAreaRatioLayout(const FrameDesc& frame);
 // Mip levels of the irradiance layers (the base and up to shared::IRRADIANCE_MIP_LEVELS more).
 int wavefrontAreaRatioMipLevels(int resolution);
 // GPU memory the pass allocates for `gridResolution` and `depthLayers`: the R32F layers with
-// their mip levels, and the grid points (two vec4 per point, (gridResolution + 2)^2 points).
+// their mip levels, and the grid points (two vec4 per point, (gridResolution + 2)^2 points);
+// with `spread`, one more R32F level 0 per layer and the slope statistics.
 // The memory estimate and WavefrontAreaRatioPass::allocatedBytes() must agree (a test checks).
-std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers);
+std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers, bool spread);
 
 }  // namespace postfx::detail

@@ -4,6 +4,8 @@
 // draw rasterises the refracted triangles, blended additively into a layer of a plugin-owned
 // GL_R32F 2D array; a point draw deposits the flux of the triangles too small to rasterise
 // without noise (under half a texel), split over its four nearest texels by bilinear weights.
+// Then the landing spread (wavefront_area_ratio_spread.comp): each layer blurred by what the
+// grid cannot carry, the slopes inside its cells and the sun's disc, as the tile field is.
 // Only built with Feature::WavefrontAreaRatio.
 // Why a rasterised mesh rather than splatting photons: each triangle carries exactly the flux
 // of its piece of the beam, so the result is noise-free at any grid size and folds sum for free
@@ -41,8 +43,8 @@ class WavefrontAreaRatioPass {
   Result reserve(const FrameDesc& frame, std::string& error);
   // Records the pass: clears and fills every layer. Expects the caustics pass's fixed-function
   // state (blend ONE, ONE on draw buffer 0, no cull/scissor) and the water texture bound on
-  // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO binding 0,
-  // texture unit POSTFX_UNIT_GRID_POINTS, and enables GL_PROGRAM_POINT_SIZE.
+  // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO bindings 0 and
+  // 2, image unit 0, texture unit POSTFX_UNIT_GRID_POINTS, and enables GL_PROGRAM_POINT_SIZE.
   void draw(const FrameDesc& frame, const ValidatedTextures& textures);
 
   GLuint texture() const { return texture_.id(); }
@@ -51,14 +53,18 @@ class WavefrontAreaRatioPass {
   std::uint64_t allocatedBytes() const;
 
  private:
-  void ensureTexture(int resolution, int layers);
+  void ensureTexture(int resolution, int layers, bool spread);
   void ensureGridPoints(int pointsPerSide);
+  void drawSpread(const FrameDesc& frame, const ValidatedTextures& textures);
 
-  glkit::Program vertices_, triangles_, points_;
+  glkit::Program vertices_, triangles_, points_, spreadStatistics_, spread_;
   glkit::Framebuffer framebuffer_;
   glkit::VertexArray vertexArray_;
   glkit::Texture texture_;
   int textureResolution_ = 0, textureLayers_ = 0;
+  // The spread's rows (level 0 only) and the slope statistics of the grid's cells.
+  glkit::Texture spreadRows_;
+  glkit::Buffer spreadStatisticsBuffer_;
   glkit::Buffer gridPoints_;
   glkit::Texture gridPointView_;  // the grid points' RGBA32F buffer-texture view
   int gridPointsPerSide_ = 0;

@@ -1,7 +1,8 @@
 #version 450 core
 // Tile irradiance, unresolved-slope spread, step 1 of 3 (postfx/seabed_caustics/postfx_tile_irradiance.h): the
 // slope statistics of every cascade, read from the water texture itself (so any host's water,
-// not only this project's ocean, gets its own spread). Workgroup (c, p) samples every
+// not only this project's ocean, gets its own spread). The wavefront area ratio's spread
+// (wavefront_area_ratio_spread.comp) runs it too, with its grid's cells. Workgroup (c, p) samples every
 // TILE_SPREAD_PARTS-th of TILE_SPREAD_SAMPLE_CELLS^2 point cells of cascade c, each on up to
 // TILE_SPREAD_MAX_CELL_TEXELS^2 of its level-0 texels, and writes its partial sums; the blur
 // (tile_irradiance_spread_box.comp) adds them up.
@@ -26,7 +27,8 @@ layout(std430, binding = POSTFX_STORAGE_TILE_SPREAD) writeonly buffer TileSpread
   TileSpreadPartial partials[];  // cascade * TILE_SPREAD_PARTS + part
 };
 
-layout(location = 0) uniform int points;  // per tile side
+// Point cells per tile side, per cascade (at least 1; fractional: the cells need not tile it).
+layout(location = 0) uniform vec4 cellsPerTile;
 
 const int kThreads = 256;
 shared vec4 cellMoments[kThreads];  // xyz: second moments (xx, xz, zz) about each cell's mean; w: cells
@@ -41,11 +43,12 @@ void main() {
 #endif
   // Water texels per point cell along each axis (below 1: the points are finer than the water,
   // which then has nothing inside a cell to resolve).
-  vec2 cellTexels = vec2(size) / float(points);
+  float points = max(cellsPerTile[c], 1.0);
+  vec2 cellTexels = vec2(size) / points;
   ivec2 perCell = clamp(ivec2(round(cellTexels)), ivec2(1), ivec2(TILE_SPREAD_MAX_CELL_TEXELS));
   vec2 texelStep = cellTexels / vec2(perCell);
-  int cellsPerSide = min(points, TILE_SPREAD_SAMPLE_CELLS);
-  int cellStride = points / cellsPerSide;
+  int cellsPerSide = min(int(points), TILE_SPREAD_SAMPLE_CELLS);
+  int cellStride = int(points) / cellsPerSide;
   int cells = cellsPerSide * cellsPerSide;
   vec4 moments = vec4(0.0);
   for (int i = tid * TILE_SPREAD_PARTS + part; i < cells; i += kThreads * TILE_SPREAD_PARTS) {
