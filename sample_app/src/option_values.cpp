@@ -206,6 +206,11 @@ const std::array kValueOptions{
                   return doubleIn(text, 1.0, 1000.0, o.causticsWindow, "--caustics-window",
                                   "a side in metres in [1, 1000]", error);
                 }},
+    ValueOption{"--caustics-layers", "N",
+                "wavefront area ratio's receiver depth layers, 1..8 (default 4)", false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return intIn(text, 1, 8, o.causticsLayers, "--caustics-layers", error);
+                }},
     ValueOption{"--caustics-lookup", "RES",
                 "tile model's lookups at full or half (default) resolution", false,
                 [](std::string_view text, Options& o, std::string& error) {

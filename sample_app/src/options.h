@@ -48,6 +48,7 @@ struct Options {
   bool rayDeviationCaustics = false;  // the ray-deviation model instead of the tile irradiance
   int causticsGrid = 256;
   double causticsWindow = 32.0;  // its window's side (CausticsSettings::windowSize, m)
+  int causticsLayers = 4;        // its receiver depth layers (CausticsSettings::depthLayers)
   // World-axis tri-planar lookup on steep surfaces (Feature::TriplanarWalls).
   bool triplanarWalls = false;
   // Tile-irradiance lookup resolution divisor: 1 full, 2 half; 0 keeps the plugin's default.

@@ -105,6 +105,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     setup->caustics_.model = postfx::CausticsModel::WavefrontAreaRatio;
     setup->caustics_.gridResolution = options.causticsGrid;
     setup->caustics_.windowSize = float(options.causticsWindow);
+    setup->caustics_.depthLayers = options.causticsLayers;
   }
   if (options.rayDeviationCaustics) setup->caustics_.model = postfx::CausticsModel::RayDeviation;
   PluginSetup* self = setup.get();

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -431,6 +432,87 @@ TEST_F(PostfxWavefrontAreaRatioTest, RestoresStateAndTimesItsPass) {
   EXPECT_GT(stats.pass(postfx::Pass::WavefrontAreaRatio).lastMs, 0.0);
   EXPECT_FALSE(stats.pass(postfx::Pass::WavefrontAreaRatio).skipped);
   glDeleteTextures(1, &water);
+}
+
+// The landing spread (the slopes inside the grid's cells and the sun's disc) blurs each layer:
+// the mean light is kept, the contrast only falls, and the deeper layer loses more of it (the
+// spread grows with depth). Compared inside the fade band, where no tap reaches the edge.
+TEST_F(PostfxWavefrontAreaRatioTest, LandingSpreadKeepsTheMeanAndSoftensDeeperLayersMore) {
+  auto ocean = postfxtest::makeSmallOcean(2.0);
+  ASSERT_TRUE(ocean);
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
+  auto fx = postfxtest::makeContext(kPhysical);
+  auto layers = [&](bool unresolved, float sunDegrees,
+                    postfx::testing::CausticIrradianceInfo& info) {
+    postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
+    postfxtest::useOcean(frame, *ocean);
+    postfxtest::useWavefrontAreaRatio(frame, 128, 2, 8.0f);
+    frame.caustics.tileUnresolvedSpread = unresolved;
+    frame.sun.angularDiameterDegrees = sunDegrees;
+    EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+    info = postfx::testing::causticIrradiance(*fx);
+    return postfxtest::readIrradiance(info);
+  };
+  postfx::testing::CausticIrradianceInfo info;
+  const std::vector<float> sharp = layers(false, 0.0f, info);
+  const std::vector<float> spread = layers(true, 0.53f, info);
+  const int n = info.resolution;
+  const int band = static_cast<int>(float(n) * postfx::shared::IRRADIANCE_FADE_BAND);
+  auto moments = [&](const std::vector<float>& v, int k, double& mean, double& contrast) {
+    double sum = 0.0, squares = 0.0;
+    int count = 0;
+    for (int j = band; j < n - band; ++j)
+      for (int i = band; i < n - band; ++i) {
+        const double e = v[(static_cast<size_t>(k) * n + j) * n + i];
+        sum += e;
+        squares += e * e;
+        ++count;
+      }
+    mean = sum / count;
+    contrast = std::sqrt(std::max(squares / count - mean * mean, 0.0)) / mean;
+  };
+  double softening[2] = {};
+  for (int k = 0; k < info.layers; ++k) {
+    double sharpMean, sharpContrast, spreadMean, spreadContrast;
+    moments(sharp, k, sharpMean, sharpContrast);
+    moments(spread, k, spreadMean, spreadContrast);
+    std::printf("layer %d: mean %.4f -> %.4f, contrast %.3f -> %.3f\n", k, sharpMean, spreadMean,
+                sharpContrast, spreadContrast);
+    EXPECT_NEAR(spreadMean, sharpMean, 0.01 * sharpMean) << "layer " << k;
+    EXPECT_LT(spreadContrast, sharpContrast) << "layer " << k;
+    softening[k] = spreadContrast / sharpContrast;
+  }
+  EXPECT_LT(softening[1], softening[0]) << "the deeper layer is spread more";
+  for (float e : spread) ASSERT_TRUE(std::isfinite(e) && e >= 0.0f);
+}
+
+// Every pass of a WavefrontAreaRatio frame reports a time within the wall-clock time of the
+// dispatches that produced it: a query whose start was never written reads as the GPU clock's
+// absolute time (llvmpipe read 11,000 s for the tile field's pass with the spread dispatched
+// after the window's last layer was detached).
+TEST_F(PostfxWavefrontAreaRatioTest, EveryPassTimeIsWithinTheFramesWallTime) {
+  auto ocean = postfxtest::makeSmallOcean(2.0);
+  ASSERT_TRUE(ocean);
+  postfxtest::Scene scene(postfxtest::wavefrontAreaRatioScene(6.0));
+  auto fx = postfxtest::makeContext(kPhysical | postfx::testing::BenchmarkFloor);
+  postfx::FrameDesc frame = postfxtest::makeFrame(scene, 0, 3);
+  postfxtest::useOcean(frame, *ocean);
+  postfxtest::useWavefrontAreaRatio(frame, 128, 2, 8.0f);
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < postfx::kTimerRingDepth + 2; ++i) {
+    ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+    glFinish();
+  }
+  const double wallMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const postfx::FrameStats& s = postfx::stats(*fx);
+  ASSERT_GE(s.framesResolved, 1u);
+  for (postfx::Pass p : {postfx::Pass::WavefrontAreaRatio, postfx::Pass::TileIrradiance,
+                         postfx::Pass::Caustics, postfx::Pass::Floor}) {
+    EXPECT_FALSE(s.pass(p).skipped) << postfx::toString(p);
+    EXPECT_GT(s.pass(p).lastMs, 0.0) << postfx::toString(p);
+    EXPECT_LT(s.pass(p).lastMs, wallMs) << postfx::toString(p);
+  }
 }
 
 }  // namespace

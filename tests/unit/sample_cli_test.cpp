@@ -143,6 +143,8 @@ TEST_F(SampleCli, UnknownGodRayResolution) {
   expectRejected("--max-receiver-depth 0.1", "--max-receiver-depth");
   expectRejected("--caustics-window 0.5", "--caustics-window");
   expectRejected("--caustics-window nan", "--caustics-window");
+  expectRejected("--caustics-layers 9", "--caustics-layers");
+  expectRejected("--caustics-layers 0", "--caustics-layers");
   expectRejected("--max-receiver-depth nan", "--max-receiver-depth");
   expectRejected("--tile-depth-layers 6", "--tile-depth-layers must be 4 or 8");
 }
