@@ -94,6 +94,19 @@ bool measure(const ocean::validation::FlatSeabedComparison& seabed,
   return true;
 }
 
+// The wavefront area ratio on a 16 m window at `grid`, with the landing spread of the slopes
+// inside its cells (`spread`) and with the sun's disc alone (`disc`).
+bool measureWindow(const ocean::validation::FlatSeabedComparison& seabed, int grid,
+                   Agreement& spread, Agreement& disc, std::string& error) {
+  postfx::CausticsSettings joint;
+  joint.model = postfx::CausticsModel::WavefrontAreaRatio;
+  joint.gridResolution = grid;
+  joint.windowSize = 16.0f;
+  if (!measure(seabed, joint, spread, error)) return false;
+  joint.tileUnresolvedSpread = false;
+  return measure(seabed, joint, disc, error);
+}
+
 class PostfxHostWaterTest : public testsupport::GlTest {};
 
 TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
@@ -139,28 +152,23 @@ TEST_F(PostfxHostWaterTest, GerstnerSeaPatternAgainstTracedLight) {
     }
     // The wavefront area ratio on grids too coarse for the ripples (cells of 16 m * 1.25 /
     // gridResolution smooth them away), with the landing spread of the slopes inside its cells.
-    // The spread is the mean light of ripples that scatter it; these are a few coherent
-    // sinusoids, which at 3 and 8 m still draw (or warp) patterns of their own, and the
-    // spread lowers the agreement here: grid 128 at 8 m 0.792 with it, 0.829 without (contrast
-    // 0.34 / 0.55, the trace's 0.45); at 3 m 0.617 / 0.694. (On the FFT ocean of `seabed`,
-    // whose ripples are many, it raises it: docs/measurements.md.) Asserted: the spread only
-    // softens, keeps the flux, and is a regression floor.
+    // The spread is the mean light of ripples that scatter it, past their folds; these are a
+    // few coherent sinusoids, which at 8 m still draw (or warp) patterns of their own, and the
+    // spread lowers the agreement: grid 128 at 8 m 0.796 with it, 0.829 without (contrast 0.34
+    // / 0.55, the trace's 0.45); at 3 m 0.667 / 0.694, and on grid 64 at 3 m the ripples have
+    // not folded: no spread. (On the FFT ocean of `seabed`, whose ripples are many, it raises
+    // it: docs/measurements.md.) Asserted: the spread only softens, keeps the flux, and a
+    // regression floor.
     for (int grid : {64, 128}) {
-      postfx::CausticsSettings joint;
-      joint.model = postfx::CausticsModel::WavefrontAreaRatio;
-      joint.gridResolution = grid;
-      joint.windowSize = 16.0f;
       Agreement spread, disc;
-      ASSERT_TRUE(measure(seabed, joint, spread, error)) << error;
-      joint.tileUnresolvedSpread = false;
-      ASSERT_TRUE(measure(seabed, joint, disc, error)) << error;
+      ASSERT_TRUE(measureWindow(seabed, grid, spread, disc, error)) << error;
       std::printf(
           "Gerstner sea, sun %.0f deg, %.0f m, wavefront area ratio grid %d: pattern correlation "
           "%.3f with the unresolved slopes' spread, %.3f with the sun's disc alone; contrast "
           "%.3f / %.3f (trace %.3f); mean / traced %.4f / %.4f\n",
           c.elevation, c.depth, grid, spread.stats.correlation, disc.stats.correlation,
           spread.contrast, disc.contrast, spread.traceContrast, spread.meanRatio, disc.meanRatio);
-      EXPECT_LT(spread.contrast, disc.contrast) << "the spread only softens";
+      EXPECT_LE(spread.contrast, disc.contrast) << "the spread only softens";
       EXPECT_NEAR(spread.meanRatio, disc.meanRatio, 0.005) << "the spread keeps the flux";
       EXPECT_GT(spread.stats.correlation, c.depth > 5.0 ? 0.7 : 0.3) << grid;
     }
@@ -212,14 +220,8 @@ TEST_F(PostfxHostWaterTest, TwoCascadeSeaPatternAgainstTracedLight) {
   // leaves out: grid 512 (3.1 cm cells) measured 0.956 (contrast 0.588). Its cells resolve every
   // wave of this sea (the shortest is 0.63 m), so the landing spread of the slopes inside them
   // (the waves' curvature across 4 texels) changes next to nothing.
-  postfx::CausticsSettings joint;
-  joint.model = postfx::CausticsModel::WavefrontAreaRatio;
-  joint.gridResolution = 512;
-  joint.windowSize = 16.0f;
   Agreement spread, disc;
-  ASSERT_TRUE(measure(seabed, joint, spread, error)) << error;
-  joint.tileUnresolvedSpread = false;
-  ASSERT_TRUE(measure(seabed, joint, disc, error)) << error;
+  ASSERT_TRUE(measureWindow(seabed, 512, spread, disc, error)) << error;
   std::printf(
       "two-cascade sea, wavefront area ratio grid 512: pattern correlation %.3f (%.3f with the "
       "sun's disc alone), relative RMSE %.3f, contrast %.3f (trace %.3f), mean / traced %.4f\n",

@@ -435,8 +435,10 @@ TEST_F(PostfxWavefrontAreaRatioTest, RestoresStateAndTimesItsPass) {
 }
 
 // The landing spread (the slopes inside the grid's cells and the sun's disc) blurs each layer:
-// the mean light is kept, the contrast only falls, and the deeper layer loses more of it (the
-// spread grows with depth). Compared inside the fade band, where no tap reaches the edge.
+// the mean light is kept, the contrast never rises, and the deeper layer loses more of it (the
+// spread grows with depth; at 2 m these cells' ripples have not folded and the disc's spread is
+// under a hundredth of a texel, so that layer is left as it is: 0.318 both, 0.923 -> 0.722 at
+// 8 m). Compared inside the fade band, where no tap reaches the edge.
 TEST_F(PostfxWavefrontAreaRatioTest, LandingSpreadKeepsTheMeanAndSoftensDeeperLayersMore) {
   auto ocean = postfxtest::makeSmallOcean(2.0);
   ASSERT_TRUE(ocean);
@@ -479,7 +481,7 @@ TEST_F(PostfxWavefrontAreaRatioTest, LandingSpreadKeepsTheMeanAndSoftensDeeperLa
     std::printf("layer %d: mean %.4f -> %.4f, contrast %.3f -> %.3f\n", k, sharpMean, spreadMean,
                 sharpContrast, spreadContrast);
     EXPECT_NEAR(spreadMean, sharpMean, 0.01 * sharpMean) << "layer " << k;
-    EXPECT_LT(spreadContrast, sharpContrast) << "layer " << k;
+    EXPECT_LE(spreadContrast, sharpContrast) << "layer " << k;
     softening[k] = spreadContrast / sharpContrast;
   }
   EXPECT_LT(softening[1], softening[0]) << "the deeper layer is spread more";

@@ -32,6 +32,21 @@ std::uint64_t tileSpreadStatisticsBytes() {
   return std::uint64_t(kMaxCascades) * shared::TILE_SPREAD_PARTS * 16;
 }
 
+void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
+                                 const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
+                                 int cascades) {
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const glm::vec4 drift(landingDriftJacobian(sun, frame.water.ior));
+  const glm::vec3 disc(sunDiscLandingCovariance(
+      sun, frame.water.ior, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees))));
+  glProgramUniform4iv(program, 10, 1, &slotCascade.x);
+  glProgramUniform4fv(program, 11, 1, &texelsPerMetre.x);
+  glProgramUniform4fv(program, 12, 1, &drift.x);
+  glProgramUniform4f(program, 13, disc.x, disc.y, disc.z,
+                     frame.caustics.tileUnresolvedSpread ? 1.0f : 0.0f);
+  glProgramUniform1i(program, 14, cascades);
+}
+
 std::string tileVariantDefines(int groups, int cascadeMask, bool physical) {
   std::string d =
       physical ? "" : "#undef POSTFX_WAVEFRONT_AREA_RATIO\n#define POSTFX_WAVEFRONT_AREA_RATIO 0\n";
@@ -277,18 +292,9 @@ void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths)
     slotCascade[l.slot[c]] = c;
     texelsPerMetre[l.slot[c]] = static_cast<float>(l.resolution / water.tileSize[c]);
   }
-  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
-  const glm::vec4 drift(landingDriftJacobian(sun, water.ior));
-  const glm::vec3 disc(sunDiscLandingCovariance(
-      sun, water.ior, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees))));
   const GLuint box = spreadBox_.id();
   glProgramUniform1fv(box, 1, shared::TILE_MAX_LAYERS, depths);
-  glProgramUniform4iv(box, 10, 1, &slotCascade.x);
-  glProgramUniform4fv(box, 11, 1, &texelsPerMetre.x);
-  glProgramUniform4fv(box, 12, 1, &drift.x);
-  glProgramUniform4f(box, 13, disc.x, disc.y, disc.z,
-                     frame.caustics.tileUnresolvedSpread ? 1.0f : 0.0f);
-  glProgramUniform1i(box, 14, cascades);
+  setSpreadCovarianceUniforms(box, frame, slotCascade, texelsPerMetre, cascades);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_ACCUMULATORS, accumulators_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_BLUR, blur_.id());
   glUseProgram(box);

@@ -26,6 +26,12 @@ inline constexpr int kTileLayersPerTexel = 4;
 // The slope statistics' buffer (tile_irradiance_spread_statistics.glsl's partial sums, every
 // cascade), which the wavefront area ratio's spread fills too.
 std::uint64_t tileSpreadStatisticsBytes();
+// The landing covariance's uniforms of tile_irradiance_spread_statistics.glsl's reader
+// (locations 10 to 14) on `program`: each slot's cascade and texels per metre, the landing drift
+// and the sun disc's covariance of this frame's sun, whether the unresolved slopes spread.
+void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
+                                 const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
+                                 int cascades);
 
 struct TileIrradianceLayout {
   int resolution = 0;  // irradiance texels per tile side

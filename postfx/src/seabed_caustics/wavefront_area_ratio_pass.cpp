@@ -10,7 +10,6 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
-#include "seabed_caustics/caustics_constants.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
@@ -236,20 +235,11 @@ void WavefrontAreaRatioPass::drawSpread(const FrameDesc& frame, const ValidatedT
   float depths[shared::TILE_MAX_LAYERS] = {};
   for (int k = 0; k < l.layers && k < shared::TILE_MAX_LAYERS; ++k)
     depths[k] = static_cast<float>(l.depth[k]);
-  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
-  const glm::vec4 drift(landingDriftJacobian(sun, water.ior));
-  const glm::vec3 disc(sunDiscLandingCovariance(
-      sun, water.ior, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees))));
   const GLuint spread = spread_.id();
-  const glm::ivec4 slotCascade(0);
-  const glm::vec4 texelsPerMetre(static_cast<float>(l.resolution / l.windowSize));
   glProgramUniform1fv(spread, 1, shared::TILE_MAX_LAYERS, depths);
-  glProgramUniform4iv(spread, 10, 1, &slotCascade.x);
-  glProgramUniform4fv(spread, 11, 1, &texelsPerMetre.x);
-  glProgramUniform4fv(spread, 12, 1, &drift.x);
-  glProgramUniform4f(spread, 13, disc.x, disc.y, disc.z,
-                     frame.caustics.tileUnresolvedSpread ? 1.0f : 0.0f);
-  glProgramUniform1i(spread, 14, cascades);
+  glProgramUniform1f(spread, 15, static_cast<float>(l.cell));
+  setSpreadCovarianceUniforms(spread, frame, glm::ivec4(0),
+                              glm::vec4(static_cast<float>(l.resolution / l.windowSize)), cascades);
   glUseProgram(spread);
   glBindSampler(POSTFX_UNIT_TILE_IRRADIANCE, 0);  // texelFetch only; none of the host's
   const GLuint groups = static_cast<GLuint>((l.resolution + 7) / 8);

@@ -22,6 +22,7 @@ layout(binding = POSTFX_IMAGE_TILE_IRRADIANCE, r32f) uniform writeonly image2DAr
 // x: texels per side, y: direction (0 rows, 1 columns), z: layers
 layout(location = 0) uniform ivec4 pass;
 layout(location = 1) uniform float depths[TILE_MAX_LAYERS];  // m below the level
+layout(location = 15) uniform float cellMetres;  // the grid's spacing (m)
 #define TILE_SPREAD_READER 1
 #include "postfx/seabed_caustics/tile_irradiance_spread_statistics.glsl"
 
@@ -29,8 +30,20 @@ void main() {
   ivec3 t = ivec3(gl_GlobalInvocationID);
   int n = pass.x;
   if (t.x >= n || t.y >= n || t.z >= pass.z) return;
-  vec3 c = tileSlotCovariance(0);
-  float variance = (pass.y == 0 ? c.x : c.z) * depths[t.z] * depths[t.z];
+  // Landing covariance per metre^2 of depth (texels^2): the sun's disc and the cells' slopes.
+  float perMetre = texelsPerMetre[0];
+  vec3 disc = sunDisc.xyz * (perMetre * perMetre);
+  vec3 unresolved = tileSlotCovariance(0) - disc;
+  float d = depths[t.z];
+  // The cells' ripples scatter the light only past their folds: a ripple of wavenumber k whose
+  // landing moves by s at this depth folds its light where s k > 1 (k at least pi / cell).
+  // Before that it bends the light by under a cell / pi and draws a pattern finer than the
+  // grid; counted as a diffuser it blurred the calm `shallow` sea (0.50 against 0.53 without
+  // it) and a host's few coherent ripples at 3 m (0.62 against 0.69).
+  float landingMetres = sqrt(max(0.5 * (unresolved.x + unresolved.z), 0.0)) * d / perMetre;
+  float folded = smoothstep(1.0, 3.0, landingMetres * 3.14159265 / cellMetres);
+  float variance = ((pass.y == 0 ? disc.x : disc.z) +
+                    folded * (pass.y == 0 ? unresolved.x : unresolved.z)) * d * d;
   ivec2 step = pass.y == 0 ? ivec2(1, 0) : ivec2(0, 1);
   float value = 0.0;
   if (!(variance > 1e-4)) {
