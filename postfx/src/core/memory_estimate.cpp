@@ -30,9 +30,8 @@ Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int hei
   // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
   // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window.
   if (passes.wavefrontAreaRatio)
-    t.irradiance =
-        wavefrontAreaRatioBytes(frame.caustics.gridResolution, frame.caustics.depthLayers,
-                                wavefrontAreaRatioLayout(frame).spread);
+    t.irradiance = wavefrontAreaRatioBytes(frame.caustics.gridResolution,
+                                           frame.caustics.depthLayers, landingSpreadOn(frame));
   if (passes.tile) {
     t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
     // The half-resolution lookups (the TileIrradiance model's only): RG16F, irradiance and

@@ -32,6 +32,10 @@ std::uint64_t tileSpreadStatisticsBytes() {
   return std::uint64_t(kMaxCascades) * shared::TILE_SPREAD_PARTS * 16;
 }
 
+bool landingSpreadOn(const FrameDesc& frame) {
+  return frame.caustics.tileUnresolvedSpread || frame.sun.angularDiameterDegrees > 0.0f;
+}
+
 void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
                                  const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
                                  int cascades) {
@@ -74,7 +78,7 @@ TileIrradianceLayout tileIrradianceLayout(const FrameDesc& frame) {
   l.layers = s.tileDepthLayers;
   l.groups = l.layers / kTileLayersPerTexel;
   l.maxDepth = s.maxReceiverDepth;
-  l.spread = s.tileUnresolvedSpread || frame.sun.angularDiameterDegrees > 0.0f;
+  l.spread = landingSpreadOn(frame);
   const glm::dvec3 up = -refractedSunDown(glm::normalize(frame.sun.direction), water.ior);
   const double upY = std::max(up.y, 1e-6);
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {

@@ -26,6 +26,10 @@ inline constexpr int kTileLayersPerTexel = 4;
 // The slope statistics' buffer (tile_irradiance_spread_statistics.glsl's partial sums, every
 // cascade), which the wavefront area ratio's spread fills too.
 std::uint64_t tileSpreadStatisticsBytes();
+// Whether the fields are blurred by a landing spread at all: the unresolved slopes'
+// (CausticsSettings::tileUnresolvedSpread) or the sun disc's (Sun::angularDiameterDegrees > 0).
+// Both the tile field and the wavefront area ratio's window follow it.
+bool landingSpreadOn(const FrameDesc& frame);
 // The landing covariance's uniforms of tile_irradiance_spread_statistics.glsl's reader
 // (locations 10 to 14) on `program`: each slot's cascade and texels per metre, the landing drift
 // and the sun disc's covariance of this frame's sun, whether the unresolved slopes spread.

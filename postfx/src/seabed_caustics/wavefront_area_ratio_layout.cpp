@@ -42,7 +42,7 @@ WavefrontAreaRatioLayout wavefrontAreaRatioLayout(const FrameDesc& frame) {
     const glm::dvec2 start = windowCentre - drift * l.depth[k] - 0.5 * gridSpan;
     l.gridOrigin[k] = glm::floor(start / l.cell) * l.cell;
   }
-  l.spread = s.tileUnresolvedSpread || frame.sun.angularDiameterDegrees > 0.0f;
+  l.spread = landingSpreadOn(frame);
   return l;
 }
 

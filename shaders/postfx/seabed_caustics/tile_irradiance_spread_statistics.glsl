@@ -29,18 +29,27 @@ vec3 tileCellSlopes(int c) {
   return moments.xyz / max(moments.w, 1.0);
 }
 
-// Where a slot's light lands about where its points put it: covariance in texels^2 per metre^2
-// of depth. The slopes inside the cells of its own cascade and of every finer one (each finer
-// cascade's resolved slopes make its own pattern, which multiplies this one; what none
-// resolves scatters them all) and the sun's disc.
-vec3 tileSlotCovariance(int slot) {
+// The part of tileSlotCovariance the slopes inside the cells give (0 with the disc alone): of
+// the slot's own cascade and of every finer one (each finer cascade's resolved slopes make its
+// own pattern, which multiplies this one; what none resolves scatters them all).
+vec3 tileSlotUnresolvedCovariance(int slot) {
   int cascade = slotCascade[slot];
   vec3 slopes = vec3(0.0);
   for (int f = 0; f < POSTFX_MAX_CASCADES; ++f)
     if (f >= cascade && f < cascades) slopes += tileCellSlopes(f);
+  return sunDisc.w * tileSpreadCovariance(slopes, drift, texelsPerMetre[slot]);
+}
+
+// The sun disc's part of tileSlotCovariance.
+vec3 tileSlotDiscCovariance(int slot) {
   float perMetre = texelsPerMetre[slot];
-  return sunDisc.w * tileSpreadCovariance(slopes, drift, perMetre) +
-         sunDisc.xyz * (perMetre * perMetre);
+  return sunDisc.xyz * (perMetre * perMetre);
+}
+
+// Where a slot's light lands about where its points put it: covariance in texels^2 per metre^2
+// of depth. The slopes inside the cells and the sun's disc.
+vec3 tileSlotCovariance(int slot) {
+  return tileSlotUnresolvedCovariance(slot) + tileSlotDiscCovariance(slot);
 }
 
 // Whether C's axes are turned from the grid's enough to need the diagonal pass: a correlation

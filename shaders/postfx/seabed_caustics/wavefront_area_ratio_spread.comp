@@ -26,24 +26,34 @@ layout(location = 15) uniform float cellMetres;  // the grid's spacing (m)
 #define TILE_SPREAD_READER 1
 #include "postfx/seabed_caustics/tile_irradiance_spread_statistics.glsl"
 
-void main() {
-  ivec3 t = ivec3(gl_GlobalInvocationID);
-  int n = pass.x;
-  if (t.x >= n || t.y >= n || t.z >= pass.z) return;
+// This workgroup's variance along its direction (texels^2): its invocations share one layer.
+shared float groupVariance;
+
+// Layer k's landing variance along this dispatch's direction (texels^2).
+float layerVariance(int k) {
   // Landing covariance per metre^2 of depth (texels^2): the sun's disc and the cells' slopes.
-  float perMetre = texelsPerMetre[0];
-  vec3 disc = sunDisc.xyz * (perMetre * perMetre);
-  vec3 unresolved = tileSlotCovariance(0) - disc;
-  float d = depths[t.z];
+  vec3 disc = tileSlotDiscCovariance(0);
+  vec3 unresolved = tileSlotUnresolvedCovariance(0);
+  float d = depths[k];
   // The cells' ripples scatter the light only past their folds: a ripple of wavenumber k whose
   // landing moves by s at this depth folds its light where s k > 1 (k at least pi / cell).
   // Before that it bends the light by under a cell / pi and draws a pattern finer than the
   // grid; counted as a diffuser it blurred the calm `shallow` sea (0.50 against 0.53 without
   // it) and a host's few coherent ripples at 3 m (0.62 against 0.69).
-  float landingMetres = sqrt(max(0.5 * (unresolved.x + unresolved.z), 0.0)) * d / perMetre;
+  float landingMetres = sqrt(max(0.5 * (unresolved.x + unresolved.z), 0.0)) * d / texelsPerMetre[0];
   float folded = smoothstep(1.0, 3.0, landingMetres * 3.14159265 / cellMetres);
-  float variance = ((pass.y == 0 ? disc.x : disc.z) +
-                    folded * (pass.y == 0 ? unresolved.x : unresolved.z)) * d * d;
+  return ((pass.y == 0 ? disc.x : disc.z) + folded * (pass.y == 0 ? unresolved.x : unresolved.z)) *
+         d * d;
+}
+
+void main() {
+  ivec3 t = ivec3(gl_GlobalInvocationID);
+  // Once per workgroup, not per texel: the statistics' sums are the same for all of them.
+  if (gl_LocalInvocationIndex == 0u) groupVariance = layerVariance(min(t.z, pass.z - 1));
+  barrier();
+  int n = pass.x;
+  if (t.x >= n || t.y >= n || t.z >= pass.z) return;
+  float variance = groupVariance;
   ivec2 step = pass.y == 0 ? ivec2(1, 0) : ivec2(0, 1);
   float value = 0.0;
   if (!(variance > 1e-4)) {
