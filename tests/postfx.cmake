@@ -32,6 +32,7 @@ postfx_add_test(postfx_object_caustics_tests
           gl/postfx_object_caustics_lights_contract_test.cpp gl/postfx_object_caustics_lights_util.cpp
           gl/postfx_object_caustics_lights_test.cpp gl/postfx_object_caustics_lights_stability_test.cpp
           gl/postfx_object_caustics_lights_cost_test.cpp gl/postfx_object_caustics_work_test.cpp
+          gl/postfx_views_test.cpp
   LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -148,3 +148,6 @@ struct ObjectCausticMap {
 ObjectCausticMap objectCausticMap(const Context& context) noexcept;
 
 }  // namespace postfx
+
+// Several views per frame (split-screen, stereo, cube-map probes): postfx/views.h.
+#include <postfx/views.h>

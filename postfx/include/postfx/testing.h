@@ -1,6 +1,8 @@
 #pragma once
 // Hooks for tests, benchmarks and the report: not part of what a host integrates, and not
 // included by postfx/postfx.h. Nothing here changes what a frame without them looks like.
+#include <cstdint>
+
 #include <postfx/postfx.h>
 
 namespace postfx::testing {
@@ -28,6 +30,12 @@ inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
 //  - RayDeviation: [0, 1].
 // A GL_R16F texel holds at most 65504. 0 without the feature or before the first dispatch.
 GlName rawCausticTexture(const Context& context) noexcept;
+// The same for a view of a multi-view dispatch (postfx/views.h): its own raw output, the size of
+// its target, written inside its viewport (0 outside it). rawCausticTexture(context) is the
+// plain dispatch(context, frame)'s.
+GlName rawCausticTexture(const View& view) noexcept;
+// The GPU memory a view holds (its raw output and reduced-resolution textures), in bytes.
+std::uint64_t viewAllocatedBytes(const View& view) noexcept;
 
 // The WavefrontAreaRatio model's irradiance of the most recent frame that computed it.
 struct CausticIrradianceInfo {

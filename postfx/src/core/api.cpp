@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <new>
+#include <string>
 
 #include "core/context.h"
 #include "core/frame_pipeline.h"
@@ -17,6 +18,25 @@ namespace postfx {
 namespace {
 
 thread_local std::string createError;
+
+// stats(context): the shared passes from the context's timers, the per-view ones from its own
+// view's. Kept current after every call that can change them, so that a reference a host holds
+// reads the latest numbers, as it always has.
+void mergeStats(Context& context) {
+  FrameStats& merged = context.mergedStats;
+  merged = context.timers.stats();
+  const FrameStats& own = context.defaultView.timers.stats();
+  for (int p = 0; p < kPassCount; ++p)
+    if (detail::isViewPass(Pass(p))) merged.passes[p] = own.passes[p];
+}
+
+// Runs a dispatch and merges the stats whatever it returned.
+template <typename Work>
+Result dispatchAndMerge(Context& context, Work&& work) {
+  const Result r = work();
+  mergeStats(context);
+  return r;
+}
 
 }  // namespace
 
@@ -58,8 +78,14 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
       if (r != Result::Ok) return r;
       present[int(Pass::ObjectCaustics)] = true;
     }
+    // The shared passes are timed once per frame by the context, the others by each view.
+    context->present = present;
+    std::array<bool, kPassCount> shared{};
+    for (int p = 0; p < kPassCount; ++p) shared[p] = present[p] && !detail::isViewPass(Pass(p));
     context->timers.init(
-        present, hasFeature(desc.features, Feature::ObjectCaustics) ? desc.maxLocalLights : 0);
+        shared, hasFeature(desc.features, Feature::ObjectCaustics) ? desc.maxLocalLights : 0);
+    detail::initView(context->defaultView, *context, present);
+    mergeStats(*context);
     out = context.release();
     return Result::Ok;
   } catch (const std::bad_alloc&) {
@@ -78,7 +104,16 @@ Result dispatch(Context& context, const FrameDesc& desc) noexcept {
       context.error = "dispatch: no current GL context on this thread";
       return Result::NoContext;
     }
-    return detail::dispatchFrame(context, desc);
+    ViewDesc view;
+    view.view = &context.defaultView;
+    view.depth = desc.depth;
+    view.normal = desc.normal;
+    view.albedo = desc.albedo;
+    view.target = desc.target;
+    view.camera = desc.camera;
+    return dispatchAndMerge(context, [&] {
+      return detail::dispatchFrame(context, desc, {&view, 1}, false);
+    });
   } catch (const std::bad_alloc&) {
     context.error = "out of memory";
     return Result::OutOfMemory;
@@ -98,8 +133,75 @@ const char* lastError(const Context* context) noexcept {
   return context != nullptr ? context->error.c_str() : createError.c_str();
 }
 
+Result dispatch(Context& context, const FrameDesc& frame, const ViewDesc* views,
+                int viewCount) noexcept {
+  try {
+    context.error.clear();
+    if (!glkit::hasCurrentContext()) {
+      context.error = "dispatch: no current GL context on this thread";
+      return Result::NoContext;
+    }
+    if (views == nullptr && viewCount != 0) {
+      context.error = "views is null but viewCount is " + std::to_string(viewCount);
+      return Result::InvalidArgument;
+    }
+    if (viewCount < 0 || viewCount > kMaxViews) {
+      context.error = "viewCount is " + std::to_string(viewCount) + ", must be in [1, " +
+                      std::to_string(kMaxViews) + "]";
+      return Result::InvalidArgument;
+    }
+    return dispatchAndMerge(context, [&] {
+      return detail::dispatchFrame(context, frame, {views, static_cast<std::size_t>(viewCount)},
+                                   true);
+    });
+  } catch (const std::bad_alloc&) {
+    context.error = "out of memory";
+    return Result::OutOfMemory;
+  } catch (...) {
+    context.error = "internal error";
+    return Result::GlError;
+  }
+}
+
+Result createView(Context& context, View*& out) noexcept {
+  out = nullptr;
+  try {
+    context.error.clear();
+    if (!glkit::hasCurrentContext()) {
+      context.error = "createView: no current GL context on this thread";
+      return Result::NoContext;
+    }
+    auto view = std::make_unique<View>();
+    detail::initView(*view, context, context.present);
+    context.views.push_back(std::move(view));
+    out = context.views.back().get();
+    return Result::Ok;
+  } catch (const std::bad_alloc&) {
+    context.error = "out of memory";
+    return Result::OutOfMemory;
+  } catch (...) {
+    context.error = "internal error";
+    return Result::GlError;
+  }
+}
+
+void destroyView(Context& context, View* view) noexcept {
+  auto& views = context.views;
+  for (auto it = views.begin(); it != views.end(); ++it) {
+    if (it->get() != view) continue;
+    // Without a current context its GL objects cannot be deleted (epoxy would abort): leaked.
+    if (!glkit::hasCurrentContext()) (void)it->release();
+    views.erase(it);
+    return;
+  }
+}
+
+const FrameStats& stats(const View& view) noexcept {
+  return view.timers.stats();
+}
+
 const FrameStats& stats(const Context& context) noexcept {
-  return context.timers.stats();
+  return context.mergedStats;
 }
 
 ObjectCausticMap objectCausticMap(const Context& context) noexcept {

@@ -1,12 +1,17 @@
 #pragma once
-// What a postfx::Context holds: the creation choices, the passes' GL objects, the timers and
-// the last error message.
+// What a postfx::Context holds: the creation choices, the passes' GL objects (programs and the
+// per-frame work every view shares), the shared passes' timers, its views and the last error
+// message.
+#include <array>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <postfx/postfx.h>
 #include <postfx/testing.h>
 
 #include "core/gpu_timers.h"
+#include "core/view_state.h"
 #include "god_rays/godrays_constants.h"
 #include "god_rays/godrays_pass.h"
 #include "object_caustics/object_caustics_pass.h"
@@ -20,7 +25,6 @@ struct Context {
   CreateDesc desc;
   detail::CausticsPass caustics;
   detail::GodRaysPass godRays;
-  detail::GodRayGridPivot godRayPivot;
   testing::GodRaySampling godRaySampling = testing::GodRaySampling::WorldGrid;
   float godRayUniformPhase = 0.5f;
   detail::WavefrontAreaRatioPass wavefrontAreaRatio;  // Feature::WavefrontAreaRatio only
@@ -28,7 +32,12 @@ struct Context {
   detail::TileIrradiancePass tileIrradiance;
   bool tileIrradianceReady = false;
   detail::ObjectCausticsPass objectCaustics;
-  detail::GpuTimers timers;
+  detail::GpuTimers timers;  // the shared passes: Pass::TileIrradiance, ObjectCaustics, lights
+  std::array<bool, kPassCount> present{};    // the passes the context has, for its views' timers
+  View defaultView;                          // dispatch(context, frame)'s
+  std::vector<std::unique_ptr<View>> views;  // createView()'s, alive
+  // stats(context): the shared passes' timings with the default view's, merged when asked.
+  mutable FrameStats mergedStats;
   std::string error;
 };
 

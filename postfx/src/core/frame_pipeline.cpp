@@ -3,8 +3,9 @@
 
 #include <postfx/testing.h>
 
-#include <optional>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "core/block_check.h"
 #include "core/context.h"
@@ -13,6 +14,8 @@
 #include "core/gl_state_guard.h"
 #include "core/memory_estimate.h"
 #include "core/validation.h"
+#include "core/view_state.h"
+#include "core/view_validation.h"
 #include "god_rays/godrays_constants.h"
 #include "object_caustics/object_caustics_frame.h"
 #include "object_caustics/object_caustics_light_frame.h"
@@ -40,6 +43,37 @@ Result refuse(std::string& error, const char* message) {
   return Result::InvalidArgument;
 }
 
+// The TileIrradiance programs of a view's passes that read the field (0: another model).
+struct TileVariants {
+  int caustics = 0, godRays = 0;
+};
+
+// One view's share of the frame: the frame with the view's camera, G-buffer and target, its
+// rectangle, its plan and constants, and its programs.
+struct ViewWork {
+  View* view = nullptr;
+  FrameDesc frame;
+  ValidatedTextures textures;
+  FramePlan plan;
+  shared::CausticsBlock caustics{};
+  shared::GodRaysBlock godRays{};
+  // The one piece of per-view state that shapes the image: a copy moves with this frame and is
+  // kept only once the frame has been drawn, so a refused frame leaves no trace.
+  GodRayGridPivot pivot;
+  TileVariants tile;  // all 0: another model
+};
+
+// The work every view shares: whether the tile field and the window are computed (for any
+// view), and the object caustics' views (the first view's plan: they do not depend on the
+// camera).
+struct SharedWork {
+  bool tile = false;
+  bool wavefrontAreaRatio = false;
+  const FramePlan* objectPlan = nullptr;
+  ObjectCausticsViews objects;
+  std::vector<ObjectCausticsTarget> targets;
+};
+
 // Everything dispatch accepts before it looks at the frame's work: values, textures, casters
 // and the host's draw state.
 Result validateFrame(const Context& context, const FrameDesc& frame, ValidatedTextures& textures,
@@ -48,74 +82,83 @@ Result validateFrame(const Context& context, const FrameDesc& frame, ValidatedTe
   if (r != Result::Ok) return r;
   r = validateFrameTextures(context.desc, frame, textures, error);
   if (r != Result::Ok) return r;
-  if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
-    r = validateObjectCaustics(context.desc, frame, error);
-    if (r != Result::Ok) return r;
-  }
-  return checkHostDrawState(error);
+  if (hasFeature(context.desc.features, Feature::ObjectCaustics))
+    return validateObjectCaustics(context.desc, frame, error);
+  return Result::Ok;
 }
 
-// Every constant the GPU will see this frame.
-struct FrameBlocks {
-  shared::CausticsBlock caustics{};
-  shared::GodRaysBlock godRays{};
-  // The one piece of per-frame state that shapes the image: a copy moves with this frame and is
-  // kept only once the frame has been drawn, so a refused frame leaves no trace.
-  GodRayGridPivot pivot;
-  ObjectCausticsViews objects;
-};
-
-// Builds and checks the blocks before any GL work.
-Result buildBlocks(const Context& context, const FrameDesc& frame, const FramePlan& plan,
-                   const ValidatedTextures& textures, FrameBlocks& blocks, std::string& error) {
-  const int width = textures.width, height = textures.height;
-  blocks.caustics = buildCausticsBlock(context.desc, frame, width, height, textures.water);
-  if (plan.fullScreen && !allFinite(blocks.caustics))
+// Builds and checks a view's blocks before any GL work.
+Result buildViewBlocks(const Context& context, ViewWork& w, std::string& error) {
+  const FrameDesc& frame = w.frame;
+  const int width = w.textures.width, height = w.textures.height;
+  const glm::vec4 origin(float(w.textures.x), float(w.textures.y), 0.0f, 0.0f);
+  w.caustics = buildCausticsBlock(context.desc, frame, width, height, w.textures.water);
+  w.caustics.viewOrigin = origin;
+  if (w.plan.fullScreen && !allFinite(w.caustics))
     return refuse(error,
                   "frame: a caustics constant overflows the GPU's float (camera.projection, or "
                   "shadow.worldToLightClip about camera.position, has entries too large)");
-  blocks.pivot = context.godRayPivot;
-  if (plan.godRays) {
-    blocks.godRays =
-        buildGodRaysBlock(frame, width, height, blocks.pivot,
+  w.pivot = w.view->godRayPivot;
+  if (w.plan.godRays) {
+    w.godRays =
+        buildGodRaysBlock(frame, width, height, w.pivot,
                           context.godRaySampling == testing::GodRaySampling::UniformAlongRay,
                           context.godRayUniformPhase);
-    if (!allFinite(blocks.godRays))
+    if (!allFinite(w.godRays))
       return refuse(error, "frame: a god-ray constant overflows the GPU's float");
   }
-  ObjectCausticsViews& views = blocks.objects;
+  return Result::Ok;
+}
+
+// The object caustics' views, fitted once, and every camera view's blocks.
+Result buildObjectBlocks(const Context& context, std::span<const ViewWork> work, SharedWork& s,
+                         std::string& error) {
+  const FramePlan& plan = *s.objectPlan;
+  const FrameDesc& first = work[0].frame;
+  ObjectCausticsViews& views = s.objects;
   if (plan.objects) {
     views.sun = true;
-    views.sunFrame = fitObjectLightFrame(frame);
-    views.sunBlock = buildObjectCausticsBlock(context.desc, frame, views.sunFrame, width, height);
-    if (!allFinite(views.sunBlock) || !casterMatricesFinite(frame, views.sunFrame))
-      return refuse(error,
-                    "frame: an object-caustics constant overflows the GPU's float "
-                    "(objectCaustics.receivers.worldToLightClip or a caster's modelToWorld has "
-                    "entries too large)");
+    views.sunFrame = fitObjectLightFrame(first);
   }
   for (int k = 0; k < plan.lightCount; ++k) {
-    const int i = plan.lights[static_cast<std::size_t>(k)];
     ObjectLightFrame view;
-    fitLocalLightFrame(frame, i, view);
+    fitLocalLightFrame(first, plan.lights[static_cast<std::size_t>(k)], view);
     views.lights.push_back(view);
-    views.lightBlocks.push_back(buildObjectCausticsBlock(context.desc, frame, view, width, height));
-    if (!allFinite(views.lightBlocks.back()) || !casterMatricesFinite(frame, view)) {
-      error = "frame: an object-caustics constant of objectCaustics.lights[" + std::to_string(i) +
-              "] overflows the GPU's float (its receivers.worldToLightClip, or a caster's "
-              "modelToWorld, has entries too large)";
-      return Result::InvalidArgument;
+  }
+  for (std::size_t v = 0; v < work.size(); ++v) {
+    const ViewWork& w = work[v];
+    const int width = w.textures.width, height = w.textures.height;
+    const glm::vec4 origin(float(w.textures.x), float(w.textures.y), 0.0f, 0.0f);
+    shared::ObjectCausticsBlock sun{};
+    if (plan.objects) {
+      sun = buildObjectCausticsBlock(context.desc, w.frame, views.sunFrame, width, height);
+      sun.viewOrigin = origin;
+      if (!allFinite(sun) || !casterMatricesFinite(w.frame, views.sunFrame))
+        return refuse(error,
+                      "frame: an object-caustics constant overflows the GPU's float "
+                      "(objectCaustics.receivers.worldToLightClip or a caster's modelToWorld has "
+                      "entries too large)");
     }
+    views.blocks.push_back(sun);
+    for (int k = 0; k < plan.lightCount; ++k) {
+      const int i = plan.lights[static_cast<std::size_t>(k)];
+      const ObjectLightFrame& view = views.lights[static_cast<std::size_t>(k)];
+      views.blocks.push_back(buildObjectCausticsBlock(context.desc, w.frame, view, width, height));
+      views.blocks.back().viewOrigin = origin;
+      if (!allFinite(views.blocks.back()) || !casterMatricesFinite(w.frame, view)) {
+        error = "frame: an object-caustics constant of objectCaustics.lights[" + std::to_string(i) +
+                "] overflows the GPU's float (its receivers.worldToLightClip, or a caster's "
+                "modelToWorld, has entries too large)";
+        return Result::InvalidArgument;
+      }
+    }
+    s.targets.push_back({&w.frame, w.textures});
   }
   return Result::Ok;
 }
 
 // The TileIrradiance programs of this frame's cascades, each built on first use: the pre-pass,
 // and the variants of the passes that read its field (0 for a pass that does not draw).
-struct TileVariants {
-  int caustics = 0, godRays = 0;
-};
-
 // A failure changes nothing.
 Result ensureTileIrradiance(Context& context, const FrameDesc& frame, const FramePlan& plan,
                             TileVariants& variants, std::string& error) {
@@ -153,46 +196,63 @@ class HeldTargets {
   HeldTargets(const HeldTargets&) = delete;
   HeldTargets& operator=(const HeldTargets&) = delete;
 
-  bool caustics = false, godRays = false;
+  bool caustics = false, godRays = false, objects = false;
   void release() {
     if (godRays) context_.godRays.finish();
     if (caustics) context_.caustics.finish();
-    caustics = godRays = false;
+    if (objects) context_.objectCaustics.finishDraws();
+    caustics = godRays = objects = false;
   }
 
  private:
   Context& context_;
 };
 
-// Allocates every resource the frame needs, and checks every framebuffer, before the first
-// pass adds light: a failure here leaves the target as it was.
-Result reserve(Context& context, const FrameDesc& frame, const FramePlan& plan,
-               const ValidatedTextures& textures, const FrameBlocks& blocks, HeldTargets& held,
-               std::string& error) {
-  Result r = Result::Ok;
-  if (plan.fullScreen) {
-    r = context.caustics.prepare(frame, textures, blocks.caustics, error);
+// Attaches one view's target to the seabed passes' framebuffers (sizing the view's textures)
+// and uploads its blocks.
+Result prepareView(Context& context, ViewWork& w, HeldTargets& held, std::string& error) {
+  if (w.plan.fullScreen) {
+    const Result r =
+        context.caustics.prepare(w.frame, w.textures, w.caustics, w.view->caustics, error);
     if (r != Result::Ok) return r;
     held.caustics = true;
   }
-  if (plan.wavefrontAreaRatio) {
-    r = context.wavefrontAreaRatio.reserve(frame, error);
-    if (r != Result::Ok) return r;
-  }
-  if (plan.tile) {
-    r = context.tileIrradiance.reserve(frame, error);
-    if (r != Result::Ok) return r;
-  }
-  if (plan.godRays) {
-    r = context.godRays.prepare(frame, textures.width, textures.height, blocks.godRays, error);
+  if (w.plan.godRays) {
+    const Result r =
+        context.godRays.prepare(w.frame, w.textures, w.godRays, w.view->godRays, error);
     if (r != Result::Ok) return r;
     held.godRays = true;
   }
-  if (plan.objectMaps()) r = context.objectCaustics.prepare(frame, blocks.objects, error);
+  return Result::Ok;
+}
+
+// Allocates every resource the frame needs, and checks every framebuffer of every view, before
+// the first pass adds light: a failure here leaves every target as it was.
+Result reserve(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTargets& held,
+               std::string& error) {
+  const FrameDesc& first = work[0].frame;
+  Result r = Result::Ok;
+  for (ViewWork& w : work) {
+    r = prepareView(context, w, held, error);
+    if (r != Result::Ok) return r;
+    held.release();
+  }
+  if (s.wavefrontAreaRatio) {
+    r = context.wavefrontAreaRatio.reserve(first, error);
+    if (r != Result::Ok) return r;
+  }
+  if (s.tile) {
+    r = context.tileIrradiance.reserve(first, error);
+    if (r != Result::Ok) return r;
+  }
+  if (s.objectPlan->objectMaps()) {
+    held.objects = true;
+    r = context.objectCaustics.prepare(first, s.objects, s.targets, error);
+  }
   return r;
 }
 
-// The frame's slot in the timers, closed on every way out of recording.
+// The frame's slot in a set of timers, closed on every way out of recording.
 class TimedFrame {
  public:
   explicit TimedFrame(GpuTimers& timers) : timers_(timers) { timers_.beginFrame(); }
@@ -210,134 +270,181 @@ class TimedFrame {
 // no query pair can separate them. This is the one place the plugin waits, and normal frames
 // never get here.
 template <typename Work>
-void timedPass(Context& context, const FramePlan& plan, Pass pass, const char* group, Work&& work) {
+void timedPass(GpuTimers& timers, bool floor, Pass pass, const char* group, Work&& work) {
   DebugGroup debugGroup(group);
-  if (plan.floor) glFinish();
-  context.timers.begin(pass);
+  if (floor) glFinish();
+  timers.begin(pass);
   work();
-  context.timers.end(pass);
+  timers.end(pass);
 }
 
-// Whether `pass` draws under the seabed caustics pass's framebuffer and state (the full-screen
-// passes and the seabed's pre-passes, which set that state again with their result).
-bool drawsUnderSeabedState(Pass pass) {
-  return pass != Pass::ObjectCaustics;
-}
-
-// Records one planned pass.
-void recordPass(Context& context, const FrameDesc& frame, const FramePlan& plan,
-                const ValidatedTextures& textures, const FrameBlocks& blocks,
-                const TileVariants& tile, const PlannedPass& step, GLuint irradiance) {
-  const int w = textures.width, h = textures.height;
-  switch (step.pass) {
-    case Pass::WavefrontAreaRatio:
-      timedPass(context, plan, step.pass, "postfx.wavefront_area_ratio",
-                [&] { context.wavefrontAreaRatio.draw(frame, textures); });
-      context.caustics.bindState(frame, textures, context.wavefrontAreaRatio.texture());
-      return;
-    case Pass::TileIrradiance:
-      timedPass(context, plan, step.pass, "postfx.tile_irradiance",
-                [&] { context.tileIrradiance.draw(frame, textures); });
-      context.caustics.bindState(frame, textures, irradiance, context.tileIrradiance.texture());
-      return;
-    case Pass::Floor:
-      timedPass(context, plan, step.pass, "postfx.floor", [&] { context.caustics.drawFloor(); });
-      return;
-    case Pass::Caustics:
-      timedPass(context, plan, step.pass, "postfx.caustics",
-                [&] { context.caustics.drawCaustics(tile.caustics); });
-      return;
-    case Pass::GodRays:
-      timedPass(context, plan, step.pass, "postfx.god_rays",
-                [&] { context.godRays.draw(frame, w, h, tile.godRays); });
-      context.godRayPivot = blocks.pivot;
-      return;
-    case Pass::ObjectCaustics:
-      if (step.light < 0) {
-        timedPass(context, plan, step.pass, "postfx.object_caustics",
-                  [&] { context.objectCaustics.drawSun(frame, w, h); });
-        return;
-      }
-      // A local light's: timed in its own slot of the light timers.
-      DebugGroup debugGroup("postfx.object_caustics_light");
-      if (plan.floor) glFinish();
-      context.timers.beginLight(step.light);
-      context.objectCaustics.drawLight(frame, step.slot, w, h);
-      context.timers.endLight(step.light);
-      return;
+// Records one view's passes (the model's window, the floor, the caustics, the god rays) into its
+// target, under the seabed caustics pass's state. The shared tile field is drawn in the first
+// view that draws (after its window, as the Pass order says: a single view records exactly what
+// a context of its own would), once for all.
+void recordView(Context& context, ViewWork& w, const SharedWork& s, bool& tileDrawn,
+                HeldTargets& held) {
+  const FramePlan& plan = w.plan;
+  GpuTimers& timers = w.view->timers;
+  if (!plan.caustics) context.caustics.clearRaw(w.textures, w.view->caustics);
+  if (!plan.fullScreen) return;
+  std::string unused;
+  // Checked by reserve(): cannot fail now.
+  if (prepareView(context, w, held, unused) != Result::Ok) return;
+  const GLuint tile = s.tile ? context.tileIrradiance.texture() : 0;
+  const GLuint window = plan.wavefrontAreaRatio ? context.wavefrontAreaRatio.texture() : 0;
+  if (plan.wavefrontAreaRatio) {
+    context.caustics.bindState(w.frame, w.textures, 0);
+    context.wavefrontAreaRatio.place(w.frame);
+    timedPass(timers, plan.floor, Pass::WavefrontAreaRatio, "postfx.wavefront_area_ratio",
+              [&] { context.wavefrontAreaRatio.draw(w.frame, w.textures); });
   }
+  if (s.tile && !tileDrawn) {
+    // The field depends on the water and the sun only. It samples the water through the
+    // seabed state's unit.
+    context.caustics.bindState(w.frame, w.textures, 0);
+    timedPass(context.timers, plan.floor, Pass::TileIrradiance, "postfx.tile_irradiance",
+              [&] { context.tileIrradiance.draw(w.frame, w.textures); });
+    tileDrawn = true;
+  }
+  context.caustics.bindState(w.frame, w.textures, window, tile);
+  if (plan.runs(Pass::Floor))
+    timedPass(timers, plan.floor, Pass::Floor, "postfx.floor",
+              [&] { context.caustics.drawFloor(); });
+  if (plan.caustics)
+    timedPass(timers, plan.floor, Pass::Caustics, "postfx.caustics",
+              [&] { context.caustics.drawCaustics(w.tile.caustics); });
+  if (plan.godRays) {
+    timedPass(timers, plan.floor, Pass::GodRays, "postfx.god_rays",
+              [&] { context.godRays.draw(w.frame, w.tile.godRays); });
+  }
+  held.release();  // this view is done with its target
 }
 
-// Records the planned passes, in the plan's order, into the host's target.
-void record(Context& context, const FrameDesc& frame, const FramePlan& plan,
-            const ValidatedTextures& textures, const FrameBlocks& blocks, const TileVariants& tile,
-            HeldTargets& held) {
-  TimedFrame timedFrame(context.timers);
-  if (hasFeature(context.desc.features, Feature::WavefrontAreaRatio)) {
-    const double clamped = context.wavefrontAreaRatio.pollClampCounts();
-    if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
-    if (!plan.wavefrontAreaRatio && frame.caustics.model == CausticsModel::RayDeviation)
-      context.timers.setClampedFluxFraction(0.0);
+// Marks what each set of timers does not run this frame.
+void markSkipped(Context& context, std::span<ViewWork> work, const SharedWork& s) {
+  for (int p = 0; p < kPassCount; ++p) {
+    const Pass pass = Pass(p);
+    if (isViewPass(pass)) {
+      for (ViewWork& w : work)
+        if (!w.plan.runs(pass)) w.view->timers.markSkipped(pass);
+    } else if (!(pass == Pass::TileIrradiance ? s.tile : s.objectPlan->runs(pass))) {
+      context.timers.markSkipped(pass);
+    }
   }
-  for (int p = 0; p < kPassCount; ++p)
-    if (!plan.runs(Pass(p))) context.timers.markSkipped(Pass(p));
+  const FramePlan& plan = *s.objectPlan;
   for (int i = 0; i < context.desc.maxLocalLights; ++i) {
     context.timers.setLightSkip(i, plan.lightSkip[static_cast<std::size_t>(i)]);
     if (plan.lightSkip[static_cast<std::size_t>(i)] != LightSkip::None)
       context.timers.markLightSkipped(i);
   }
-  if (!plan.caustics) context.caustics.clearRaw(textures.width, textures.height);
+}
 
-  // The seabed's passes share the caustics pass's state (its units, samplers and block), set
-  // before the first of them; each pre-pass draws into its own framebuffer and sets that state
-  // again with its result, which the floor, the caustics and the god rays sample. The object
-  // caustics draw after them under their own state.
-  const GLuint irradiance = plan.wavefrontAreaRatio ? context.wavefrontAreaRatio.texture() : 0;
-  bool seabedState = false;
-  std::optional<ObjectCausticsStateGuard> objectState;
-  for (const PlannedPass& step : plan.passes()) {
-    if (drawsUnderSeabedState(step.pass)) {
-      if (!seabedState) context.caustics.bindState(frame, textures, irradiance);
-      seabedState = true;
-    } else if (!objectState) {
-      held.release();  // the seabed's passes are done with the host's target
-      objectState.emplace();
-      context.objectCaustics.setDrawState();
-    }
-    recordPass(context, frame, plan, textures, blocks, tile, step, irradiance);
+// Records the frame: the shared tile field, each view's passes, then the object caustics (their
+// maps once, composited into every view).
+void record(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTargets& held) {
+  TimedFrame sharedFrame(context.timers);
+  std::vector<std::unique_ptr<TimedFrame>> viewFrames;
+  for (ViewWork& w : work) viewFrames.push_back(std::make_unique<TimedFrame>(w.view->timers));
+  const FrameDesc& first = work[0].frame;
+  const bool floor = work[0].plan.floor;
+  if (hasFeature(context.desc.features, Feature::WavefrontAreaRatio)) {
+    const double clamped = context.wavefrontAreaRatio.pollClampCounts();
+    if (clamped >= 0.0) context.timers.setClampedFluxFraction(clamped);
+    if (!s.wavefrontAreaRatio && first.caustics.model == CausticsModel::RayDeviation)
+      context.timers.setClampedFluxFraction(0.0);
+  }
+  markSkipped(context, work, s);
+
+  bool tileDrawn = false;
+  for (ViewWork& w : work) {
+    recordView(context, w, s, tileDrawn, held);
+    w.view->godRayPivot = w.pivot;
+  }
+
+  const FramePlan& plan = *s.objectPlan;
+  if (!plan.objectMaps()) return;
+  ObjectCausticsStateGuard objectState;
+  context.objectCaustics.setDrawState();
+  if (plan.objects)
+    timedPass(context.timers, floor, Pass::ObjectCaustics, "postfx.object_caustics",
+              [&] { context.objectCaustics.drawSun(s.targets); });
+  for (int k = 0; k < plan.lightCount; ++k) {
+    // A local light's: timed in its own slot of the light timers.
+    const int light = plan.lights[static_cast<std::size_t>(k)];
+    DebugGroup debugGroup("postfx.object_caustics_light");
+    if (floor) glFinish();
+    context.timers.beginLight(light);
+    context.objectCaustics.drawLight(s.targets, k);
+    context.timers.endLight(light);
   }
   held.release();
-  if (objectState) context.objectCaustics.finishDraws();
 }
 
 }  // namespace
 
-Result dispatchFrame(Context& context, const FrameDesc& frame) {
+Result dispatchFrame(Context& context, const FrameDesc& frame, std::span<const ViewDesc> views,
+                     bool listed) {
   std::string& error = context.error;
-  ValidatedTextures textures;
-  Result r = validateFrame(context, frame, textures, error);
+  Result r = listed ? validateViewList(context, views, error) : Result::Ok;
   if (r != Result::Ok) return r;
-  const FramePlan plan = planFrame(context, frame);
-  FrameBlocks blocks;
-  r = buildBlocks(context, frame, plan, textures, blocks, error);
-  if (r != Result::Ok) return r;
-  r = checkFrameMemory(context.desc, frame, textures.width, textures.height, plan, error);
-  if (r != Result::Ok) return r;
-  r = checkObjectCausticsWork(context.desc, frame, plan, error);
-  if (r != Result::Ok) return r;
-  TileVariants tile;  // all 0: another model
-  if (plan.tile) {
-    r = ensureTileIrradiance(context, frame, plan, tile, error);
+  std::vector<ViewWork> work(views.size());
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const ViewDesc& v = views[i];
+    ViewWork& w = work[i];
+    const int index = static_cast<int>(i);
+    w.view = v.view;
+    w.frame = frame;
+    w.frame.depth = v.depth;
+    w.frame.normal = v.normal;
+    w.frame.albedo = v.albedo;
+    w.frame.target = v.target;
+    w.frame.camera = v.camera;
+    if (v.shadow != nullptr) w.frame.shadow = *v.shadow;
+    r = prefixed(validateFrame(context, w.frame, w.textures, error), error, index, listed);
+    if (r != Result::Ok) return r;
+    r = prefixed(applyViewport(v.viewport, w.textures, error), error, index, listed);
     if (r != Result::Ok) return r;
   }
+  std::vector<ViewRect> rects;
+  for (const ViewWork& w : work) rects.push_back({w.frame.target.texture, w.textures});
+  r = checkViewOverlaps(rects, error);
+  if (r != Result::Ok) return r;
+  r = checkHostDrawState(error);
+  if (r != Result::Ok) return r;
+
+  SharedWork s;
+  std::vector<ViewMemory> memory;
+  for (std::size_t i = 0; i < work.size(); ++i) {
+    ViewWork& w = work[i];
+    w.plan = planFrame(context, w.frame);
+    s.tile = s.tile || w.plan.tile;
+    s.wavefrontAreaRatio = s.wavefrontAreaRatio || w.plan.wavefrontAreaRatio;
+    r = prefixed(buildViewBlocks(context, w, error), error, static_cast<int>(i), listed);
+    if (r != Result::Ok) return r;
+    memory.push_back({&w.frame, w.textures.targetWidth, w.textures.targetHeight, w.textures.width,
+                      w.textures.height, &w.plan});
+  }
+  s.objectPlan = &work[0].plan;
+  r = buildObjectBlocks(context, work, s, error);
+  if (r != Result::Ok) return r;
+  r = checkFrameMemory(context.desc, memory, error);
+  if (r != Result::Ok) return r;
+  r = checkObjectCausticsWork(context.desc, work[0].frame, *s.objectPlan, error);
+  if (r != Result::Ok) return r;
+  for (ViewWork& w : work)
+    if (w.plan.tile) {
+      r = ensureTileIrradiance(context, w.frame, w.plan, w.tile, error);
+      if (r != Result::Ok) return r;
+    }
 
   GlStateGuard guard;
   DrawStateGuard drawState;  // inside: both save the host's values
   DebugGroup group("postfx");
   HeldTargets held(context);
-  r = reserve(context, frame, plan, textures, blocks, held, error);
+  r = reserve(context, work, s, held, error);
   if (r != Result::Ok) return r;
-  record(context, frame, plan, textures, blocks, tile, held);
+  record(context, work, s, held);
   return Result::Ok;
 }
 

@@ -13,33 +13,49 @@ std::uint64_t square(int side) {
   return static_cast<std::uint64_t>(side) * static_cast<std::uint64_t>(side);
 }
 
-// Each term with the field that sets it, for the message.
+// Each term with the field that sets it, for the message. raw, godRays and lookups are each
+// view's own (summed over the views); the others are shared.
 struct Terms {
-  std::uint64_t raw = 0, godRays = 0, irradiance = 0, tile = 0, casterMaps = 0, causticMap = 0;
+  std::uint64_t raw = 0, godRays = 0, lookups = 0, irradiance = 0, tile = 0, casterMaps = 0,
+                causticMap = 0;
+  std::uint64_t total() const {
+    return raw + godRays + lookups + irradiance + tile + casterMaps + causticMap;
+  }
 };
 
-Terms terms(const CreateDesc& create, const FrameDesc& frame, int width, int height,
-            const FramePlan& passes) {
-  Terms t;
-  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * std::uint64_t(height);
-  if (hasFeature(create.features, testing::RawCausticOutput)) t.raw = pixels * 2;  // R16F
+void addViewTerms(const CreateDesc& create, const ViewMemory& v, Terms& t) {
+  const FrameDesc& frame = *v.frame;
+  const FramePlan& passes = *v.plan;
+  if (hasFeature(create.features, testing::RawCausticOutput))
+    t.raw += std::uint64_t(v.targetWidth) * std::uint64_t(v.targetHeight) * 2;  // R16F
   if (passes.godRays && frame.godRays.resolution != GodRayResolution::Full)
-    t.godRays = static_cast<std::uint64_t>(godRayReducedSize(width, frame.godRays.resolution)) *
-                std::uint64_t(godRayReducedSize(height, frame.godRays.resolution)) *
-                8;  // RG32UI: four halves
+    t.godRays += static_cast<std::uint64_t>(godRayReducedSize(v.width, frame.godRays.resolution)) *
+                 std::uint64_t(godRayReducedSize(v.height, frame.godRays.resolution)) *
+                 8;  // RG32UI: four halves
+  // The half-resolution lookups (the TileIrradiance model's only): irradiance and distance as
+  // two halves.
+  if (passes.tile && passes.caustics && frame.caustics.model == CausticsModel::TileIrradiance &&
+      frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
+    t.lookups += std::uint64_t((v.width + 1) / 2) * std::uint64_t((v.height + 1) / 2) * 4;
+}
+
+Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
+  Terms t;
+  bool irradiance = false, tile = false;
+  for (const ViewMemory& v : views) {
+    addViewTerms(create, v, t);
+    irradiance = irradiance || v.plan->wavefrontAreaRatio;
+    tile = tile || v.plan->tile;
+  }
   // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
-  // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window.
-  if (passes.wavefrontAreaRatio)
+  // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window. The
+  // window's layers serve each view in turn.
+  const FrameDesc& frame = *views[0].frame;
+  const FramePlan& passes = *views[0].plan;
+  if (irradiance)
     t.irradiance = wavefrontAreaRatioBytes(frame.caustics.gridResolution,
                                            frame.caustics.depthLayers, landingSpreadOn(frame));
-  if (passes.tile) {
-    t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
-    // The half-resolution lookups (the TileIrradiance model's only): RG16F, irradiance and
-    // distance.
-    if (passes.caustics && frame.caustics.model == CausticsModel::TileIrradiance &&
-        frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
-      t.tile += std::uint64_t((width + 1) / 2) * std::uint64_t((height + 1) / 2) * 4;
-  }
+  if (tile) t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
   if (passes.objectMaps()) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
@@ -62,21 +78,25 @@ std::string mib(std::uint64_t bytes) {
 
 std::uint64_t frameMemoryBytes(const CreateDesc& create, const FrameDesc& frame, int width,
                                int height, const FramePlan& passes) {
-  const Terms t = terms(create, frame, width, height, passes);
-  return t.raw + t.godRays + t.irradiance + t.tile + t.casterMaps + t.causticMap;
+  const ViewMemory view{&frame, width, height, width, height, &passes};
+  return terms(create, {&view, 1}).total();
 }
 
-Result checkFrameMemory(const CreateDesc& create, const FrameDesc& frame, int width, int height,
-                        const FramePlan& passes, std::string& error) {
-  const Terms t = terms(create, frame, width, height, passes);
-  const std::uint64_t total =
-      t.raw + t.godRays + t.irradiance + t.tile + t.casterMaps + t.causticMap;
+std::uint64_t frameMemoryBytes(const CreateDesc& create, std::span<const ViewMemory> views) {
+  return terms(create, views).total();
+}
+
+Result checkFrameMemory(const CreateDesc& create, std::span<const ViewMemory> views,
+                        std::string& error) {
+  const Terms t = terms(create, views);
+  const std::uint64_t total = t.total();
   const std::uint64_t budget = static_cast<std::uint64_t>(create.memoryBudgetMiB) << 20;
   if (total <= budget) return Result::Ok;
-  const char* largest = "the raw caustic output (target size)";
+  const char* largest = "the raw caustic output (target size, per view)";
   std::uint64_t most = t.raw;
   const std::pair<std::uint64_t, const char*> others[] = {
-      {t.godRays, "the god-ray march texture (target size, godRays.resolution)"},
+      {t.godRays, "the god-ray march texture (target size, godRays.resolution, per view)"},
+      {t.lookups, "the tile irradiance's half-resolution lookups (target size, per view)"},
       {t.irradiance, "the irradiance layers (caustics.gridResolution, depthLayers)"},
       {t.tile,
        "the tile irradiance (caustics.tileResolution, tileDepthLayers, tileLookupResolution)"},

@@ -17,7 +17,15 @@ LightCausticMap lightCausticMap(const Context& context) noexcept {
 }
 
 GlName rawCausticTexture(const Context& context) noexcept {
-  return context.caustics.rawTexture();
+  return context.defaultView.caustics.raw.id();
+}
+
+GlName rawCausticTexture(const View& view) noexcept {
+  return view.caustics.raw.id();
+}
+
+std::uint64_t viewAllocatedBytes(const View& view) noexcept {
+  return view.allocatedBytes();
 }
 
 CausticIrradianceInfo causticIrradiance(const Context& context) noexcept {

@@ -369,8 +369,9 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
       (hasFeature(create.features, Feature::Caustics) && frame.caustics.enabled) ||
       (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled);
   if (!waterNeeded && frame.water.texture.texture == 0) {
-    out.width = target.width;
-    out.height = target.height;
+    out.x = out.y = 0;
+    out.width = out.targetWidth = target.width;
+    out.height = out.targetHeight = target.height;
     out.water = {};
     out.waterMipmapped = false;
     return checkShadowTexture(create, frame, error);
@@ -397,8 +398,9 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
   r = checkShadowTexture(create, frame, error);
   if (r != Result::Ok) return r;
 
-  out.width = target.width;
-  out.height = target.height;
+  out.x = out.y = 0;
+  out.width = out.targetWidth = target.width;
+  out.height = out.targetHeight = target.height;
   out.water.width = water.width;
   out.water.height = water.height;
   out.waterMipmapped = isMipComplete(frame.water.texture.texture, water.width, water.height);

@@ -56,7 +56,11 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
 
 // What the texture checks learnt, for the pass.
 struct ValidatedTextures {
-  int width = 0, height = 0;  // of the target (= G-buffer)
+  // The view's rectangle in its target (ViewDesc::viewport; the whole target for a FrameDesc):
+  // lower-left pixel and size. Every pass works in it; the blocks describe its size.
+  int x = 0, y = 0;
+  int width = 0, height = 0;
+  int targetWidth = 0, targetHeight = 0;  // of the target (= G-buffer)
   WaterTextureInfo water;
   bool waterMipmapped = false;  // mip-complete: sample with mips; otherwise level 0 only
 };

@@ -3,6 +3,7 @@
 #include <glkit/texture.h>
 
 #include "core/host_target.h"
+#include "core/validation.h"
 #include "god_rays/godrays_constants.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
@@ -25,7 +26,6 @@ Result GodRaysPass::init(const std::string& defines, std::string& error) {
       error);
   if (r != Result::Ok) return r;
   framebuffer_ = glkit::createFramebuffer("postfx.god_rays.framebuffer");
-  reducedFramebuffer_ = glkit::createFramebuffer("postfx.god_rays.reduced_framebuffer");
   uniformBuffer_ = glkit::createBuffer(sizeof(shared::GodRaysBlock), nullptr,
                                        GL_DYNAMIC_STORAGE_BIT, "postfx.god_rays.block");
   reducedSampler_ = glkit::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
@@ -54,27 +54,36 @@ Result GodRaysPass::ensureTileProgram(int groups, int cascadeMask, bool physical
                        error);
 }
 
-void GodRaysPass::ensureReduced(int w, int h) {
-  if (reducedTexture_ && reducedWidth_ == w && reducedHeight_ == h) return;
-  reducedTexture_.reset();  // the old size goes first: never two of them allocated at once
-  reducedTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.god_rays.reduced");
+void GodRaysPass::ensureReduced(int w, int h, GodRaysViewTextures& view) {
+  if (view.reduced && view.reducedWidth == w && view.reducedHeight == h) return;
+  view.reduced.reset();  // the old size goes first: never two of them allocated at once
+  view.reduced = glkit::createTexture(GL_TEXTURE_2D, "postfx.god_rays.reduced");
   // Light and distance as four halves (godrays.frag's outReduced): 8 bytes a texel, as RGBA16F,
   // but the upsample gathers a pixel's four texels with two fetches instead of four.
-  glTextureStorage2D(reducedTexture_.id(), 1, GL_RG32UI, w, h);
-  glNamedFramebufferTexture(reducedFramebuffer_.id(), GL_COLOR_ATTACHMENT0, reducedTexture_.id(),
+  glTextureStorage2D(view.reduced.id(), 1, GL_RG32UI, w, h);
+  if (!view.reducedFramebuffer)
+    view.reducedFramebuffer = glkit::createFramebuffer("postfx.god_rays.reduced_framebuffer");
+  glNamedFramebufferTexture(view.reducedFramebuffer.id(), GL_COLOR_ATTACHMENT0, view.reduced.id(),
                             0);
-  reducedWidth_ = w;
-  reducedHeight_ = h;
+  view.reducedWidth = w;
+  view.reducedHeight = h;
 }
 
-Result GodRaysPass::prepare(const FrameDesc& frame, int width, int height,
-                            const shared::GodRaysBlock& block, std::string& error) {
+Result GodRaysPass::prepare(const FrameDesc& frame, const ValidatedTextures& textures,
+                            const shared::GodRaysBlock& block, GodRaysViewTextures& view,
+                            std::string& error) {
+  view_ = &view;
+  viewport_[0] = textures.x;
+  viewport_[1] = textures.y;
+  viewport_[2] = textures.width;
+  viewport_[3] = textures.height;
   const GodRayResolution resolution = frame.godRays.resolution;
   if (resolution != GodRayResolution::Full) {
-    ensureReduced(godRayReducedSize(width, resolution), godRayReducedSize(height, resolution));
+    ensureReduced(godRayReducedSize(textures.width, resolution),
+                  godRayReducedSize(textures.height, resolution), view);
     // An allocation the driver refused leaves the march framebuffer incomplete: found here,
     // before anything is drawn.
-    if (glCheckNamedFramebufferStatus(reducedFramebuffer_.id(), GL_DRAW_FRAMEBUFFER) !=
+    if (glCheckNamedFramebufferStatus(view.reducedFramebuffer.id(), GL_DRAW_FRAMEBUFFER) !=
         GL_FRAMEBUFFER_COMPLETE) {
       error = "godRays: the reduced-resolution march texture could not be allocated";
       return Result::OutOfMemory;
@@ -88,7 +97,7 @@ Result GodRaysPass::prepare(const FrameDesc& frame, int width, int height,
   return Result::Ok;
 }
 
-void GodRaysPass::draw(const FrameDesc& frame, int width, int height, int tileVariant) {
+void GodRaysPass::draw(const FrameDesc& frame, int tileVariant) {
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_GODRAYS_BLOCK_BINDING, uniformBuffer_.id());
   const GLuint full = tileVariant > 0 ? tileFull_[tileVariant - 1].id() : full_.id();
   const GLuint reduced = tileVariant > 0 ? tileReduced_[tileVariant - 1].id() : reduced_.id();
@@ -99,17 +108,18 @@ void GodRaysPass::draw(const FrameDesc& frame, int width, int height, int tileVa
     return;
   }
   // March at reduced size, unblended: every texel is written (light and distance).
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, reducedFramebuffer_.id());
-  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(reducedWidth_),
-                     static_cast<float>(reducedHeight_));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, view_->reducedFramebuffer.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(view_->reducedWidth),
+                     static_cast<float>(view_->reducedHeight));
   glDisablei(GL_BLEND, 0);
   glUseProgram(reduced);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  // Upsample, added into the target.
+  // Upsample, added into the view's rectangle of the target.
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
-  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
+  glViewportIndexedf(0, static_cast<float>(viewport_[0]), static_cast<float>(viewport_[1]),
+                     static_cast<float>(viewport_[2]), static_cast<float>(viewport_[3]));
   glEnablei(GL_BLEND, 0);
-  glBindTextureUnit(POSTFX_UNIT_GODRAYS_REDUCED, reducedTexture_.id());
+  glBindTextureUnit(POSTFX_UNIT_GODRAYS_REDUCED, view_->reduced.id());
   glBindSampler(POSTFX_UNIT_GODRAYS_REDUCED, reducedSampler_.id());
   glUseProgram(upsample_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

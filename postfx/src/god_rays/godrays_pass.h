@@ -7,6 +7,7 @@
 // (POSTFX_UNIT_GODRAYS_REDUCED).
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <string>
 
 #include <glkit/handle.h>
@@ -16,6 +17,19 @@
 #include "core/shared_math.h"
 
 namespace postfx::detail {
+
+struct ValidatedTextures;
+
+// What one view (postfx/views.h) owns of the god-ray pass: its reduced-resolution march texture
+// (GodRaySettings::resolution below Full, its viewport's size divided, allocated on first use).
+struct GodRaysViewTextures {
+  glkit::Texture reduced;
+  glkit::Framebuffer reducedFramebuffer;
+  int reducedWidth = 0, reducedHeight = 0;
+  std::uint64_t allocatedBytes() const {
+    return std::uint64_t(reducedWidth) * std::uint64_t(reducedHeight) * 8;  // RG32UI
+  }
+};
 
 class GodRaysPass {
  public:
@@ -29,15 +43,16 @@ class GodRaysPass {
   Result ensureTileProgram(int groups, int cascadeMask, bool physical, int& variant,
                            std::string& error);
 
-  // Attaches the host target, sizes the reduced-resolution texture when used, uploads the block.
-  Result prepare(const FrameDesc& frame, int width, int height, const shared::GodRaysBlock& block,
-                 std::string& error);
+  // Attaches the host target, sizes the view's reduced-resolution texture when used, uploads the
+  // block; `view` and the rectangle are drawn with until the next prepare.
+  Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
+                 const shared::GodRaysBlock& block, GodRaysViewTextures& view, std::string& error);
   // tileVariant: 0 for the RayDeviation march, else ensureTileProgram's.
-  void draw(const FrameDesc& frame, int width, int height, int tileVariant = 0);
+  void draw(const FrameDesc& frame, int tileVariant = 0);
   void finish();  // lets go of the host's texture
 
  private:
-  void ensureReduced(int width, int height);
+  void ensureReduced(int width, int height, GodRaysViewTextures& view);
 
   std::string defines_;
   glkit::Program full_, reduced_, upsample_;
@@ -45,11 +60,11 @@ class GodRaysPass {
   static constexpr int kTileMasks = 1 << kMaxCascades;
   static constexpr int kTileVariants = 2 * kTileMasks;
   glkit::Program tileFull_[2 * kTileVariants], tileReduced_[2 * kTileVariants];
-  glkit::Framebuffer framebuffer_, reducedFramebuffer_;
+  glkit::Framebuffer framebuffer_;
   glkit::Buffer uniformBuffer_;
-  glkit::Texture reducedTexture_;
   glkit::Sampler reducedSampler_;
-  int reducedWidth_ = 0, reducedHeight_ = 0;
+  GodRaysViewTextures* view_ = nullptr;  // the view prepare() set up
+  int viewport_[4] = {0, 0, 0, 0};       // its rectangle in the target: x, y, width, height
 };
 
 }  // namespace postfx::detail

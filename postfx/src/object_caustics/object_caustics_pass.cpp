@@ -80,8 +80,10 @@ Result ObjectCausticsPass::init(const std::string& defines, int maxLocalLights,
   alignment = std::max(alignment, 1);
   const GLintptr size = sizeof(shared::ObjectCausticsBlock);
   blockStride_ = (size + alignment - 1) / alignment * alignment;
-  uniformBuffer_ = glkit::createBuffer(blockStride_ * (1 + maxLocalLights), nullptr,
-                                       GL_DYNAMIC_STORAGE_BIT, "postfx.object_caustics.block");
+  blockCapacity_ = static_cast<std::size_t>(1 + maxLocalLights);
+  uniformBuffer_ =
+      glkit::createBuffer(blockStride_ * static_cast<GLintptr>(blockCapacity_), nullptr,
+                          GL_DYNAMIC_STORAGE_BIT, "postfx.object_caustics.block");
   frontFbo_ = glkit::createFramebuffer("postfx.object_caustics.front");
   backFbo_ = glkit::createFramebuffer("postfx.object_caustics.back");
   splatFbo_ = glkit::createFramebuffer("postfx.object_caustics.splat");
@@ -148,9 +150,10 @@ void ObjectCausticsPass::ensureLightMap(int size) {
 }
 
 Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectCausticsViews& views,
+                                   std::span<const ObjectCausticsTarget> targets,
                                    std::string& error) {
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
-  const shared::ObjectCausticsBlock& block = views.sun ? views.sunBlock : views.lightBlocks[0];
+  const shared::ObjectCausticsBlock& block = views.blocks[views.sun ? 0 : 1];
   dispersed_ = block.receiver.w > 0.5f;
   ensureLandings(s.gridSize, dispersed_ ? 6 : 2);
   ensureGrid(s.gridSize);
@@ -183,18 +186,33 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectCausticsV
       return Result::OutOfMemory;
     }
   }
-  if (!attachHostTarget(compositeFbo_.id(), frame.target.texture, "object caustics", error)) {
-    glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
-    return Result::GlError;
+  for (const ObjectCausticsTarget& target : targets) {
+    if (!attachHostTarget(compositeFbo_.id(), target.frame->target.texture, "object caustics",
+                          error)) {
+      glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+      return Result::GlError;
+    }
   }
-  // One upload: the sun's block in slot 0, light k's in slot k + 1.
-  const std::size_t slots = 1 + views.lightBlocks.size();
+  // One upload: camera view v's sun block in slot v * slotsPerView, light k's after it.
+  const std::size_t slots = views.blocks.size();
+  if (slots > blockCapacity_) {
+    glkit::Buffer grown =
+        glkit::createBuffer(blockStride_ * static_cast<GLintptr>(slots), nullptr,
+                            GL_DYNAMIC_STORAGE_BIT, "postfx.object_caustics.block");
+    GLint64 stored = 0;
+    glGetNamedBufferParameteri64v(grown.id(), GL_BUFFER_SIZE, &stored);
+    if (stored < blockStride_ * static_cast<GLint64>(slots)) {
+      error = "objectCaustics: the driver could not allocate the views' constant blocks";
+      return Result::OutOfMemory;
+    }
+    uniformBuffer_ = std::move(grown);
+    blockCapacity_ = slots;
+  }
   std::vector<unsigned char> bytes(static_cast<std::size_t>(blockStride_) * slots);
-  if (views.sun) std::memcpy(bytes.data(), &views.sunBlock, sizeof(views.sunBlock));
-  for (std::size_t k = 0; k < views.lightBlocks.size(); ++k)
-    std::memcpy(bytes.data() + (k + 1) * blockStride_, &views.lightBlocks[k],
-                sizeof(views.lightBlocks[k]));
+  for (std::size_t i = 0; i < slots; ++i)
+    std::memcpy(bytes.data() + i * blockStride_, &views.blocks[i], sizeof(views.blocks[i]));
   glNamedBufferSubData(uniformBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes.size()), bytes.data());
+  slotsPerView_ = views.slotsPerView();
   lights_ = views.lights;
   if (!views.sun) return Result::Ok;
   const ObjectCausticMap placement = describeObjectCausticMap(views.sunFrame, s.mapSize);
@@ -334,10 +352,14 @@ void ObjectCausticsPass::filterTemporally(const FrameDesc& frame) {
   map_.texture = history_[out].id();
 }
 
-void ObjectCausticsPass::composite(const FrameDesc& frame, GLuint map, GLuint receiverDepth,
-                                   int width, int height) {
+void ObjectCausticsPass::composite(const ObjectCausticsTarget& target, GLuint map,
+                                   GLuint receiverDepth) {
+  const FrameDesc& frame = *target.frame;
+  const ValidatedTextures& r = target.rect;
+  glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, frame.target.texture, 0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_.id());
-  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
+  glViewportIndexedf(0, static_cast<float>(r.x), static_cast<float>(r.y),
+                     static_cast<float>(r.width), static_cast<float>(r.height));
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
@@ -379,7 +401,9 @@ void ObjectCausticsPass::setDrawState() {
     glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i));
 }
 
-void ObjectCausticsPass::drawSun(const FrameDesc& frame, int width, int height) {
+void ObjectCausticsPass::drawSun(std::span<const ObjectCausticsTarget> targets) {
+  // The maps depend on the sun and the casters only: drawn once, with the first view's block.
+  const FrameDesc& frame = *targets[0].frame;
   bindBlock(0);
   const GLuint receiverDepth = frame.objectCaustics.receivers.depth.texture;
   drawCasterMaps(frame, light_);
@@ -388,10 +412,14 @@ void ObjectCausticsPass::drawSun(const FrameDesc& frame, int width, int height) 
   glBindVertexArray(emptyVao_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(mapSize_), static_cast<float>(mapSize_));
   filterTemporally(frame);
-  composite(frame, map_.texture, receiverDepth, width, height);
+  for (std::size_t v = 0; v < targets.size(); ++v) {
+    bindBlock(static_cast<int>(v * slotsPerView_));
+    composite(targets[v], map_.texture, receiverDepth);
+  }
 }
 
-void ObjectCausticsPass::drawLight(const FrameDesc& frame, int k, int width, int height) {
+void ObjectCausticsPass::drawLight(std::span<const ObjectCausticsTarget> targets, int k) {
+  const FrameDesc& frame = *targets[0].frame;
   const ObjectLightFrame& view = lights_[static_cast<std::size_t>(k)];
   bindBlock(k + 1);
   const GLuint receiverDepth = frame.objectCaustics.lights[view.light].receivers.depth.texture;
@@ -401,7 +429,10 @@ void ObjectCausticsPass::drawLight(const FrameDesc& frame, int k, int width, int
   traceRays(receiverDepth);
   drawSplats(lightFbo_.id(), lightMapSize_);
   glBindVertexArray(emptyVao_.id());
-  composite(frame, lightMap_.id(), receiverDepth, width, height);
+  for (std::size_t v = 0; v < targets.size(); ++v) {
+    bindBlock(static_cast<int>(v * slotsPerView_) + k + 1);
+    composite(targets[v], lightMap_.id(), receiverDepth);
+  }
   lightMapClip_ = localLightMapClip(view);
 }
 

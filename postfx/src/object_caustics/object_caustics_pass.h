@@ -14,6 +14,7 @@
 // area (keeping it would lose a third of a sphere's light).
 #include <epoxy/gl.h>
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,18 +22,28 @@
 #include <glkit/program.h>
 #include <postfx/postfx.h>
 
+#include "core/validation.h"
 #include "object_caustics/object_caustics_frame.h"
 
 namespace postfx::detail {
 
-// What one frame draws: the sun's view and the local lights' that reach a caster, each with its
-// block.
+// What one frame draws: the sun's view and the local lights' that reach a caster, each with a
+// block per camera view (postfx/views.h). The maps are the same for every camera view; only the
+// composite's camera constants differ.
 struct ObjectCausticsViews {
   bool sun = false;
   ObjectLightFrame sunFrame;
-  shared::ObjectCausticsBlock sunBlock{};
   std::vector<ObjectLightFrame> lights;
-  std::vector<shared::ObjectCausticsBlock> lightBlocks;
+  // Camera view v's blocks from v * slotsPerView(): the sun's (slot 0) and light k's (k + 1).
+  std::vector<shared::ObjectCausticsBlock> blocks;
+  std::size_t slotsPerView() const { return 1 + lights.size(); }
+};
+
+// One camera view the composite adds light into: its frame (camera, G-buffer, target) and its
+// rectangle in the target.
+struct ObjectCausticsTarget {
+  const FrameDesc* frame = nullptr;
+  ValidatedTextures rect;
 };
 
 class ObjectCausticsPass {
@@ -40,16 +51,18 @@ class ObjectCausticsPass {
   // maxLocalLights: CreateDesc's; the uniform buffer holds a block for the sun and each light.
   Result init(const std::string& defines, int maxLocalLights, std::string& error);
 
-  // Sizes the maps, attaches the host target, uploads the blocks. GlError with a message when
-  // a framebuffer is incomplete. Call under a GlStateGuard.
-  Result prepare(const FrameDesc& frame, const ObjectCausticsViews& views, std::string& error);
+  // Sizes the maps, checks every camera view's target, uploads the blocks. GlError with a
+  // message when a framebuffer is incomplete. Call under a GlStateGuard.
+  Result prepare(const FrameDesc& frame, const ObjectCausticsViews& views,
+                 std::span<const ObjectCausticsTarget> targets, std::string& error);
   // The pass's own fixed-function state; call under a GlStateGuard and an
   // ObjectCausticsStateGuard, before the draws.
   void setDrawState();
-  // Steps 1-4 for the sun's view, then (each timed on its own) for prepared light k: steps 1,
-  // 2 and 4 (a local light's map is not filtered temporally).
-  void drawSun(const FrameDesc& frame, int width, int height);
-  void drawLight(const FrameDesc& frame, int k, int width, int height);
+  // Steps 1-3 for the sun's view once, step 4 into every camera view's target; then (each timed
+  // on its own) for prepared light k: steps 1 and 2 once and 4 per camera view (a local light's
+  // map is not filtered temporally).
+  void drawSun(std::span<const ObjectCausticsTarget> targets);
+  void drawLight(std::span<const ObjectCausticsTarget> targets, int k);
   // After the last draw: lets go of the host's target.
   void finishDraws();
 
@@ -69,12 +82,14 @@ class ObjectCausticsPass {
   void traceRays(GLuint receiverDepth);
   void drawSplats(GLuint fbo, int mapSize);
   void filterTemporally(const FrameDesc& frame);
-  void composite(const FrameDesc& frame, GLuint map, GLuint receiverDepth, int width, int height);
+  void composite(const ObjectCausticsTarget& target, GLuint map, GLuint receiverDepth);
 
   glkit::Program caster_, trace_, splat_, temporal_, composite_;
   glkit::VertexArray meshVao_, emptyVao_;
   glkit::Buffer uniformBuffer_;
-  GLintptr blockStride_ = 0;  // bytes between the blocks in uniformBuffer_ (offset alignment)
+  GLintptr blockStride_ = 0;       // bytes between the blocks in uniformBuffer_ (offset alignment)
+  std::size_t blockCapacity_ = 0;  // blocks uniformBuffer_ holds (grows with the camera views)
+  std::size_t slotsPerView_ = 1;   // this frame's ObjectCausticsViews::slotsPerView()
   glkit::Framebuffer frontFbo_, backFbo_, splatFbo_, temporalFbo_, compositeFbo_, lightFbo_;
   glkit::Texture frontPosition_, frontNormal_, backPosition_, backNormal_;
   glkit::Texture casterDepth_;

@@ -134,67 +134,78 @@ Result CausticsPass::ensureTileProgram(int groups, int cascadeMask, bool reduced
       error);
 }
 
-void CausticsPass::ensureReduced(int width, int height) {
+std::uint64_t CausticsViewTextures::allocatedBytes() const {
+  return std::uint64_t(rawWidth) * std::uint64_t(rawHeight) * 2 +         // R16F
+         std::uint64_t(reducedWidth) * std::uint64_t(reducedHeight) * 4;  // R32UI
+}
+
+void CausticsPass::ensureReduced(int width, int height, CausticsViewTextures& view) {
   const int w = (width + 1) / 2, h = (height + 1) / 2;  // texel i: pixel 2i
-  fullWidth_ = width;
-  fullHeight_ = height;
-  if (reducedTexture_ && reducedWidth_ == w && reducedHeight_ == h) return;
-  reducedTexture_.reset();  // the old size goes first: never two of them allocated at once
-  reducedTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.tile_lookups");
-  glTextureStorage2D(reducedTexture_.id(), 1, GL_R32UI, w, h);  // two halves
-  reducedWidth_ = w;
-  reducedHeight_ = h;
-  if (!reducedFramebuffer_)
-    reducedFramebuffer_ = makeFramebuffer(1, "postfx.caustics.tile_lookups");
-  glNamedFramebufferTexture(reducedFramebuffer_.id(), GL_COLOR_ATTACHMENT0, reducedTexture_.id(),
+  if (view.reduced && view.reducedWidth == w && view.reducedHeight == h) return;
+  view.reduced.reset();  // the old size goes first: never two of them allocated at once
+  view.reduced = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.tile_lookups");
+  glTextureStorage2D(view.reduced.id(), 1, GL_R32UI, w, h);  // two halves
+  view.reducedWidth = w;
+  view.reducedHeight = h;
+  if (!view.reducedFramebuffer)
+    view.reducedFramebuffer = makeFramebuffer(1, "postfx.caustics.tile_lookups");
+  glNamedFramebufferTexture(view.reducedFramebuffer.id(), GL_COLOR_ATTACHMENT0, view.reduced.id(),
                             0);
 }
 
 void CausticsPass::drawReducedLookups(const glkit::Program& program) {
   // Under bindState's state, with the tile irradiance on its unit: its own target, unblended.
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, reducedFramebuffer_.id());
-  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(reducedWidth_),
-                     static_cast<float>(reducedHeight_));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, view_->reducedFramebuffer.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(view_->reducedWidth),
+                     static_cast<float>(view_->reducedHeight));
   glDisablei(GL_BLEND, 0);
   glUseProgram(program.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   // Back to bindState's: the upsample reads the lookups on the irradiance unit, texel by texel.
-  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(fullWidth_),
-                     static_cast<float>(fullHeight_));
+  glViewportIndexedf(0, static_cast<float>(viewport_.x), static_cast<float>(viewport_.y),
+                     static_cast<float>(viewport_.width), static_cast<float>(viewport_.height));
   glEnablei(GL_BLEND, 0);
-  glBindTextureUnit(POSTFX_UNIT_TILE_REDUCED, reducedTexture_.id());
+  glBindTextureUnit(POSTFX_UNIT_TILE_REDUCED, view_->reduced.id());
   glBindSampler(POSTFX_UNIT_TILE_REDUCED, pointSampler_.id());
 }
 
-void CausticsPass::ensureRaw(int width, int height) {
+void CausticsPass::ensureRaw(const ValidatedTextures& textures, CausticsViewTextures& view) {
   if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
-  if (rawTexture_ && rawWidth_ == width && rawHeight_ == height) return;
-  rawTexture_.reset();  // the old size goes first: never two of them allocated at once
-  rawTexture_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.raw");
-  const GLuint raw = rawTexture_.id();
-  glTextureStorage2D(raw, 1, GL_R16F, width, height);
-  glTextureParameteri(raw, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(raw, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  rawWidth_ = width;
-  rawHeight_ = height;
-  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, raw, 0);
+  const int width = textures.targetWidth, height = textures.targetHeight;
+  if (!(view.raw && view.rawWidth == width && view.rawHeight == height)) {
+    view.raw.reset();  // the old size goes first: never two of them allocated at once
+    view.raw = glkit::createTexture(GL_TEXTURE_2D, "postfx.caustics.raw");
+    const GLuint raw = view.raw.id();
+    glTextureStorage2D(raw, 1, GL_R16F, width, height);
+    glTextureParameteri(raw, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(raw, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Outside its viewport a view's raw output reads 0, as a skipped pass's does.
+    glClearTexImage(raw, 0, GL_RED, GL_FLOAT, nullptr);
+    view.rawWidth = width;
+    view.rawHeight = height;
+  }
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, view.raw.id(), 0);
   if (floorFramebuffer_)
-    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT1, raw, 0);
+    glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT1, view.raw.id(), 0);
 }
 
-void CausticsPass::clearRaw(int width, int height) {
+void CausticsPass::clearRaw(const ValidatedTextures& textures, CausticsViewTextures& view) {
   if (!hasFeature(desc_.features, testing::RawCausticOutput)) return;
-  ensureRaw(width, height);
+  ensureRaw(textures, view);
   // A texture operation: no framebuffer, scissor or mask state involved.
-  glClearTexImage(rawTexture_.id(), 0, GL_RED, GL_FLOAT, nullptr);
+  glClearTexSubImage(view.raw.id(), 0, textures.x, textures.y, 0, textures.width, textures.height,
+                     1, GL_RED, GL_FLOAT, nullptr);
 }
 
 Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& textures,
-                             const shared::CausticsBlock& block, std::string& error) {
-  ensureRaw(textures.width, textures.height);
+                             const shared::CausticsBlock& block, CausticsViewTextures& view,
+                             std::string& error) {
+  view_ = &view;
+  viewport_ = textures;
+  ensureRaw(textures, view);
   if (frame.caustics.enabled && frame.caustics.model == CausticsModel::TileIrradiance &&
       frame.caustics.tileLookupResolution == CausticsLookupResolution::Half)
-    ensureReduced(textures.width, textures.height);
+    ensureReduced(textures.width, textures.height, view);
   if (floorFramebuffer_)
     glNamedFramebufferTexture(floorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.target.texture,
                               0);
@@ -209,8 +220,8 @@ Result CausticsPass::prepare(const FrameDesc& frame, const ValidatedTextures& te
 void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& textures,
                              GLuint irradiance, GLuint tile) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
-  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(textures.width),
-                     static_cast<float>(textures.height));
+  glViewportIndexedf(0, static_cast<float>(textures.x), static_cast<float>(textures.y),
+                     static_cast<float>(textures.width), static_cast<float>(textures.height));
   glDisablei(GL_SCISSOR_TEST, 0);
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_ONE, GL_ONE, GL_ONE, GL_ONE);

@@ -7,6 +7,7 @@
 // above-water pixels leave with a discard.
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <string>
 
 #include <glkit/handle.h>
@@ -18,6 +19,19 @@
 
 namespace postfx::detail {
 
+// What one view (postfx/views.h) owns of the caustics pass: its raw output (RawCausticOutput,
+// the size of its target) and its half-resolution lookups (CausticsLookupResolution::Half, the
+// size of half its viewport, allocated on first use). Kept per view so that views of different
+// sizes never reallocate each other's every frame; freed with the view.
+struct CausticsViewTextures {
+  glkit::Texture raw;
+  int rawWidth = 0, rawHeight = 0;
+  glkit::Texture reduced;
+  glkit::Framebuffer reducedFramebuffer;
+  int reducedWidth = 0, reducedHeight = 0;
+  std::uint64_t allocatedBytes() const;
+};
+
 // The #defines of the context's features and conventions, for every postfx program.
 std::string shaderDefines(const CreateDesc& desc);
 
@@ -26,10 +40,12 @@ class CausticsPass {
   // Builds the programs for the context's features and the GL objects (DSA: binds nothing).
   Result init(const CreateDesc& desc, std::string& error);
 
-  // Attaches the host target (and the raw output, resized to it when needed). GL_ERROR with a
-  // message when the framebuffer is incomplete.
+  // Attaches the host target (and the view's raw output, resized to it when needed), sizes the
+  // view's reduced lookups when used, uploads the block; `view` is drawn with until the next
+  // prepare. GL_ERROR with a message when the framebuffer is incomplete.
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
-                 const shared::CausticsBlock& block, std::string& error);
+                 const shared::CausticsBlock& block, CausticsViewTextures& view,
+                 std::string& error);
   // The variant of the caustics program that reads the tile irradiance: `groups` RGBA fetches
   // per cascade (1 or 2) for the cascades in `cascadeMask` (bit c: cascade c); `physical`: the
   // WavefrontAreaRatio window, continued beyond its edge by the tile irradiance (looked up per
@@ -50,14 +66,12 @@ class CausticsPass {
   void drawCaustics(int tileVariant = 0);
   // Lets go of the host's texture (our framebuffer must not keep it alive) and unbinds.
   void finish();
-  // The pass was skipped: the raw output (if any) must read 0, resized to the frame.
-  void clearRaw(int width, int height);
-
-  GLuint rawTexture() const { return rawTexture_.id(); }
+  // The pass was skipped in `view`: its raw output (if any) must read 0, resized to the target.
+  void clearRaw(const ValidatedTextures& textures, CausticsViewTextures& view);
 
  private:
-  void ensureRaw(int width, int height);
-  void ensureReduced(int width, int height);
+  void ensureRaw(const ValidatedTextures& textures, CausticsViewTextures& view);
+  void ensureReduced(int width, int height, CausticsViewTextures& view);
   void drawReducedLookups(const glkit::Program& program);
 
   CreateDesc desc_{};
@@ -77,12 +91,8 @@ class CausticsPass {
   glkit::Sampler pointSampler_, waterMipSampler_, waterLinearSampler_;
   glkit::Sampler shadowForwardSampler_, shadowReverseSampler_, irradianceSampler_;
   glkit::Sampler tileSampler_;
-  glkit::Texture rawTexture_;
-  int rawWidth_ = 0, rawHeight_ = 0;
-  // The half-resolution lookups (CausticsLookupResolution::Half), RG16F, allocated on first use.
-  glkit::Texture reducedTexture_;
-  glkit::Framebuffer reducedFramebuffer_;
-  int reducedWidth_ = 0, reducedHeight_ = 0, fullWidth_ = 0, fullHeight_ = 0;
+  CausticsViewTextures* view_ = nullptr;  // the view prepare() set up
+  ValidatedTextures viewport_;            // its rectangle in the target
 };
 
 }  // namespace postfx::detail

@@ -109,8 +109,12 @@ double WavefrontAreaRatioPass::pollClampCounts() {
   return newest;
 }
 
-Result WavefrontAreaRatioPass::reserve(const FrameDesc& frame, std::string& error) {
+void WavefrontAreaRatioPass::place(const FrameDesc& frame) {
   layout_ = wavefrontAreaRatioLayout(frame);
+}
+
+Result WavefrontAreaRatioPass::reserve(const FrameDesc& frame, std::string& error) {
+  place(frame);
   ensureTexture(layout_.resolution, layout_.layers, layout_.spread);
   ensureGridPoints(layout_.cells + 1);
   // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer

@@ -41,6 +41,9 @@ class WavefrontAreaRatioPass {
   // Allocates this frame's irradiance layers and grid points (before any pass adds light);
   // OutOfMemory with a message when the driver could not.
   Result reserve(const FrameDesc& frame, std::string& error);
+  // Places the window around `frame`'s camera (reserve() did for its frame): each view of a
+  // frame draws its own window into the one texture, which reserve() sized for all.
+  void place(const FrameDesc& frame);
   // Records the pass: clears and fills every layer. Expects the caustics pass's fixed-function
   // state (blend ONE, ONE on draw buffer 0, no cull/scissor) and the water texture bound on
   // its unit; binds its own framebuffer, viewport, programs, vertex array, SSBO bindings 0 and

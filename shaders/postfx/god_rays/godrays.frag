@@ -96,7 +96,8 @@ void emit(vec3 light, float pixelDistance) {
 void main() {
 #if POSTFX_GODRAYS_REDUCED
   // Reduced texel i stands for full-resolution pixel k*i (the upsample relies on it).
-  ivec2 pixel = min(ivec2(gl_FragCoord.xy) * int(g.reduction.x), ivec2(u.viewport.zw) - 1);
+  ivec2 pixel = min(ivec2(gl_FragCoord.xy) * int(g.reduction.x), ivec2(u.viewport.zw) - 1) +
+                ivec2(u.viewOrigin.xy);
 #else
   ivec2 pixel = ivec2(gl_FragCoord.xy);
 #endif

@@ -11,7 +11,7 @@ const float kSkyDistance = 65000.0;
 // View-space unit direction of `pixel` and the distance to what it sees (kSkyDistance for the
 // sky). A NaN depth texel gives a NaN distance, which the callers treat as "nothing here".
 vec3 pixelViewRay(ivec2 pixel, out float pixelDistance) {
-  vec2 uv = (vec2(pixel) + 0.5) * u.viewport.xy;
+  vec2 uv = (vec2(pixel) - u.viewOrigin.xy + 0.5) * u.viewport.xy;  // pixel: in the target
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
   if (isSkyDepth(depth, POSTFX_DEPTH_CONVENTION)) {
     vec2 ndc = uv * 2.0 - 1.0;

@@ -18,8 +18,9 @@ void main() {
   if (!(z0 > 0.0)) discard;  // NaN depth texel
   // Reduced texel i sits on full pixel k*i; pixel k*i + j lies j/k of the way to texel i + 1.
   int k = int(g.reduction.x);
-  ivec2 base = pixel / k;
-  vec2 f = vec2(pixel - base * k) / float(k);
+  ivec2 local = pixel - ivec2(u.viewOrigin.xy);  // in the view
+  ivec2 base = local / k;
+  vec2 f = vec2(local - base * k) / float(k);
   // Two gathers at the corner between texels base and base + 1 read both words of all four,
   // clamped to the edge (the texture is exactly the reduced viewport's size).
   vec2 corner = vec2(base + 1) * g.reducedViewport.xy;

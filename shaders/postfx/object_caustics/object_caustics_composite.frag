@@ -23,7 +23,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
   if (isSkyDepth(depth, POSTFX_DEPTH_CONVENTION)) discard;
-  vec3 viewPos = viewPositionFromDepth(gl_FragCoord.xy * u.viewport.xy, depth, u.projection,
+  vec3 viewPos = viewPositionFromDepth((gl_FragCoord.xy - u.viewOrigin.xy) * u.viewport.xy, depth, u.projection,
                                        u.depthParams.xy, POSTFX_DEPTH_CONVENTION);
   vec3 p = mat3(u.viewToWorld) * viewPos + u.cameraOffset.xyz;  // anchor-relative
   vec3 n = decodeNormal(texelFetch(gbufferNormal, pixel, 0), POSTFX_NORMAL_ENCODING);

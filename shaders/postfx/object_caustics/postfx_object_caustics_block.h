@@ -48,6 +48,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
                       // w: 1 when a caster is dispersed (one ray per channel)
   vec4 cameraOffset;  // xyz: camera - anchor (m); w: water level - anchor y (m)
   vec4 viewport;      // 1/width, 1/height, width, height
+  vec4 viewOrigin;    // xy: the view's lower-left pixel in the target; zw: unused
   vec4 projection;    // P[0][0], P[1][1], P[2][0], P[2][1]
   vec4 depthParams;   // xy: P[2][2], P[3][2]; z: 1 when the casters are under water;
                       // w: back-surface (exit) iterations
@@ -65,7 +66,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
 #ifdef __cplusplus
 };
 static_assert(sizeof(ObjectCausticsBlock) ==
-                  5 * 64 + 17 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
+                  5 * 64 + 18 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
               "ObjectCausticsBlock must match its std140 layout");
 #else
 }

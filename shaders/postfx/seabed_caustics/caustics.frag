@@ -51,7 +51,7 @@ void main() {
     emitNothing();
     return;
   }
-  vec3 viewPos = viewPositionFromDepth(gl_FragCoord.xy * u.viewport.xy, depth, u.projection,
+  vec3 viewPos = viewPositionFromDepth((gl_FragCoord.xy - u.viewOrigin.xy) * u.viewport.xy, depth, u.projection,
                                        u.depthAndWater.xy, POSTFX_DEPTH_CONVENTION);
   vec3 p = mat3(u.viewToWorld) * viewPos;  // camera-relative world position
   float depthBelow = u.depthAndWater.z - p.y;
@@ -79,7 +79,7 @@ void main() {
 
 #if defined(POSTFX_TILE_IRRADIANCE) && !POSTFX_WAVEFRONT_AREA_RATIO
 #if POSTFX_TILE_REDUCED
-  vec3 omega = vec3(upsampledTileIrradiance(pixel, distance));
+  vec3 omega = vec3(upsampledTileIrradiance(pixel - ivec2(u.viewOrigin.xy), distance));
 #else
   vec3 omega = vec3(tileIrradianceAt(p, depthBelow, logFootprint));
 #endif

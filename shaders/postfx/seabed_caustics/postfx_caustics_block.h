@@ -54,10 +54,12 @@ layout(std140, binding = POSTFX_CAUSTICS_BLOCK_BINDING) uniform CausticsBlock {
                              // irradiance, and their array layers, are compiled in.
   vec4 tileDrift;            // d(landing offset per metre of depth) / d(slopes) at flat water,
                              // column-major 2x2 (tileLinearOffset)
+  vec4 viewOrigin;           // xy: the view's lower-left pixel in the target (ViewDesc::viewport;
+                             // 0 for a whole target); zw: unused
 #ifdef __cplusplus
 };
 static_assert(sizeof(CausticsBlock) ==
-                  2 * 64 + 11 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 5 * 16,
+                  2 * 64 + 11 * 16 + 3 * POSTFX_MAX_CASCADES * 16 + 3 * 16 + 6 * 16,
               "CausticsBlock must match its std140 layout");
 #else
 }

@@ -21,11 +21,13 @@
 layout(location = 0) out uint outLookup;
 
 void main() {
-  ivec2 pixel = min(ivec2(gl_FragCoord.xy) * 2, ivec2(u.viewport.zw) - 1);
+  // Texel i stands for the view's pixel 2i; the G-buffer is read where the view lies in it.
+  ivec2 local = min(ivec2(gl_FragCoord.xy) * 2, ivec2(u.viewport.zw) - 1);
+  ivec2 pixel = local + ivec2(u.viewOrigin.xy);
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
   float e = 1.0, distance = kReducedNoSurface;
   if (!isSkyDepth(depth, POSTFX_DEPTH_CONVENTION)) {
-    vec3 viewPos = viewPositionFromDepth((vec2(pixel) + 0.5) * u.viewport.xy, depth, u.projection,
+    vec3 viewPos = viewPositionFromDepth((vec2(local) + 0.5) * u.viewport.xy, depth, u.projection,
                                          u.depthAndWater.xy, POSTFX_DEPTH_CONVENTION);
     vec3 p = mat3(u.viewToWorld) * viewPos;
     float depthBelow = u.depthAndWater.z - p.y;
