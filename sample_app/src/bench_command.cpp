@@ -10,6 +10,9 @@
 // caustics pass sampling both), with the clamp's bias on stderr.
 // Object caustics: likewise one short run per caustic-map size, ray-grid size and hit-iteration
 // count, reported as rows object_caustics_<map>_<grid>_<iterations>.
+// Several views: the plugin's whole time per frame (every pass but the floor) for 1, 2 and 6
+// views of the scene (cameras turned 60 degrees apart) drawn by one context in one dispatch,
+// rows views_<n>, against the same views drawn by one context each, rows contexts_<n>.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -24,6 +27,7 @@
 #include "camera.h"
 #include "commands.h"
 #include "headless_session.h"
+#include "multi_view.h"
 #include "plugin_setup.h"
 #include "renderer.h"
 #include "view_flags.h"
@@ -181,6 +185,69 @@ int runBench(const Options& commandOptions) {
       if (!stats) return commandFailed(error);
       addRow(name, *stats, postfx::Pass::ObjectCaustics);
     }
+  }
+
+  if (wanted("views") || wanted("contexts")) {
+    auto views = MultiView::create(renderer, session.scene, 6, error);
+    if (!views) return commandFailed(error);
+    const int total = kWarmupFrames + variantFrames + postfx::kTimerRingDepth;
+    auto inputsFor = [&](int count, double seconds) {
+      std::vector<FrameInput> inputs;
+      for (int i = 0; i < count; ++i) {
+        FrameInput view = input;
+        view.camera.yaw += glm::radians(60.0) * i;
+        view.timeSeconds = seconds;
+        inputs.push_back(view);
+      }
+      return inputs;
+    };
+    // The plugin's time in a frame: every pass but the floor, and the local lights.
+    auto planTotal = [](const postfx::FrameStats& s) {
+      double ms = 0.0;
+      for (int p = 0; p < postfx::kPassCount; ++p)
+        if (postfx::Pass(p) != postfx::Pass::Floor && s.passes[p].present)
+          ms += s.passes[p].medianMs;
+      for (const postfx::PassStats& light : s.lights)
+        if (light.present) ms += light.medianMs;
+      return ms;
+    };
+    for (int count : {1, 2, 6}) {
+      const std::string n = std::to_string(count);
+      std::fprintf(stderr, "bench: %d views in one dispatch, then %d contexts, %d frames\n", count,
+                   count, variantFrames);
+      auto shared = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
+      if (!shared) return commandFailed(error);
+      for (int frame = 0; frame < total; ++frame)
+        if (!views->render(inputsFor(count, options.timeSeconds + frame / 60.0), *shared, nullptr,
+                           error))
+          return commandFailed(error);
+      double multi = planTotal(shared->stats());
+      for (int i = 0; i < count; ++i) multi += planTotal(shared->viewStats(i));
+      const double floorMs = shared->viewStats(0).pass(postfx::Pass::Floor).medianMs;
+      rows.push_back({"views_" + n, multi, floorMs, false});
+      shared.reset();
+      // One context per view: each renderer's own plugin pass (the primary's first: it updates
+      // the ocean the others read).
+      std::vector<std::unique_ptr<PluginSetup>> own;
+      for (int i = 0; i < count; ++i) {
+        own.push_back(PluginSetup::create(views->view(i), options, true, error));
+        if (!own.back()) return commandFailed(error);
+      }
+      for (int frame = 0; frame < total; ++frame) {
+        const auto inputs = inputsFor(count, options.timeSeconds + frame / 60.0);
+        for (int i = 0; i < count; ++i)
+          if (!views->view(i).render(inputs[size_t(i)], error)) return commandFailed(error);
+      }
+      double separate = 0.0;
+      for (const auto& setup : own) separate += planTotal(setup->stats());
+      rows.push_back({"contexts_" + n, separate, floorMs, false});
+      std::fprintf(stderr, "bench: %d views: %.3f ms in one dispatch, %.3f ms in %d contexts\n",
+                   count, multi, separate, count);
+      for (int i = 0; i < count; ++i) views->view(i).setPluginPass({});
+    }
+    // The renderer's plugin pass was the last variant's: give it back its own.
+    session.plugin = PluginSetup::create(renderer, options, true, error);
+    if (!session.plugin) return commandFailed(error);
   }
 
   // nlohmann escapes the strings (a driver's renderer name may hold quotes or control bytes).

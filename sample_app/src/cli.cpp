@@ -115,7 +115,8 @@ const std::vector<CommandSpec>& commands() {
        "camera moving at --camera-velocity (with --freeze-time only the camera moves), and each "
        "frame's change from the one before "
        "printed.",
-       {"--out", "--frames", "--fps", "--camera-velocity", "--freeze-time"},
+       {"--out", "--frames", "--fps", "--camera-velocity", "--freeze-time", "--views",
+        "--cube-map"},
        true,
        "ocean.png",
        1,

@@ -206,6 +206,11 @@ const std::array kValueOptions{
                   return doubleIn(text, 1.0, 1000.0, o.causticsWindow, "--caustics-window",
                                   "a side in metres in [1, 1000]", error);
                 }},
+    ValueOption{"--views", "N",
+                "render: N side-by-side views (split-screen) in one plugin dispatch, 1..4", false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return intIn(text, 1, 4, o.views, "--views", error);
+                }},
     ValueOption{"--caustics-layers", "N",
                 "wavefront area ratio's receiver depth layers, 1..8 (default 4)", false,
                 [](std::string_view text, Options& o, std::string& error) {
@@ -415,6 +420,9 @@ const std::array kFlagOptions{
                [](Options& o) { o.triplanarWalls = true; }},
     FlagOption{"--freeze-time", "render/view --frames: time stays at --time",
                [](Options& o) { o.freezeTime = true; }},
+    FlagOption{"--cube-map",
+               "render: a cube-map probe (six faces of --width/4, one dispatch) as a 4x3 cross",
+               [](Options& o) { o.cubeMap = true; }},
     FlagOption{"--no-overlay", "view: no overlay (timings in the title bar, as before it)",
                [](Options& o) { o.overlay = false; }},
     FlagOption{"--quick", "a smoke run in a few minutes", [](Options& o) { o.quick = true; }},

@@ -31,8 +31,15 @@ struct Options {
   // bench: measured frames after warm-up; render: frames of the image sequence (1: one image);
   // view: frames drawn before it quits (0: until the window is closed)
   int frames = 60;
-  double fps = 30.0;           // render, view --frames: frames per second of the sequence's time
-  bool freezeTime = false;     // render/view --frames: time stays at --time
+  double fps = 30.0;        // render, view --frames: frames per second of the sequence's time
+  bool freezeTime = false;  // render/view --frames: time stays at --time
+  // render: the image split into this many side-by-side views of one world (the preset's camera
+  // on the left, each next one 4 m to its right and turned 0.5 rad back toward it), handed to
+  // the plugin in one dispatch; 1: one view.
+  int views = 1;
+  // render: a cube-map probe at the camera instead: six faces of --width / 4, one dispatch,
+  // written as a horizontal cross (4 x 3 faces).
+  bool cubeMap = false;
   std::string screenshot;      // view: the window's last frame as PNG ("": none)
   bool overlay = true;         // view: the Dear ImGui overlay (timings, live settings)
   std::string json;            // bench: JSON output path

@@ -116,10 +116,56 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
 }
 
 PluginSetup::~PluginSetup() {
+  for (postfx::View* view : views_) postfx::destroyView(*context_, view);
   postfx::destroy(context_);
 }
 
 bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
+  const postfx::FrameDesc desc = describe(frame);
+  lastFrame_ = desc;
+  if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(context_);
+    return false;
+  }
+  return true;
+}
+
+bool PluginSetup::dispatchViews(const std::vector<HostFrame>& frames, std::string& error) {
+  if (frames.empty()) return true;
+  while (views_.size() < frames.size()) {
+    postfx::View* view = nullptr;
+    if (postfx::createView(*context_, view) != postfx::Result::Ok) {
+      error = std::string("postfx: ") + postfx::lastError(context_);
+      return false;
+    }
+    views_.push_back(view);
+  }
+  std::vector<postfx::ViewDesc> views(frames.size());
+  std::vector<postfx::SunShadowMap> shadows(frames.size());
+  for (size_t i = 0; i < frames.size(); ++i) {
+    // Each view's own G-buffer, camera and shadow cascade (fitted around its camera).
+    const postfx::FrameDesc own = describe(frames[i]);
+    postfx::ViewDesc& v = views[i];
+    v.view = views_[i];
+    v.depth = own.depth;
+    v.normal = own.normal;
+    v.albedo = own.albedo;
+    v.target = own.target;
+    v.camera = own.camera;
+    shadows[i] = own.shadow;
+    v.shadow = &shadows[i];
+  }
+  // Last: describe() rebuilds the casters and lights arrays the shared frame points into.
+  const postfx::FrameDesc desc = describe(frames[0]);
+  lastFrame_ = desc;
+  if (postfx::dispatch(*context_, desc, views.data(), int(views.size())) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(context_);
+    return false;
+  }
+  return true;
+}
+
+postfx::FrameDesc PluginSetup::describe(const HostFrame& frame) {
   const gbuffer::Targets& targets = frame.targets;
   const postfx::water::Ocean& ocean = frame.ocean;
   postfx::FrameDesc desc;
@@ -208,12 +254,7 @@ bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
   }
   desc.objectCaustics.lights = lights_.data();
   desc.objectCaustics.lightCount = int(lights_.size());
-  lastFrame_ = desc;
-  if (postfx::dispatch(*context_, desc) != postfx::Result::Ok) {
-    error = std::string("postfx: ") + postfx::lastError(context_);
-    return false;
-  }
-  return true;
+  return desc;
 }
 
 std::string PluginSetup::timingSummary() const {

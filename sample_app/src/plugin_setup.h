@@ -27,6 +27,12 @@ class PluginSetup {
   postfx::GodRaySettings& godRays() { return godRays_; }
   postfx::ObjectCausticsSettings& objectCaustics() { return objectCaustics_; }
   const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
+  // Several views in one dispatch (split-screen, a cube-map probe): the first frame gives what
+  // they share (sun, water, casters, the receiver maps), each frame its camera, G-buffer, target
+  // and sun shadow map. The plugin's views are made on first use, one per position in the list.
+  bool dispatchViews(const std::vector<HostFrame>& frames, std::string& error);
+  // View i's own passes (dispatchViews); stats() has the shared ones.
+  const postfx::FrameStats& viewStats(int i) const { return postfx::stats(*views_[size_t(i)]); }
   std::string timingSummary() const;  // "caustics 0.41 ms (median)" ...
   // What the last dispatch was given, for tools that re-dispatch the same frame with other
   // settings (ocean_sample report). Its textures stay valid until the next render.
@@ -36,6 +42,8 @@ class PluginSetup {
  private:
   PluginSetup() = default;
   bool dispatch(const HostFrame& frame, std::string& error);
+  // The plugin's frame for `frame` (the casters' and lights' arrays live in this object).
+  postfx::FrameDesc describe(const HostFrame& frame);
 
   postfx::Context* context_ = nullptr;
   postfx::CreateDesc createDesc_;
@@ -45,6 +53,7 @@ class PluginSetup {
   postfx::ObjectCausticsSettings objectCaustics_;
   std::vector<postfx::CasterMesh> casters_;  // rebuilt each frame, kept for its capacity
   std::vector<postfx::LocalLight> lights_;   // likewise
+  std::vector<postfx::View*> views_;         // dispatchViews', freed with the context
 };
 
 }  // namespace ocean

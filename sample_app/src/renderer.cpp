@@ -43,15 +43,36 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
   return renderer;
 }
 
+std::unique_ptr<Renderer> Renderer::createView(const RenderSettings& settings,
+                                               const ocean_scene::Model& scene, Renderer& primary,
+                                               std::string& error) {
+  std::unique_ptr<Renderer> renderer(new Renderer());
+  renderer->settings_ = settings;
+  renderer->ocean_ = primary.ocean_;
+  renderer->updatesOcean_ = false;
+  renderer->optics_ = primary.optics_;
+  if (!renderer->initialise(scene, error)) return nullptr;
+  // The same world: the primary's receiver maps and lights.
+  if (primary.receiverMap_.texture() != 0) renderer->enableReceiverMap();
+  std::vector<SceneLight> lights;
+  for (const HostLight& light : primary.hostLights_) lights.push_back(light.light);
+  renderer->setLights(lights);
+  return renderer;
+}
+
 bool Renderer::initialise(const ocean_scene::Model& scene, std::string& error) {
   if (targets_.resize(settings_.width, settings_.height, error) != gbuffer::TargetError::None) {
     return false;
   }
-  postfx::water::OceanDesc oceanDesc;
-  oceanDesc.resolution = settings_.waterResolution;
-  oceanDesc.windSpeed = settings_.windSpeed;
-  if (postfx::water::Ocean::create(oceanDesc, ocean_, error) != postfx::water::Result::Ok)
-    return false;
+  if (!ocean_) {
+    postfx::water::OceanDesc oceanDesc;
+    oceanDesc.resolution = settings_.waterResolution;
+    oceanDesc.windSpeed = settings_.windSpeed;
+    std::unique_ptr<postfx::water::Ocean> ocean;
+    if (postfx::water::Ocean::create(oceanDesc, ocean, error) != postfx::water::Result::Ok)
+      return false;
+    ocean_ = std::move(ocean);
+  }
 
   if (!build(geometry_, "sample/geometry.vert", "sample/geometry.frag", "sample.geometry", error) ||
       !build(shadow_, "sample/shadow.vert", "sample/depth_only.frag", "sample.shadow", error) ||
@@ -215,8 +236,36 @@ glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
 }
 
 bool Renderer::render(const FrameInput& input, std::string& error) {
-  if (ocean_->update(input.timeSeconds, error) != postfx::water::Result::Ok) return false;
+  if (!beginFrame(input, error)) return false;
+  if (plugin_) {
+    // After the fog, as the plugin's header asks (ViewExtinction::Plugin): the light it adds
+    // arrives attenuated along the view ray, and fog applied after it would do so twice.
+    if (!plugin_(hostFrame(), error)) return false;
+  }
+  endFrame();
+  return true;
+}
+
+HostFrame Renderer::hostFrame() const {
+  return HostFrame{targets_,
+                   fogged_.id(),
+                   input_,
+                   *ocean_,
+                   optics_,
+                   shadowMap_.texture(),
+                   shadowWorldToClip_,
+                   projection_,
+                   receiverMap_.texture(),
+                   scene_.casters(),
+                   hostLights_};
+}
+
+bool Renderer::beginFrame(const FrameInput& input, std::string& error) {
+  if (updatesOcean_ && ocean_->update(input.timeSeconds, error) != postfx::water::Result::Ok)
+    return false;
+  input_ = input;
   const glm::dmat4 projection = updateFrameConstants(input);
+  projection_ = projection;
   const int width = settings_.width, height = settings_.height;
   const glm::dvec3 eye = input.camera.position;
 
@@ -290,24 +339,14 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   drawFullscreen(emptyVao_.id());
   glPopDebugGroup();
 
-  if (plugin_) {
-    // After the fog, as the plugin's header asks (ViewExtinction::Plugin): the light it adds
-    // arrives attenuated along the view ray, and fog applied after it would do so twice.
-    const HostFrame frame{targets_,
-                          fogged_.id(),
-                          input,
-                          *ocean_,
-                          optics_,
-                          shadowMap_.texture(),
-                          shadowWorldToClip_,
-                          projection,
-                          receiverMap_.texture(),
-                          scene_.casters(),
-                          hostLights_};
-    if (!plugin_(frame, error)) return false;
-    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
-  }
+  return true;
+}
 
+void Renderer::endFrame() {
+  const int width = settings_.width, height = settings_.height;
+  const glm::dvec3 eye = input_.camera.position;
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
   glBindFramebuffer(GL_FRAMEBUFFER, foggedFbo_.id());
   glViewport(0, 0, width, height);
   casterSurfaces_.drawMetal(scene_, eye, shadowMap_.texture());
@@ -351,7 +390,6 @@ bool Renderer::render(const FrameInput& input, std::string& error) {
   glBindTextures(0, 6, nullptr);
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return true;
 }
 
 void Renderer::presentTo(GLuint framebuffer, int width, int height) const {

@@ -74,6 +74,12 @@ class Renderer {
  public:
   static std::unique_ptr<Renderer> create(const RenderSettings& settings,
                                           const ocean_scene::Model& scene, std::string& error);
+  // Another view of `primary`'s world (split-screen, a probe face): its own targets, shadow
+  // maps and scene buffers, `primary`'s ocean, which only the primary updates (render the
+  // primary's frame first). The primary must outlive it.
+  static std::unique_ptr<Renderer> createView(const RenderSettings& settings,
+                                              const ocean_scene::Model& scene, Renderer& primary,
+                                              std::string& error);
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
@@ -85,6 +91,12 @@ class Renderer {
   void setLights(const std::vector<SceneLight>& lights);
   const std::vector<HostLight>& lights() const { return hostLights_; }
   bool render(const FrameInput& input, std::string& error);
+  // render() in three steps, for hosts that hand the plugin several views at once: everything
+  // before the plugin (ocean, shadow maps, G-buffer, lighting, fog), what the plugin sees of it
+  // (valid until the next beginFrame), and everything after (casters, water surface, tone map).
+  bool beginFrame(const FrameInput& input, std::string& error);
+  HostFrame hostFrame() const;
+  void endFrame();
 
   // Blits the tone-mapped image into a host framebuffer (the window's is 0).
   void presentTo(GLuint framebuffer, int width, int height) const;
@@ -108,7 +120,10 @@ class Renderer {
   RenderSettings settings_;
   postfx::water::Optics optics_;
   gbuffer::Targets targets_;
-  std::unique_ptr<postfx::water::Ocean> ocean_;
+  std::shared_ptr<postfx::water::Ocean> ocean_;
+  bool updatesOcean_ = true;  // false for a view of another renderer's ocean
+  FrameInput input_;          // beginFrame's
+  glm::dmat4 projection_{1.0};
   GpuScene scene_;
   ShadowMap shadowMap_;
   ShadowMap receiverMap_;  // created by enableReceiverMap()

@@ -826,3 +826,70 @@ TEST_F(SampleCli, ViewScreenshotRefusedWithoutAWindow) {
 }
 
 }  // namespace
+
+// render --views 2: one image, the two views side by side, each half drawn with light; the left
+// half is the same frame as a one-view render of that size (the split changes nothing in it).
+TEST_F(SampleCli, SplitScreenViewsRenderSideBySide) {
+  const fs::path split = dir_ / "split.exr", single = dir_ / "single.exr";
+  const RunResult two = runSample(
+      "render --width 64 --height 36 --water-resolution 16 --views 2 "
+      "--out " +
+          split.string(),
+      dir_);
+  ASSERT_EQ(two.exitCode, 0) << two.stderrText;
+  const RunResult one = runSample(
+      "render --width 32 --height 36 --water-resolution 16 --out " + single.string(), dir_);
+  ASSERT_EQ(one.exitCode, 0) << one.stderrText;
+  auto in = OIIO::ImageInput::open(split.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 64);
+  EXPECT_EQ(in->spec().height, 36);
+  in.reset();
+  const std::vector<float> both = exrChannel(split, "R"), left = exrChannel(single, "R");
+  ASSERT_EQ(both.size(), 64u * 36u);
+  ASSERT_EQ(left.size(), 32u * 36u);
+  double rightSum = 0.0;
+  int differing = 0;
+  for (int y = 0; y < 36; ++y)
+    for (int x = 0; x < 32; ++x) {
+      differing += both[size_t(y * 64 + x)] != left[size_t(y * 32 + x)];
+      rightSum += double(both[size_t(y * 64 + 32 + x)]);
+    }
+  EXPECT_EQ(differing, 0) << "the left view differs from a one-view render";
+  EXPECT_GT(rightSum, 0.0) << "the right view is black";
+}
+
+// render --cube-map: six faces of --width / 4 as a 4 x 3 cross, the empty cells 0.
+TEST_F(SampleCli, CubeMapProbeIsACrossOfSixFaces) {
+  const fs::path out = dir_ / "probe.exr";
+  const RunResult result = runSample(
+      "render --width 64 --height 36 --water-resolution 16 --cube-map --out " + out.string(), dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 64);
+  EXPECT_EQ(in->spec().height, 48);
+  in.reset();
+  const std::vector<float> red = exrChannel(out, "R");
+  ASSERT_EQ(red.size(), 64u * 48u);
+  // Cells of 16 x 16, rows from the top of the file: +Y at (1, 0); -X -Z +X +Z on row 1; -Y at
+  // (1, 2). Each face has light, each empty cell none.
+  auto cellSum = [&](int cx, int cy) {
+    double sum = 0.0;
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) sum += double(red[size_t((cy * 16 + y) * 64 + cx * 16 + x)]);
+    return sum;
+  };
+  for (auto [cx, cy] : {std::pair{1, 0}, {0, 1}, {1, 1}, {2, 1}, {3, 1}, {1, 2}})
+    EXPECT_GT(cellSum(cx, cy), 0.0) << "face at cell " << cx << ", " << cy << " is black";
+  for (auto [cx, cy] : {std::pair{0, 0}, {2, 0}, {3, 0}, {0, 2}, {2, 2}, {3, 2}})
+    EXPECT_EQ(cellSum(cx, cy), 0.0) << "empty cell " << cx << ", " << cy << " has light";
+}
+
+TEST_F(SampleCli, ViewsOutOfRangeOrNotDividingTheWidth) {
+  expectRejected("--views 5", "--views");
+  expectRejected("--views 0", "--views");
+  expectRejected("--views 3", "divides");  // 64 is not a multiple of 3
+  expectRejected("--views 2", "not an animation", "render", "out.gif");
+  expectRejected("--cube-map", "--cube-map", "bench");
+}
