@@ -187,7 +187,11 @@ int runBench(const Options& commandOptions) {
     }
   }
 
-  if (wanted("views") || wanted("contexts")) {
+  bool viewRows = false;
+  for (const char* row :
+       {"views_1", "views_2", "views_6", "contexts_1", "contexts_2", "contexts_6"})
+    viewRows = viewRows || wanted(row);
+  if (viewRows) {
     auto views = MultiView::create(renderer, session.scene, 6, error);
     if (!views) return commandFailed(error);
     const int total = kWarmupFrames + variantFrames + postfx::kTimerRingDepth;
@@ -211,8 +215,18 @@ int runBench(const Options& commandOptions) {
         if (light.present) ms += light.medianMs;
       return ms;
     };
+    // Where the time goes: each pass's median, for the notes (stderr).
+    auto breakdown = [](const char* who, const postfx::FrameStats& s) {
+      std::string line;
+      for (int p = 0; p < postfx::kPassCount; ++p)
+        if (s.passes[p].present)
+          line += std::string(" ") + postfx::toString(postfx::Pass(p)) + " " +
+                  std::to_string(s.passes[p].medianMs);
+      std::fprintf(stderr, "bench:   %s:%s\n", who, line.c_str());
+    };
     for (int count : {1, 2, 6}) {
       const std::string n = std::to_string(count);
+      if (!wanted("views_" + n) && !wanted("contexts_" + n)) continue;
       std::fprintf(stderr, "bench: %d views in one dispatch, then %d contexts, %d frames\n", count,
                    count, variantFrames);
       auto shared = PluginSetup::create(renderer, options, /*benchmarkFloor=*/true, error);
@@ -222,7 +236,11 @@ int runBench(const Options& commandOptions) {
                            error))
           return commandFailed(error);
       double multi = planTotal(shared->stats());
-      for (int i = 0; i < count; ++i) multi += planTotal(shared->viewStats(i));
+      breakdown("shared", shared->stats());
+      for (int i = 0; i < count; ++i) {
+        multi += planTotal(shared->viewStats(i));
+        breakdown(("view " + std::to_string(i)).c_str(), shared->viewStats(i));
+      }
       const double floorMs = shared->viewStats(0).pass(postfx::Pass::Floor).medianMs;
       rows.push_back({"views_" + n, multi, floorMs, false});
       shared.reset();
@@ -239,7 +257,10 @@ int runBench(const Options& commandOptions) {
           if (!views->view(i).render(inputs[size_t(i)], error)) return commandFailed(error);
       }
       double separate = 0.0;
-      for (const auto& setup : own) separate += planTotal(setup->stats());
+      for (size_t i = 0; i < own.size(); ++i) {
+        separate += planTotal(own[i]->stats());
+        breakdown(("context " + std::to_string(i)).c_str(), own[i]->stats());
+      }
       rows.push_back({"contexts_" + n, separate, floorMs, false});
       std::fprintf(stderr, "bench: %d views: %.3f ms in one dispatch, %.3f ms in %d contexts\n",
                    count, multi, separate, count);
