@@ -65,16 +65,16 @@ postfx::FrameDesc seabedFrame(const Scene& scene, GLuint water, postfx::Caustics
   return f;
 }
 
+// The view of `scene`: the G-buffer, target and camera makeFrame would give a frame of it.
 postfx::ViewDesc viewOf(postfx::View* view, const Scene& scene, const glm::dvec3& offset = {}) {
+  const postfx::FrameDesc f = makeFrame(scene, 0, 1, offset);
   postfx::ViewDesc v;
   v.view = view;
-  v.depth = {scene.depth, scene.depthFormat};
-  v.normal = {scene.normal, scene.normalFormat};
-  v.albedo = {scene.albedo, GL_SRGB8_ALPHA8};
-  v.target = {scene.target, scene.targetFormat};
-  v.camera.position = scene.spec().camera + offset;
-  v.camera.view = scene.view;
-  v.camera.projection = scene.projection;
+  v.depth = f.depth;
+  v.normal = f.normal;
+  v.albedo = f.albedo;
+  v.target = f.target;
+  v.camera = f.camera;
   return v;
 }
 

@@ -30,10 +30,30 @@ void mergeStats(Context& context) {
     if (detail::isViewPass(Pass(p))) merged.passes[p] = own.passes[p];
 }
 
-// Runs a dispatch and merges the stats whatever it returned.
+// A call on `context` (named `call` in its messages): the error cleared, a current GL context
+// required (any GL call through epoxy without one aborts the process), nothing thrown out.
 template <typename Work>
-Result dispatchAndMerge(Context& context, Work&& work) {
-  const Result r = work();
+Result guarded(Context& context, const char* call, Work&& work) noexcept {
+  try {
+    context.error.clear();
+    if (!glkit::hasCurrentContext()) {
+      context.error = std::string(call) + ": no current GL context on this thread";
+      return Result::NoContext;
+    }
+    return work();
+  } catch (const std::bad_alloc&) {
+    context.error = "out of memory";
+    return Result::OutOfMemory;
+  } catch (...) {
+    context.error = "internal error";
+    return Result::GlError;
+  }
+}
+
+// A dispatch: guarded, and the stats merged whatever it returned.
+template <typename Work>
+Result guardedDispatch(Context& context, Work&& work) noexcept {
+  const Result r = guarded(context, "dispatch", work);
   mergeStats(context);
   return r;
 }
@@ -98,12 +118,7 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
 }
 
 Result dispatch(Context& context, const FrameDesc& desc) noexcept {
-  try {
-    context.error.clear();
-    if (!glkit::hasCurrentContext()) {
-      context.error = "dispatch: no current GL context on this thread";
-      return Result::NoContext;
-    }
+  return guardedDispatch(context, [&] {
     ViewDesc view;
     view.view = &context.defaultView;
     view.depth = desc.depth;
@@ -111,16 +126,8 @@ Result dispatch(Context& context, const FrameDesc& desc) noexcept {
     view.albedo = desc.albedo;
     view.target = desc.target;
     view.camera = desc.camera;
-    return dispatchAndMerge(context, [&] {
-      return detail::dispatchFrame(context, desc, {&view, 1}, false);
-    });
-  } catch (const std::bad_alloc&) {
-    context.error = "out of memory";
-    return Result::OutOfMemory;
-  } catch (...) {
-    context.error = "internal error";
-    return Result::GlError;
-  }
+    return detail::dispatchFrame(context, desc, {&view, 1}, false);
+  });
 }
 
 void destroy(Context* context) noexcept {
@@ -135,12 +142,7 @@ const char* lastError(const Context* context) noexcept {
 
 Result dispatch(Context& context, const FrameDesc& frame, const ViewDesc* views,
                 int viewCount) noexcept {
-  try {
-    context.error.clear();
-    if (!glkit::hasCurrentContext()) {
-      context.error = "dispatch: no current GL context on this thread";
-      return Result::NoContext;
-    }
+  return guardedDispatch(context, [&] {
     if (views == nullptr && viewCount != 0) {
       context.error = "views is null but viewCount is " + std::to_string(viewCount);
       return Result::InvalidArgument;
@@ -150,39 +152,20 @@ Result dispatch(Context& context, const FrameDesc& frame, const ViewDesc* views,
                       std::to_string(kMaxViews) + "]";
       return Result::InvalidArgument;
     }
-    return dispatchAndMerge(context, [&] {
-      return detail::dispatchFrame(context, frame, {views, static_cast<std::size_t>(viewCount)},
-                                   true);
-    });
-  } catch (const std::bad_alloc&) {
-    context.error = "out of memory";
-    return Result::OutOfMemory;
-  } catch (...) {
-    context.error = "internal error";
-    return Result::GlError;
-  }
+    return detail::dispatchFrame(context, frame, {views, static_cast<std::size_t>(viewCount)},
+                                 true);
+  });
 }
 
 Result createView(Context& context, View*& out) noexcept {
   out = nullptr;
-  try {
-    context.error.clear();
-    if (!glkit::hasCurrentContext()) {
-      context.error = "createView: no current GL context on this thread";
-      return Result::NoContext;
-    }
+  return guarded(context, "createView", [&] {
     auto view = std::make_unique<View>();
     detail::initView(*view, context, context.present);
     context.views.push_back(std::move(view));
     out = context.views.back().get();
     return Result::Ok;
-  } catch (const std::bad_alloc&) {
-    context.error = "out of memory";
-    return Result::OutOfMemory;
-  } catch (...) {
-    context.error = "internal error";
-    return Result::GlError;
-  }
+  });
 }
 
 void destroyView(Context& context, View* view) noexcept {
