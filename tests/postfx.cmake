@@ -40,7 +40,8 @@ target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_privat
 # The dispatch fuzz: a few thousand deterministic cases over every FrameDesc field
 # group, the settings, the casters and the G-buffer texels, in four contexts.
 postfx_add_test(postfx_fuzz_tests
-  SOURCES fuzz/postfx_fuzz_test.cpp gl/postfx_object_caustics_util.cpp
+  SOURCES fuzz/postfx_fuzz_test.cpp fuzz/postfx_views_fuzz_test.cpp
+          gl/postfx_object_caustics_util.cpp
   LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL LABELS fuzz)
 target_include_directories(postfx_fuzz_tests PRIVATE ${_postfx_private} ${CMAKE_CURRENT_SOURCE_DIR}/gl)

@@ -174,8 +174,7 @@ TEST_F(PostfxViewsTest, ObjectCausticsSharedMapsMatchOwnContexts) {
       return f;
     };
     const postfx::FrameDesc shared = withLight(hostA.frame(&caster, 1, settings));
-    const postfx::ViewDesc views[] = {viewOf(va.get(), hostA.scene),
-                                      viewOf(vb.get(), hostB.scene)};
+    const postfx::ViewDesc views[] = {viewOf(va.get(), hostA.scene), viewOf(vb.get(), hostB.scene)};
     ASSERT_EQ(postfx::dispatch(*multi, shared, views, 2), postfx::Result::Ok)
         << postfx::lastError(multi.get());
     ASSERT_EQ(postfx::stats(*multi).lightSkip[0], postfx::LightSkip::None);
@@ -291,6 +290,9 @@ TEST_F(PostfxViewsTest, ARefusedViewLeavesEveryTargetUntouched) {
   const GLuint water = postfxtest::makeWaterTexture(64, 3, 0.05);
   auto fx = postfxtest::makeContext(kSeabed), other = postfxtest::makeContext(kSeabed);
   ViewPtr va = makeView(*fx), vb = makeView(*fx), vc = makeView(*fx), foreign = makeView(*other);
+  postfx::View* destroyed = nullptr;
+  ASSERT_EQ(postfx::createView(*fx, destroyed), postfx::Result::Ok);
+  postfx::destroyView(*fx, destroyed);  // its address is kept only to be refused
   const postfx::FrameDesc shared = seabedFrame(a, water, postfx::CausticsModel::TileIrradiance);
   const glm::vec4 marker(0.25f, 0.5f, 0.75f, 1.0f);
   struct Case {
@@ -314,6 +316,7 @@ TEST_F(PostfxViewsTest, ARefusedViewLeavesEveryTargetUntouched) {
       {"a view listed twice", [&](auto& v) { v[2].view = va.get(); }, "listed twice"},
       {"a null view", [](auto& v) { v[1].view = nullptr; }, "null"},
       {"another context's view", [&](auto& v) { v[0].view = foreign.get(); }, "this context"},
+      {"a destroyed view", [&](auto& v) { v[1].view = destroyed; }, "not a live view"},
       {"overlapping viewports in one target",
        [&](auto& v) {
          v[1] = viewOf(vb.get(), a);

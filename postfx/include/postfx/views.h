@@ -45,7 +45,9 @@ struct Viewport {
 };
 
 struct ViewDesc {
-  View* view = nullptr;  // from createView() on the same context; at most once per dispatch
+  // From createView() on the same context, not destroyed; at most once per dispatch. Any other
+  // pointer is refused without being read.
+  View* view = nullptr;
   // As FrameDesc's fields of the same names (postfx/frame_desc.h): all the target's size.
   TextureRef depth;
   TextureRef normal;

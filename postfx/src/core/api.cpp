@@ -104,7 +104,7 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     for (int p = 0; p < kPassCount; ++p) shared[p] = present[p] && !detail::isViewPass(Pass(p));
     context->timers.init(
         shared, hasFeature(desc.features, Feature::ObjectCaustics) ? desc.maxLocalLights : 0);
-    detail::initView(context->defaultView, *context, present);
+    detail::initView(context->defaultView, present);
     mergeStats(*context);
     out = context.release();
     return Result::Ok;
@@ -161,7 +161,7 @@ Result createView(Context& context, View*& out) noexcept {
   out = nullptr;
   return guarded(context, "createView", [&] {
     auto view = std::make_unique<View>();
-    detail::initView(*view, context, context.present);
+    detail::initView(*view, context.present);
     context.views.push_back(std::move(view));
     out = context.views.back().get();
     return Result::Ok;

@@ -15,7 +15,6 @@
 namespace postfx {
 
 struct View {
-  const Context* owner = nullptr;
   detail::CausticsViewTextures caustics;
   detail::GodRaysViewTextures godRays;
   detail::GodRayGridPivot godRayPivot;
@@ -37,7 +36,7 @@ constexpr bool isViewPass(Pass pass) {
 }
 
 // Creates the view's timers for the passes the context has (`present`, indexed by Pass).
-void initView(View& view, const Context& owner, const std::array<bool, kPassCount>& present);
+void initView(View& view, const std::array<bool, kPassCount>& present);
 
 }  // namespace detail
 }  // namespace postfx

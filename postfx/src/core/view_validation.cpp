@@ -24,8 +24,12 @@ Result validateViewList(const Context& context, std::span<const ViewDesc> views,
       error = name + " is null (createView gives one)";
       return Result::InvalidArgument;
     }
-    if (v->owner != &context) {
-      error = name + " was not created on this context";
+    // Found among the context's live views by address, never dereferenced: a destroyed view or
+    // another context's is refused, not read.
+    bool live = false;
+    for (const auto& mine : context.views) live = live || mine.get() == v;
+    if (!live) {
+      error = name + " is not a live view of this context (createView on it, not destroyed)";
       return Result::InvalidArgument;
     }
     for (std::size_t j = 0; j < i; ++j)

@@ -16,8 +16,9 @@ namespace postfx::detail {
 // a plain dispatch(context, frame). Returns r.
 Result prefixed(Result r, std::string& error, int index, bool listed);
 
-// The list itself: its length in [1, kMaxViews], every view non-null, of `context` and listed
-// once (a view listed twice would advance its god-ray pivot and timers twice).
+// The list itself: its length in [1, kMaxViews], every view non-null, a live view of `context`
+// (looked up by address, never dereferenced: a destroyed one is refused) and listed once (a view
+// listed twice would advance its god-ray pivot and timers twice).
 Result validateViewList(const Context& context, std::span<const ViewDesc> views,
                         std::string& error);
 
