@@ -115,8 +115,8 @@ const std::vector<CommandSpec>& commands() {
        "camera moving at --camera-velocity (with --freeze-time only the camera moves), and each "
        "frame's change from the one before "
        "printed.",
-       {"--out", "--frames", "--fps", "--camera-velocity", "--freeze-time", "--views",
-        "--cube-map"},
+       {"--out", "--frames", "--fps", "--camera-velocity", "--freeze-time", "--views", "--cube-map",
+        "--stereo"},
        true,
        "ocean.png",
        1,

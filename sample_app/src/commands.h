@@ -11,7 +11,7 @@ namespace ocean {
 int commandFailed(const std::string& message);
 
 int runRender(const Options& options);
-// render --views N > 1 or --cube-map: several views of one frame in one plugin dispatch.
+// render --views N > 1, --stereo or --cube-map: several views of one frame in one plugin dispatch.
 int runRenderViews(const Options& options);
 int runView(const Options& options);
 int runBench(const Options& options);

@@ -420,6 +420,8 @@ const std::array kFlagOptions{
                [](Options& o) { o.triplanarWalls = true; }},
     FlagOption{"--freeze-time", "render/view --frames: time stays at --time",
                [](Options& o) { o.freezeTime = true; }},
+    FlagOption{"--stereo", "render: a side-by-side stereo pair (eyes 6.4 cm apart), one dispatch",
+               [](Options& o) { o.stereo = true; }},
     FlagOption{"--cube-map",
                "render: a cube-map probe (six faces of --width/4, one dispatch) as a 4x3 cross",
                [](Options& o) { o.cubeMap = true; }},

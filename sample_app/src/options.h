@@ -40,6 +40,9 @@ struct Options {
   // render: a cube-map probe at the camera instead: six faces of --width / 4, one dispatch,
   // written as a horizontal cross (4 x 3 faces).
   bool cubeMap = false;
+  // render: a side-by-side stereo pair instead: two parallel eyes 6.4 cm apart about the camera,
+  // each half the width, one dispatch (left eye on the left).
+  bool stereo = false;
   std::string screenshot;      // view: the window's last frame as PNG ("": none)
   bool overlay = true;         // view: the Dear ImGui overlay (timings, live settings)
   std::string json;            // bench: JSON output path

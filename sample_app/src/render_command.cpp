@@ -33,7 +33,7 @@ bool renderChecked(HeadlessSession& session, const FrameInput& input, std::strin
 }  // namespace
 
 int runRender(const Options& options) {
-  if (options.views > 1 || options.cubeMap) return runRenderViews(options);
+  if (options.views > 1 || options.cubeMap || options.stereo) return runRenderViews(options);
   std::string error;
   std::string extension = std::filesystem::path(options.out).extension().string();
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));

@@ -1,6 +1,7 @@
-// ocean_sample render --views N / --cube-map: several views of one frame, handed to the plugin
-// in one dispatch (its view-independent pre-passes once), written as one image: the views side
-// by side (split-screen), or the six faces of a cube-map probe at the camera as a 4x3 cross.
+// ocean_sample render --views N / --stereo / --cube-map: several views of one frame, handed to
+// the plugin in one dispatch (its view-independent pre-passes once), written as one image: the
+// views side by side (split-screen, or a stereo pair), or the six faces of a cube-map probe at
+// the camera as a 4x3 cross.
 // With --frames N > 1 an image sequence, as render writes one.
 #include <cmath>
 #include <cstdio>
@@ -26,6 +27,14 @@ Camera splitCamera(const Camera& first, int i) {
   return c;
 }
 
+// A stereo pair: parallel eyes `interocular` apart about the camera, left eye first.
+Camera eyeCamera(const Camera& head, int eye) {
+  constexpr double kInterocular = 0.064;  // m: an adult's typical distance between the pupils
+  Camera c = head;
+  c.position += head.rotation()[0] * (kInterocular * (eye == 0 ? -0.5 : 0.5));
+  return c;
+}
+
 }  // namespace
 
 int runRenderViews(const Options& commandOptions) {
@@ -34,16 +43,19 @@ int runRenderViews(const Options& commandOptions) {
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".gif")
     return commandFailed("render --views/--cube-map writes PNG or EXR images, not an animation");
-  const bool cube = commandOptions.cubeMap;
-  const int count = cube ? 6 : commandOptions.views;
+  const bool cube = commandOptions.cubeMap, stereo = commandOptions.stereo;
+  if (int(cube) + int(stereo) + int(commandOptions.views > 1) > 1)
+    return commandFailed("render takes one of --views N, --stereo and --cube-map");
+  const int count = cube ? 6 : stereo ? 2 : commandOptions.views;
   // Each view's size: a column of the image, or a cube face of a quarter of its width.
   Options options = commandOptions;
   if (cube) {
     options.width = options.height = std::max(1, commandOptions.width / 4);
   } else {
     if (commandOptions.width % count != 0)
-      return commandFailed("render --views " + std::to_string(count) + " needs a --width that " +
-                           std::to_string(count) + " divides, got " +
+      return commandFailed(std::string("render ") +
+                           (stereo ? "--stereo" : "--views " + std::to_string(count)) +
+                           " needs a --width that " + std::to_string(count) + " divides, got " +
                            std::to_string(commandOptions.width));
     options.width = commandOptions.width / count;
   }
@@ -69,7 +81,8 @@ int runRenderViews(const Options& commandOptions) {
     const std::vector<Camera> cameras = [&] {
       if (cube) return cubeFaceCameras(first.position);
       std::vector<Camera> split;
-      for (int i = 0; i < count; ++i) split.push_back(splitCamera(first, i));
+      for (int i = 0; i < count; ++i)
+        split.push_back(stereo ? eyeCamera(first, i) : splitCamera(first, i));
       return split;
     }();
     std::vector<FrameInput> inputs;
@@ -99,12 +112,16 @@ int runRenderViews(const Options& commandOptions) {
     const std::string name =
         sequence ? sequenceFrameName(options.out, frame, options.frames) : options.out;
     const ImageAttributes attributes = {
-        {"ocean:views", cube ? "cube-map" : std::to_string(count)},
+        {"ocean:views", cube     ? "cube-map"
+                        : stereo ? "stereo"
+                                 : std::to_string(count)},
         {"ocean:exposure", exposureAttribute(session.renderer->settings().exposure)}};
     if (!writeImage(name, outWidth, outHeight, colorImage, &image, error, attributes))
       return commandFailed(error);
     std::printf("%s: %d views in one plugin dispatch (%s)\n", name.c_str(), count,
-                cube ? "cube-map cross, faces +X -X +Y -Y +Z -Z" : "side by side");
+                cube     ? "cube-map cross, faces +X -X +Y -Y +Z -Z"
+                : stereo ? "stereo pair, left eye on the left"
+                         : "side by side");
   }
   return 0;
 }

@@ -892,4 +892,41 @@ TEST_F(SampleCli, ViewsOutOfRangeOrNotDividingTheWidth) {
   expectRejected("--views 3", "divides");  // 64 is not a multiple of 3
   expectRejected("--views 2", "not an animation", "render", "out.gif");
   expectRejected("--cube-map", "--cube-map", "bench");
+  expectRejected("--stereo --cube-map", "one of");
+  expectRejected("--stereo --views 2", "one of");
+}
+
+// render --stereo: two eyes 6.4 cm apart side by side; the halves are almost the same picture
+// (a few pixels of parallax apart, so compared in 8 x 8 blocks), not the same one, and both
+// have the same light. (At 64 x 36 an eye, aliasing alone moves the mean by 10 %: too small.)
+TEST_F(SampleCli, StereoPairIsTwoNearlyEqualEyes) {
+  const fs::path out = dir_ / "stereo.exr";
+  const RunResult result = runSample(
+      "render --width 320 --height 90 --water-resolution 16 --stereo --out " + out.string(), dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  // Green: under water the light is mostly green (red is absorbed within metres).
+  const std::vector<float> green = exrChannel(out, "G");
+  ASSERT_EQ(green.size(), 320u * 90u);
+  double sl = 0, sr = 0, sll = 0, srr = 0, slr = 0;
+  int differing = 0, n = 0;
+  for (int by = 0; by < 11; ++by)
+    for (int bx = 0; bx < 20; ++bx) {
+      double l = 0.0, r = 0.0;
+      for (int y = by * 8; y < by * 8 + 8; ++y)
+        for (int x = bx * 8; x < bx * 8 + 8; ++x) {
+          const float left = green[size_t(y * 320 + x)], right = green[size_t(y * 320 + 160 + x)];
+          l += double(left);
+          r += double(right);
+          differing += left != right;
+        }
+      sl += l, sr += r, sll += l * l, srr += r * r, slr += l * r, ++n;
+    }
+  const double correlation = (slr / n - sl / n * sr / n) /
+                             std::sqrt((sll / n - sl / n * sl / n) * (srr / n - sr / n * sr / n));
+  EXPECT_GT(sl, 0.0);
+  EXPECT_NEAR(sr / sl, 1.0, 0.02) << "the eyes see different light";
+  EXPECT_GT(correlation, 0.95) << "the eyes do not see one scene";
+  EXPECT_GT(differing, 0) << "the eyes are the same camera";
+  std::printf("stereo eyes: 8x8-block correlation %.4f, right/left light %.4f\n", correlation,
+              sr / sl);
 }
