@@ -23,6 +23,7 @@
 #include "postfx_gl_snapshot.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_views_util.h"
 
 namespace {
 
@@ -37,22 +38,6 @@ constexpr int kCases = 240;
 const glm::vec4 kMarker(0.125f, 0.25f, 0.5f, 1.0f);
 
 class PostfxViewsFuzzTest : public testsupport::GlTest {};
-
-struct ViewDeleter {
-  postfx::Context* context;
-  void operator()(postfx::View* v) const { postfx::destroyView(*context, v); }
-};
-using ViewPtr = std::unique_ptr<postfx::View, ViewDeleter>;
-
-ViewPtr makeView(postfx::Context& fx) {
-  postfx::View* v = nullptr;
-  EXPECT_EQ(postfx::createView(fx, v), Result::Ok) << postfx::lastError(&fx);
-  return ViewPtr(v, ViewDeleter{&fx});
-}
-
-std::vector<glm::vec4> readTarget(GLuint texture, int w, int h) {
-  return readRgba(texture, w, h);
-}
 
 bool allFinite(const std::vector<glm::vec4>& image) {
   for (const glm::vec4& p : image)
@@ -93,17 +78,6 @@ TEST_F(PostfxViewsFuzzTest, EveryListIsRefusedCleanlyOrDrawnFinite) {
   frame.shadow.depth = {shadow, GL_DEPTH_COMPONENT32F};
   frame.shadow.worldToLightClip = glm::dmat4(0.05);
   frame.shadow.worldToLightClip[3][3] = 1.0;
-  auto viewOf = [](postfx::View* view, const Scene& scene) {
-    const postfx::FrameDesc f = makeFrame(scene, 0, 1);
-    postfx::ViewDesc v;
-    v.view = view;
-    v.depth = f.depth;
-    v.normal = f.normal;
-    v.albedo = f.albedo;
-    v.target = f.target;
-    v.camera = f.camera;
-    return v;
-  };
   auto ordinaryList = [&](std::vector<ViewPtr>& handles) {
     std::vector<postfx::ViewDesc> list = {viewOf(handles[0].get(), a), viewOf(handles[1].get(), b),
                                           viewOf(handles[2].get(), wide),
@@ -119,7 +93,7 @@ TEST_F(PostfxViewsFuzzTest, EveryListIsRefusedCleanlyOrDrawnFinite) {
   auto readAll = [&] {
     std::vector<std::vector<glm::vec4>> images;
     for (const Scene* s : scenes)
-      images.push_back(readTarget(s->target, s->spec().width, s->spec().height));
+      images.push_back(readRgba(s->target, s->spec().width, s->spec().height));
     return images;
   };
 

@@ -19,30 +19,22 @@
 #include "postfx_object_caustics_util.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_views_util.h"
 
 namespace {
 
 using postfxtest::makeFrame;
+using postfxtest::makeView;
 using postfxtest::Scene;
 using postfxtest::SceneSpec;
+using postfxtest::viewOf;
+using postfxtest::ViewPtr;
 
 class PostfxViewsTest : public testsupport::GlTest {};
 
 constexpr postfx::Feature kSeabed = postfx::Feature::Caustics | postfx::Feature::GodRays |
                                     postfx::testing::RawCausticOutput |
                                     postfx::Feature::WavefrontAreaRatio;
-
-struct ViewDeleter {
-  postfx::Context* context;
-  void operator()(postfx::View* v) const { postfx::destroyView(*context, v); }
-};
-using ViewPtr = std::unique_ptr<postfx::View, ViewDeleter>;
-
-ViewPtr makeView(postfx::Context& fx) {
-  postfx::View* v = nullptr;
-  EXPECT_EQ(postfx::createView(fx, v), postfx::Result::Ok) << postfx::lastError(&fx);
-  return ViewPtr(v, ViewDeleter{&fx});
-}
 
 SceneSpec seabedSpec(const glm::dvec3& camera, const glm::dvec3& look) {
   SceneSpec s;
@@ -63,19 +55,6 @@ postfx::FrameDesc seabedFrame(const Scene& scene, GLuint water, postfx::Caustics
   f.godRays.resolution = postfx::GodRayResolution::Half;
   f.godRays.sampleCount = 12;
   return f;
-}
-
-// The view of `scene`: the G-buffer, target and camera makeFrame would give a frame of it.
-postfx::ViewDesc viewOf(postfx::View* view, const Scene& scene, const glm::dvec3& offset = {}) {
-  const postfx::FrameDesc f = makeFrame(scene, 0, 1, offset);
-  postfx::ViewDesc v;
-  v.view = view;
-  v.depth = f.depth;
-  v.normal = f.normal;
-  v.albedo = f.albedo;
-  v.target = f.target;
-  v.camera = f.camera;
-  return v;
 }
 
 std::vector<glm::vec4> target(const Scene& s) {

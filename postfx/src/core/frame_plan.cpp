@@ -78,15 +78,6 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   }
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
   plan.fullScreen = plan.caustics || plan.godRays || (plan.objectMaps() && plan.floor);
-
-  auto add = [&plan](Pass pass, int light = -1, int slot = -1) {
-    plan.sequence[static_cast<std::size_t>(plan.sequenceLength++)] = {pass, light, slot};
-  };
-  for (const Pass pass : {Pass::WavefrontAreaRatio, Pass::TileIrradiance, Pass::Floor,
-                          Pass::Caustics, Pass::GodRays, Pass::ObjectCaustics})
-    if (plan.runs(pass)) add(pass);
-  for (int k = 0; k < plan.lightCount; ++k)
-    add(Pass::ObjectCaustics, plan.lights[static_cast<std::size_t>(k)], k);
   return plan;
 }
 

@@ -3,7 +3,6 @@
 // settings before any GL work: the memory estimate, the resources reserved, the passes recorded
 // and the timers' skipped marks all read this one plan.
 #include <array>
-#include <span>
 
 #include <postfx/diagnostics.h>
 #include <postfx/postfx.h>
@@ -13,15 +12,6 @@ struct Context;
 }
 
 namespace postfx::detail {
-
-// One pass the frame records. A local light's object caustics are Pass::ObjectCaustics with
-// `light` its index in ObjectCausticsFrame::lights and `slot` its place among the frame's
-// lights that run (FramePlan::lights); the sun's have both -1.
-struct PlannedPass {
-  Pass pass = Pass::Caustics;
-  int light = -1;
-  int slot = -1;
-};
 
 struct FramePlan {
   bool caustics = false;  // the seabed caustics pass
@@ -39,15 +29,6 @@ struct FramePlan {
   // The caustics pass's framebuffer and state are set up: a full-screen pass draws. The floor
   // runs whenever a timed pass does, so that every pass has its ratio.
   bool fullScreen = false;
-
-  // The passes the frame records, in order: the seabed light field's pre-pass (its result feeds
-  // the floor, the caustics and the god rays), the floor, the caustics, the god rays, then the
-  // object caustics, the sun's and each local light's. What the frame does not need is absent.
-  std::array<PlannedPass, kPassCount + kMaxLocalLightsLimit> sequence{};
-  int sequenceLength = 0;
-  std::span<const PlannedPass> passes() const {
-    return {sequence.data(), static_cast<std::size_t>(sequenceLength)};
-  }
 
   // Whether `pass` records GPU work this frame; one that does not is timed as skipped (0 ms).
   bool runs(Pass pass) const;
