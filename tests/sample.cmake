@@ -36,3 +36,7 @@ postfx_add_test(sample_stability_tests GL
 postfx_add_test(sample_glass_refraction_tests GL
   SOURCES gl/sample_glass_refraction_test.cpp
   LIBS ocean_host)
+# The pool's ripple simulation: wave speed, volume, rest, slopes, a sphere's volume, extremes.
+postfx_add_test(sample_ripple_simulation_tests GL
+  SOURCES gl/sample_ripple_simulation_test.cpp
+  LIBS ocean_host)

@@ -1,0 +1,41 @@
+#version 450 core
+// One step of the damped 2D wave equation over the ripple heightfield (ripple_simulation.h):
+// symplectic Euler, velocity first from the current heights, then heights from the new velocity.
+// Stable for c dt sqrt(1/dx^2 + 1/dz^2) <= 1 (the host steps at half of it).
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rg32f) uniform readonly image2D current;  // height (m), velocity (m/s)
+layout(binding = 1, rg32f) uniform writeonly image2D next;
+uniform vec2 courantSquared;  // (c dt / dx)^2, (c dt / dz)^2
+uniform float dampingFactor;  // exp(-damping dt), applied to the velocity
+uniform float maxHeight;      // m: heights are clamped to +-maxHeight
+uniform float stepSeconds;    // dt (s)
+
+float heightAt(ivec2 p, ivec2 size) {
+  // Reflecting walls: the neighbour beyond an edge is the edge texel itself, so no water flows
+  // through it and the Laplacian sums to zero over the grid (the step keeps the volume).
+  return imageLoad(current, clamp(p, ivec2(0), size - 1)).x;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(current);
+  if (any(greaterThanEqual(p, size))) return;
+  vec2 state = imageLoad(current, p).xy;
+  float h = state.x;
+  float alongU = heightAt(p - ivec2(1, 0), size) + heightAt(p + ivec2(1, 0), size) - 2.0 * h;
+  float alongV = heightAt(p - ivec2(0, 1), size) + heightAt(p + ivec2(0, 1), size) - 2.0 * h;
+  // dt c^2 laplacian(h) = (courantSquared . second differences) / dt.
+  float velocity = state.y + dot(courantSquared, vec2(alongU, alongV)) / stepSeconds;
+  velocity *= dampingFactor;
+  float height = h + stepSeconds * velocity;
+  // The guards: a texel that is not finite returns to rest, and heights stay within the clamp.
+  if (isnan(velocity) || isinf(velocity) || isnan(height) || isinf(height)) {
+    velocity = 0.0;
+    height = 0.0;
+  }
+  if (abs(height) > maxHeight) {
+    height = clamp(height, -maxHeight, maxHeight);
+    velocity = 0.0;  // the clamp is a wall the water stops at, not a spring
+  }
+  imageStore(next, p, vec4(height, velocity, 0.0, 0.0));
+}
