@@ -40,3 +40,13 @@ postfx_add_test(sample_glass_refraction_tests GL
 postfx_add_test(sample_ripple_simulation_tests GL
   SOURCES gl/sample_ripple_simulation_test.cpp
   LIBS ocean_host)
+# The pool preset: its script's determinism (CPU), and headless renders of it (the CLI).
+postfx_add_test(sample_pool_script_tests
+  SOURCES unit/sample_pool_script_test.cpp
+  LIBS ocean_host)
+postfx_add_test(sample_pool_cli_tests
+  SOURCES unit/sample_pool_cli_test.cpp
+  LIBS PkgConfig::OIIO)
+target_compile_definitions(sample_pool_cli_tests PRIVATE
+  OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
+add_dependencies(sample_pool_cli_tests ocean_sample)

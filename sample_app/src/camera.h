@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "scene_kind.h"
 #include "scene_light.h"
 
 namespace ocean {
@@ -54,6 +55,9 @@ struct Preset {
   double maxReceiverDepth = 0.0;
   int tileResolution = 0;
   int causticsLookup = 0;  // 1 full, 2 half
+  // The world it is shown in: the sea (every preset but one) or the pool on land, whose water
+  // is a ripple simulation handed to the plugin as a local water region.
+  SceneKind scene = SceneKind::Sea;
 };
 
 // Returns false when the name is unknown; `known` lists the valid names for the message.

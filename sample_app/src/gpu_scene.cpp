@@ -84,6 +84,12 @@ bool GpuScene::inSet(const GpuInstance& instance, DrawSet set) {
   return false;
 }
 
+bool GpuScene::setTransform(size_t instance, const glm::dmat4& transform) {
+  if (instance >= instances_.size() || instances_[instance].caster) return false;
+  instances_[instance].transform = transform;
+  return true;
+}
+
 bool GpuScene::has(DrawSet set) const {
   for (const GpuInstance& instance : instances_)
     if (inSet(instance, set)) return true;

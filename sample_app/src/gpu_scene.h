@@ -41,6 +41,9 @@ class GpuScene {
   // KHR_materials_volume).
   void draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet set = DrawSet::All) const;
   bool has(DrawSet set) const;
+  // Moves instance `instance` (its index in the uploaded Model::instances) to `transform`; false
+  // for an index out of range or a caustic caster (the plugin's caster list is fixed at upload).
+  bool setTransform(size_t instance, const glm::dmat4& transform);
   const std::vector<CasterInstance>& casters() const { return casters_; }
 
  private:

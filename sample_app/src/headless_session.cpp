@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "local_water_setup.h"
 #include "scene_setup.h"
 #include "view_flags.h"
 
@@ -11,7 +12,8 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
                          HeadlessSession& session, std::string& error) {
   if (!resolveView(options, session.preset, error)) return false;
   ocean_scene::Model& scene = session.scene;
-  if (!buildScene(options.models, scene, error, options.modelLimits)) return false;
+  if (!buildScene(options.models, scene, error, options.modelLimits, session.preset.scene))
+    return false;
   session.context = glcontext::HeadlessContext::create(debug, error);
   if (!session.context) return false;
   GLint maxSize = 0;
@@ -30,6 +32,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
   session.renderer = Renderer::create(settings, scene, error);
   if (!session.renderer) return false;
   session.renderer->setLights(session.preset.lights);
+  if (!attachLocalWater(session.preset, scene, *session.renderer, error)) return false;
   session.plugin = PluginSetup::create(
       *session.renderer, withPresetCaustics(options, session.preset), benchmarkFloor, error);
   return session.plugin != nullptr;

@@ -102,7 +102,7 @@ std::string causticsModelList() {
 
 const std::array kValueOptions{
     ValueOption{"--preset", "NAME",
-                "shallow, seabed, sunward, above, waterline or torch (default shallow)", false,
+                "shallow, seabed, sunward, above, waterline, torch or pool (default shallow)", false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.preset = text;  // checked against the presets when the scene is built
                   return true;

@@ -71,6 +71,8 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   desc.normalEncoding = postfx::NormalEncoding::Octahedral;
   desc.maxWaterCascades = pluginCascades(renderer.ocean());
   if (options.triplanarWalls) desc.features = desc.features | postfx::Feature::TriplanarWalls;
+  // Only a scene with local water (the pool, a wake) asks for it: off, no shader reads it.
+  if (renderer.localWater() != nullptr) desc.features = desc.features | postfx::Feature::LocalWater;
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return nullptr;
@@ -197,6 +199,9 @@ postfx::FrameDesc PluginSetup::describe(const HostFrame& frame) {
   // The same scattering the sample's fog uses: the god rays' extinction matches it.
   desc.water.scattering =
       glm::vec3(frame.optics.scattering.r, frame.optics.scattering.g, frame.optics.scattering.b);
+  // The pool's (or a wake's) water: the host's own simulation texture, read during the dispatch.
+  desc.water.localWater = frame.localWater.empty() ? nullptr : frame.localWater.data();
+  desc.water.localWaterCount = int(frame.localWater.size());
   desc.shadow.depth = {frame.shadowMap, GL_DEPTH_COMPONENT32F};
   desc.shadow.worldToLightClip = frame.shadowWorldToClip;
   desc.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;

@@ -51,6 +51,7 @@ std::unique_ptr<Renderer> Renderer::createView(const RenderSettings& settings,
   renderer->ocean_ = primary.ocean_;
   renderer->updatesOcean_ = false;
   renderer->optics_ = primary.optics_;
+  renderer->localWater_ = primary.localWater_;
   if (!renderer->initialise(scene, error)) return nullptr;
   // The same world: the primary's receiver maps and lights.
   if (primary.receiverMap_.texture() != 0) renderer->enableReceiverMap();
@@ -257,12 +258,19 @@ HostFrame Renderer::hostFrame() const {
                    projection_,
                    receiverMap_.texture(),
                    scene_.casters(),
-                   hostLights_};
+                   hostLights_,
+                   localWater_ ? localWater_->regions() : noLocalWater_};
 }
 
 bool Renderer::beginFrame(const FrameInput& input, std::string& error) {
   if (updatesOcean_ && ocean_->update(input.timeSeconds, error) != postfx::water::Result::Ok)
     return false;
+  if (localWater_) {
+    // Before the shadow maps: the instances it moves (a ball) cast their shadow where they are.
+    if (updatesOcean_ && !localWater_->update(input.timeSeconds, error)) return false;
+    for (const InstanceMove& move : localWater_->moves())
+      scene_.setTransform(move.instance, move.transform);
+  }
   input_ = input;
   const glm::dmat4 projection = updateFrameConstants(input);
   projection_ = projection;
@@ -374,7 +382,18 @@ void Renderer::endFrame() {
   glBindTextures(4, 2, waterInputs);
   const GLuint refractionInputs[] = {surfaceDepth, sceneBelow_.id()};
   glBindTextures(0, 2, refractionInputs);
-  waterGrid_.draw();
+  // A pool on land has no sea: only its own water is drawn, on a square of its own.
+  const bool sea = !localWater_ || localWater_->seaVisible();
+  if (sea) {
+    setLocalWaterUniforms(eye, /*regionSquare=*/false);
+    waterGrid_.draw();
+  } else if (!localWater_->regions().empty()) {
+    // One vertex a simulation texel for the default 256 (the region's own resolution).
+    if (regionGrid_.empty()) regionGrid_.createSquare(256);
+    setLocalWaterUniforms(eye, /*regionSquare=*/true);
+    regionGrid_.draw();
+  }
+  glBindTextureUnit(6, 0);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
@@ -390,6 +409,23 @@ void Renderer::endFrame() {
   glBindTextures(0, 6, nullptr);
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::setLocalWaterUniforms(const glm::dvec3& eye, bool regionSquare) {
+  glm::vec4 frame(0.0f), extent(0.0f);
+  if (localWater_ && !localWater_->regions().empty()) {
+    const postfx::LocalWater& region = localWater_->regions()[0];
+    // Relative to the camera in double: float never sees a region 1e6 m from the origin.
+    const glm::dvec2 relative = region.centre - glm::dvec2(eye.x, eye.z);
+    frame = glm::vec4(glm::vec2(relative), float(std::cos(region.rotation)),
+                      float(-std::sin(region.rotation)));
+    extent = glm::vec4(glm::vec2(1.0 / region.size),
+                       region.mode == postfx::LocalWaterMode::Add ? 1.0f : 2.0f,
+                       regionSquare ? 1.0f : 0.0f);
+    glBindTextureUnit(6, region.texture.texture);
+  }
+  glUniform4fv(glGetUniformLocation(water_.id(), "localWaterFrame"), 1, glm::value_ptr(frame));
+  glUniform4fv(glGetUniformLocation(water_.id(), "localWaterExtent"), 1, glm::value_ptr(extent));
 }
 
 void Renderer::presentTo(GLuint framebuffer, int width, int height) const {

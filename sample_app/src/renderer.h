@@ -21,6 +21,7 @@
 #include "caster_surfaces.h"
 #include "gpu_scene.h"
 #include "light_shadow_maps.h"
+#include "local_water_source.h"
 #include "shadow_map.h"
 #include "water_grid.h"
 
@@ -65,6 +66,8 @@ struct HostFrame {
   GLuint receiverMap;
   const std::vector<CasterInstance>& casters;
   const std::vector<HostLight>& lights;
+  // The local water regions (a pool's, a wake's) for the plugin; empty without local water.
+  const std::vector<postfx::LocalWater>& localWater;
 };
 // Called after lighting and fog, before the water surface; returns false with a message to fail
 // the frame.
@@ -87,6 +90,12 @@ class Renderer {
   const PluginPass& pluginPass() const { return plugin_; }
   // Also render the receiver map each frame (for the plugin's object caustics).
   void enableReceiverMap();
+  // Local water animated with the frame's time (a pool, a wake): updated at each beginFrame
+  // (by the primary only; views share it), its regions drawn by the surface pass and handed to
+  // the plugin, the instances it moves moved. Set before the plugin is created (PluginSetup
+  // asks for Feature::LocalWater when there is some). nullptr: none.
+  void setLocalWater(std::shared_ptr<LocalWaterSource> source) { localWater_ = std::move(source); }
+  LocalWaterSource* localWater() const { return localWater_.get(); }
   // The scene's point and spot lights (at most kMaxSceneLights): lit with a shadow map each.
   void setLights(const std::vector<SceneLight>& lights);
   const std::vector<HostLight>& lights() const { return hostLights_; }
@@ -116,6 +125,9 @@ class Renderer {
   glm::dmat4 updateFrameConstants(const FrameInput& input);
   void updateLightConstants(const glm::dvec3& eye);
   void drawLightMaps(const glm::dvec3& eye);
+  // The water surface's local water uniforms (none without regions) for the sea's grid or the
+  // first region's own square.
+  void setLocalWaterUniforms(const glm::dvec3& eye, bool regionSquare);
 
   RenderSettings settings_;
   postfx::water::Optics optics_;
@@ -130,6 +142,9 @@ class Renderer {
   std::vector<std::unique_ptr<LightDepthMaps>> lightMaps_;
   std::vector<HostLight> hostLights_;
   WaterGrid waterGrid_;
+  WaterGrid regionGrid_;  // a local water region's square (created with setLocalWater's first use)
+  std::shared_ptr<LocalWaterSource> localWater_;
+  std::vector<postfx::LocalWater> noLocalWater_;  // what hostFrame() hands without any
   glkit::Program geometry_, shadow_, lightShadow_, lighting_, composite_, water_, tonemap_;
   glkit::Buffer frameUniforms_, lightUniforms_;
   glkit::VertexArray emptyVao_;

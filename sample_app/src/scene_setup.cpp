@@ -11,6 +11,7 @@
 
 #include <scene/default_scene.h>
 #include <scene/gltf_loader.h>
+#include <scene/pool_scene.h>
 #include <scene/seabed.h>
 
 namespace ocean {
@@ -44,7 +45,16 @@ void modelBounds(const ocean_scene::Model& model, glm::dvec3& lo, glm::dvec3& hi
 }  // namespace
 
 bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
-                std::string& error, const ocean_scene::GltfLimits& limits) {
+                std::string& error, const ocean_scene::GltfLimits& limits, SceneKind kind) {
+  if (kind == SceneKind::Pool) {
+    if (!userModels.empty()) {
+      error =
+          "--model: the pool preset's scene takes no models (they are placed on the sea's sand)";
+      return false;
+    }
+    scene = ocean_scene::buildPoolScene();
+    return true;
+  }
   ocean_scene::DefaultSceneParams params;
   std::vector<std::string> warnings;
   if (!ocean_scene::buildDefaultSceneWithModels(params, assetDirectory(), scene, error)) {

@@ -8,14 +8,18 @@
 #include <scene/model.h>
 
 #include "model_spec.h"
+#include "scene_kind.h"
 
 namespace ocean {
 
 // userModels are the --model and --model-file files with their placement (model_spec.h), each
 // held to `limits` (a refusal names --model-limits, which raises them). Loader notes and
 // casters left out of the object caustics are printed to stderr as warnings; the first error
-// returns false with a one-line message.
+// returns false with a one-line message. SceneKind::Pool builds the pool (scene/pool_scene.h)
+// with its default dimensions, and takes no user models (their placement rests them on the
+// sand).
 bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
-                std::string& error, const ocean_scene::GltfLimits& limits = {});
+                std::string& error, const ocean_scene::GltfLimits& limits = {},
+                SceneKind kind = SceneKind::Sea);
 
 }  // namespace ocean

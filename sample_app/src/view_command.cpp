@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "image_output.h"
 #include "live_settings.h"
+#include "local_water_setup.h"
 #include "plugin_setup.h"
 #include "renderer.h"
 #include "scene_setup.h"
@@ -172,7 +173,8 @@ int runView(const Options& options) {
   if (!options.screenshot.empty() && !checkOutputPath(options.screenshot, error))
     return commandFailed(error);
   ocean_scene::Model scene;
-  if (!buildScene(options.models, scene, error, options.modelLimits)) return commandFailed(error);
+  if (!buildScene(options.models, scene, error, options.modelLimits, state.preset.scene))
+    return commandFailed(error);
   if (glfwInit() != GLFW_TRUE) return commandFailed("cannot initialise GLFW (no display?)");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -200,6 +202,7 @@ int runView(const Options& options) {
     auto renderer = Renderer::create(settings, scene, error);
     // The start preset's lights (with --light) stay when keys switch presets.
     if (renderer) renderer->setLights(state.preset.lights);
+    if (renderer && !attachLocalWater(state.preset, scene, *renderer, error)) renderer.reset();
     auto plugin = renderer
                       ? PluginSetup::create(*renderer, withPresetCaustics(options, state.preset),
                                             /*benchmarkFloor=*/false, error)

@@ -34,6 +34,28 @@ void WaterGrid::create(int rings, int segments, float innerRadius, float outerRa
       triangle(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
     }
   }
+  upload(points, indices);
+}
+
+void WaterGrid::createSquare(int cells) {
+  std::vector<glm::vec2> points;
+  const int n = cells + 1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      points.emplace_back(float(i) / cells - 0.5f, float(j) / cells - 0.5f);
+  // (i, j) -> (i + 1, j) is +u, (i, j) -> (i, j + 1) is +v (+x and +z at rotation 0): (a, c, d)
+  // and (a, d, b) are counter-clockwise seen from above, as create()'s triangles.
+  std::vector<uint32_t> indices;
+  for (int j = 0; j < cells; ++j) {
+    for (int i = 0; i < cells; ++i) {
+      const uint32_t a = uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+      indices.insert(indices.end(), {a, c, d, a, d, b});
+    }
+  }
+  upload(points, indices);
+}
+
+void WaterGrid::upload(const std::vector<glm::vec2>& points, const std::vector<uint32_t>& indices) {
   vertices_ =
       glkit::createBuffer(GLsizeiptr(points.size() * sizeof(glm::vec2)), points.data(), 0, {});
   indices_ =

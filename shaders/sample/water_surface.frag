@@ -6,6 +6,7 @@
 #include "shared/sample_optics.h"
 #include "sample/reconstruct.glsl"
 #include "sample/water_column.glsl"
+#include "sample/local_water.glsl"
 in vec2 surfaceXZ;
 in vec3 relativePosition;
 layout(binding = 0) uniform sampler2D depthTexture;
@@ -41,7 +42,10 @@ vec3 refractedScene(vec3 view, vec3 n, float ior) {
 
 vec3 surfaceNormal() {
   vec2 slope = vec2(0.0);
-  int count = int(cascadeInfo.x);
+  vec2 uv;
+  bool local = localWaterUv(surfaceXZ, uv);
+  if (local) slope = localWaterSlope(uv);
+  int count = local && localWaterMode() == kLocalWaterReplace ? 0 : int(cascadeInfo.x);
   for (int c = 0; c < count; ++c) {
     slope += texture(slopes, vec3(surfaceXZ * cascadeTile[c].y + cascadeTile[c].zw, float(c))).xy;
   }

@@ -1,0 +1,20 @@
+#include "local_water_setup.h"
+
+#include <memory>
+
+#include <scene/pool_scene.h>
+
+#include "pool_water.h"
+
+namespace ocean {
+
+bool attachLocalWater(const Preset& preset, const ocean_scene::Model& scene, Renderer& renderer,
+                      std::string& error) {
+  if (preset.scene != SceneKind::Pool) return true;
+  std::unique_ptr<PoolWater> pool = PoolWater::create(ocean_scene::PoolSceneParams{}, scene, error);
+  if (!pool) return false;
+  renderer.setLocalWater(std::move(pool));
+  return true;
+}
+
+}  // namespace ocean

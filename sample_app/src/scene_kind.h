@@ -1,0 +1,12 @@
+#pragma once
+// Which world a preset is shown in.
+#include <cstdint>
+
+namespace ocean {
+
+enum class SceneKind : std::uint8_t {
+  Sea,   // the default scene: the open sea over the seabed, reef, rocks, arch and models
+  Pool,  // a tiled pool on land with its ripple simulation and ball (scene/pool_scene.h)
+};
+
+}  // namespace ocean
