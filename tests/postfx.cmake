@@ -17,7 +17,7 @@ postfx_add_test(postfx_gl_tests
           gl/postfx_timing_test.cpp
           gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp gl/postfx_godrays_field_test.cpp
           gl/postfx_cascade_skip_test.cpp gl/postfx_caustics_lookup_test.cpp
-          gl/postfx_refusal_test.cpp
+          gl/postfx_refusal_test.cpp gl/postfx_local_water_test.cpp
   LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})

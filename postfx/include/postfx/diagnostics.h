@@ -22,11 +22,14 @@ enum class Pass : std::uint8_t {
   Caustics,            // seabed caustics (Feature::Caustics)
   GodRays,             // god rays, march and upsample together (Feature::GodRays)
   ObjectCaustics,      // the sun's object caustics (Feature::ObjectCaustics; lights apart)
+  // The local water regions' light (Feature::LocalWater), once per frame for every view. Runs
+  // with the pre-passes, before Floor (listed last so that the older passes keep their values).
+  LocalWater,
   // Former names, kept so that a host compiles while it renames (CHANGELOG.md).
   CausticsIrradiance [[deprecated("renamed Pass::WavefrontAreaRatio")]] = WavefrontAreaRatio,
   CausticsTileIrradiance [[deprecated("renamed Pass::TileIrradiance")]] = TileIrradiance,
 };
-inline constexpr int kPassCount = 6;
+inline constexpr int kPassCount = 7;
 
 // Stable snake_case name, e.g. "god_rays" for Pass::GodRays; "unknown" outside the enum.
 const char* toString(Pass pass) noexcept;

@@ -18,6 +18,7 @@
 namespace postfx {
 
 struct LocalLight;  // postfx/lights.h
+struct LocalWater;  // postfx/local_water.h
 
 inline constexpr int kMaxCascades = 4;
 inline constexpr Range<double> kSunLengthRange{1e-6, 1e6};            // |Sun::direction|
@@ -109,6 +110,11 @@ struct WaterSurface {
   // matching an underwater fog the host computes from the same two values. Only the god rays read
   // it.
   glm::vec3 scattering{0.02f, 0.03f, 0.04f};
+  // Local, non-periodic water beside the cascades (postfx/local_water.h): localWaterCount
+  // entries, read during dispatch() only, [0, kMaxLocalWater]; regions need Feature::LocalWater
+  // (a frame that gives some without it is refused). 0 (default): nothing is read or allocated.
+  const LocalWater* localWater = nullptr;
+  int localWaterCount = 0;
 };
 
 struct SunShadowMap {

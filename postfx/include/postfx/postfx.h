@@ -29,6 +29,7 @@
 #include <postfx/diagnostics.h>
 #include <postfx/frame_desc.h>
 #include <postfx/lights.h>
+#include <postfx/local_water.h>
 #include <postfx/result.h>
 #include <postfx/settings.h>
 
@@ -51,6 +52,9 @@ enum class Feature : std::uint32_t {
   // surface samples the water where its light entered, along the refracted sun: one
   // projection, seamless across floor, walls and overhangs, at a third of the fetches.
   TriplanarWalls = 1u << 8,
+  // Local water regions (WaterSurface::localWater, postfx/local_water.h): their light, computed
+  // once per frame for every view, timed as Pass::LocalWater. Without it no shader reads them.
+  LocalWater = 1u << 9,
   // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
   PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
 };

@@ -92,6 +92,11 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
       if (r != Result::Ok) return r;
       present[int(Pass::WavefrontAreaRatio)] = true;
     }
+    if (hasFeature(desc.features, Feature::LocalWater)) {
+      r = context->localWater.init(detail::shaderDefines(desc), createError);
+      if (r != Result::Ok) return r;
+      present[int(Pass::LocalWater)] = true;
+    }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
       r = context->objectCaustics.init(detail::shaderDefines(desc), desc.maxLocalLights,
                                        createError);

@@ -16,6 +16,7 @@
 #include "god_rays/godrays_pass.h"
 #include "object_caustics/object_caustics_pass.h"
 #include "seabed_caustics/caustics_pass.h"
+#include "seabed_caustics/local_water_pass.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 #include "seabed_caustics/wavefront_area_ratio_pass.h"
 
@@ -31,8 +32,10 @@ struct Context {
   // Compiled the first time a frame uses the TileIrradiance model.
   detail::TileIrradiancePass tileIrradiance;
   bool tileIrradianceReady = false;
+  detail::LocalWaterPass localWater;  // Feature::LocalWater only
   detail::ObjectCausticsPass objectCaustics;
-  detail::GpuTimers timers;  // the shared passes: Pass::TileIrradiance, ObjectCaustics, lights
+  // The shared passes: Pass::TileIrradiance, LocalWater, ObjectCaustics, the lights.
+  detail::GpuTimers timers;
   std::array<bool, kPassCount> present{};    // the passes the context has, for its views' timers
   View defaultView;                          // dispatch(context, frame)'s
   std::vector<std::unique_ptr<View>> views;  // createView()'s, alive

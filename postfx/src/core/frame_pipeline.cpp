@@ -23,6 +23,7 @@
 #include "object_caustics/object_caustics_validation.h"
 #include "object_caustics/object_caustics_work.h"
 #include "seabed_caustics/caustics_constants.h"
+#include "seabed_caustics/local_water_layout.h"
 
 namespace postfx::detail {
 namespace {
@@ -68,6 +69,7 @@ struct ViewWork {
 // camera).
 struct SharedWork {
   bool tile = false;
+  bool localWater = false;
   bool wavefrontAreaRatio = false;
   const FramePlan* objectPlan = nullptr;
   ObjectCausticsViews objects;
@@ -98,6 +100,8 @@ Result buildViewBlocks(const Context& context, ViewWork& w, std::string& error) 
     return refuse(error,
                   "frame: a caustics constant overflows the GPU's float (camera.projection, or "
                   "shadow.worldToLightClip about camera.position, has entries too large)");
+  if (w.plan.localWater && !allFinite(buildLocalWaterBlock(frame)))
+    return refuse(error, "frame: a local water constant overflows the GPU's float");
   w.pivot = w.view->godRayPivot;
   if (w.plan.godRays) {
     w.godRays =
@@ -245,6 +249,12 @@ Result reserve(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTa
     r = context.tileIrradiance.reserve(first, error);
     if (r != Result::Ok) return r;
   }
+  if (s.localWater) {
+    r = context.localWater.reserve(first, error);
+    if (r != Result::Ok) return r;
+  } else if (context.localWater.ready()) {
+    context.localWater.release();  // a frame without regions holds none of their memory
+  }
   if (s.objectPlan->objectMaps()) {
     held.objects = true;
     r = context.objectCaustics.prepare(first, s.objects, s.targets, error);
@@ -283,7 +293,7 @@ void timedPass(GpuTimers& timers, bool floor, Pass pass, const char* group, Work
 // view that draws (after its window, as the Pass order says: a single view records exactly what
 // a context of its own would), once for all.
 void recordView(Context& context, ViewWork& w, const SharedWork& s, bool& tileDrawn,
-                HeldTargets& held) {
+                bool& localWaterDrawn, HeldTargets& held) {
   const FramePlan& plan = w.plan;
   GpuTimers& timers = w.view->timers;
   if (!plan.caustics) context.caustics.clearRaw(w.textures, w.view->caustics);
@@ -307,7 +317,16 @@ void recordView(Context& context, ViewWork& w, const SharedWork& s, bool& tileDr
               [&] { context.tileIrradiance.draw(w.frame, w.textures); });
     tileDrawn = true;
   }
+  if (s.localWater && !localWaterDrawn) {
+    // View-independent too (the regions and the sun): once for every view.
+    context.caustics.bindState(w.frame, w.textures, 0);
+    timedPass(context.timers, plan.floor, Pass::LocalWater, "postfx.local_water",
+              [&] { context.localWater.draw(w.frame, w.textures); });
+    localWaterDrawn = true;
+  }
   context.caustics.bindState(w.frame, w.textures, window, tile);
+  // Every view that draws with the feature binds the block: the shaders read its count.
+  if (context.localWater.ready()) context.localWater.bind(w.frame, s.localWater);
   if (plan.runs(Pass::Floor))
     timedPass(timers, plan.floor, Pass::Floor, "postfx.floor",
               [&] { context.caustics.drawFloor(); });
@@ -328,7 +347,9 @@ void markSkipped(Context& context, std::span<ViewWork> work, const SharedWork& s
     if (isViewPass(pass)) {
       for (ViewWork& w : work)
         if (!w.plan.runs(pass)) w.view->timers.markSkipped(pass);
-    } else if (!(pass == Pass::TileIrradiance ? s.tile : s.objectPlan->runs(pass))) {
+    } else if (!(pass == Pass::TileIrradiance ? s.tile
+                 : pass == Pass::LocalWater   ? s.localWater
+                                              : s.objectPlan->runs(pass))) {
       context.timers.markSkipped(pass);
     }
   }
@@ -356,9 +377,9 @@ void record(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTarge
   }
   markSkipped(context, work, s);
 
-  bool tileDrawn = false;
+  bool tileDrawn = false, localWaterDrawn = false;
   for (ViewWork& w : work) {
-    recordView(context, w, s, tileDrawn, held);
+    recordView(context, w, s, tileDrawn, localWaterDrawn, held);
     w.view->godRayPivot = w.pivot;
   }
 
@@ -419,6 +440,7 @@ Result dispatchFrame(Context& context, const FrameDesc& frame, std::span<const V
     ViewWork& w = work[i];
     w.plan = planFrame(context, w.frame);
     s.tile = s.tile || w.plan.tile;
+    s.localWater = s.localWater || w.plan.localWater;
     s.wavefrontAreaRatio = s.wavefrontAreaRatio || w.plan.wavefrontAreaRatio;
     r = prefixed(buildViewBlocks(context, w, error), error, static_cast<int>(i), listed);
     if (r != Result::Ok) return r;

@@ -55,6 +55,8 @@ bool FramePlan::runs(Pass pass) const {
       return godRays;
     case Pass::ObjectCaustics:
       return objects;
+    case Pass::LocalWater:
+      return localWater;
   }
   return false;
 }
@@ -68,6 +70,8 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   const bool fieldNeeded = plan.caustics || plan.godRays;
   plan.wavefrontAreaRatio = fieldNeeded && wavefrontAreaRatioActive(context.desc, frame);
   plan.tile = fieldNeeded && tileIrradianceActive(frame);
+  plan.localWater = fieldNeeded && hasFeature(context.desc.features, Feature::LocalWater) &&
+                    frame.water.localWaterCount > 0;
   plan.objects = objectCausticsHaveWork(context, frame);
   if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
     for (int i = 0; i < context.desc.maxLocalLights; ++i) {

@@ -18,6 +18,9 @@ struct FramePlan {
   // The caustics model's pre-pass, for the caustics or the god rays (both read its field).
   bool wavefrontAreaRatio = false;
   bool tile = false;  // TileIrradiance
+  // The local water regions' light (Feature::LocalWater, some region given), for the caustics
+  // or the god rays.
+  bool localWater = false;
   bool godRays = false;
   bool objects = false;  // the sun's object caustics
   // The local lights whose object caustics run (indices into ObjectCausticsFrame::lights, in

@@ -2,13 +2,15 @@
 
 #include "core/shared_math.h"
 
-static_assert(POSTFX_CAUSTICS_BLOCK_BINDING < 2 && POSTFX_GODRAYS_BLOCK_BINDING < 2,
-              "GlStateGuard saves uniform-buffer bindings 0 and 1 only");
+static_assert(POSTFX_CAUSTICS_BLOCK_BINDING < 3 && POSTFX_GODRAYS_BLOCK_BINDING < 3 &&
+                  POSTFX_LOCAL_WATER_BLOCK_BINDING < 3,
+              "GlStateGuard saves uniform-buffer bindings 0-2 only");
 static_assert(POSTFX_UNIT_IRRADIANCE < POSTFX_UNIT_COUNT &&
                   POSTFX_UNIT_GODRAYS_REDUCED < POSTFX_UNIT_COUNT &&
                   POSTFX_UNIT_GRID_POINTS < POSTFX_UNIT_COUNT &&
                   POSTFX_UNIT_TILE_IRRADIANCE < POSTFX_UNIT_COUNT &&
-                  POSTFX_OBJECT_UNIT_LANDINGS < POSTFX_UNIT_COUNT,
+                  POSTFX_OBJECT_UNIT_LANDINGS < POSTFX_UNIT_COUNT &&
+                  POSTFX_UNIT_LOCAL_WATER + POSTFX_MAX_LOCAL_WATER <= POSTFX_UNIT_COUNT,
               "GlStateGuard saves texture units [0, POSTFX_UNIT_COUNT) only");
 static_assert(POSTFX_STORAGE_GRID_POINTS == 0 && POSTFX_STORAGE_CLAMP_COUNT == 0 &&
                   POSTFX_STORAGE_TILE_ACCUMULATORS == 0 && POSTFX_STORAGE_TILE_BLUR == 1 &&

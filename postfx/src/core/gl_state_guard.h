@@ -38,8 +38,8 @@ class GlStateGuard {
   GLfloat viewport_[4] = {};
   GLint program_ = 0, vertexArray_ = 0, activeTexture_ = GL_TEXTURE0;
   std::array<UnitState, kUnitCount> units_{};
-  // Indexed uniform-buffer bindings the passes use: the caustics block and the god-ray block.
-  static constexpr int kUniformBindings = 2;
+  // Indexed uniform-buffer bindings the passes use: the caustics, god-ray and local water blocks.
+  static constexpr int kUniformBindings = 3;
   GLint uniformBuffer_ = 0;
   std::array<glkit::IndexedBufferBinding, kUniformBindings> uniformIndexed_{};
   GLint queryBuffer_ = 0;

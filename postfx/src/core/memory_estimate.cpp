@@ -3,6 +3,7 @@
 #include <postfx/testing.h>
 
 #include "god_rays/godrays_constants.h"
+#include "seabed_caustics/local_water_layout.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
@@ -17,9 +18,9 @@ std::uint64_t square(int side) {
 // view's own (summed over the views); the others are shared.
 struct Terms {
   std::uint64_t raw = 0, godRays = 0, lookups = 0, irradiance = 0, tile = 0, casterMaps = 0,
-                causticMap = 0;
+                causticMap = 0, localWater = 0;
   std::uint64_t total() const {
-    return raw + godRays + lookups + irradiance + tile + casterMaps + causticMap;
+    return raw + godRays + lookups + irradiance + tile + casterMaps + causticMap + localWater;
   }
 };
 
@@ -41,11 +42,12 @@ void addViewTerms(const CreateDesc& create, const ViewMemory& v, Terms& t) {
 
 Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
   Terms t;
-  bool irradiance = false, tile = false;
+  bool irradiance = false, tile = false, localWater = false;
   for (const ViewMemory& v : views) {
     addViewTerms(create, v, t);
     irradiance = irradiance || v.plan->wavefrontAreaRatio;
     tile = tile || v.plan->tile;
+    localWater = localWater || v.plan->localWater;
   }
   // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
   // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window. The
@@ -56,6 +58,7 @@ Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
     t.irradiance = wavefrontAreaRatioBytes(frame.caustics.gridResolution,
                                            frame.caustics.depthLayers, landingSpreadOn(frame));
   if (tile) t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
+  if (localWater) t.localWater = localWaterBytes(frame);
   if (passes.objectMaps()) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
@@ -101,7 +104,8 @@ Result checkFrameMemory(const CreateDesc& create, std::span<const ViewMemory> vi
       {t.tile,
        "the tile irradiance (caustics.tileResolution, tileDepthLayers, tileLookupResolution)"},
       {t.casterMaps, "the caster maps (objectCaustics.settings.gridSize)"},
-      {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"}};
+      {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"},
+      {t.localWater, "the local water layers (water.localWater's gridResolution, depthLayers)"}};
   for (const auto& [bytes, name] : others)
     if (bytes > most) {
       most = bytes;

@@ -17,6 +17,8 @@ const char* toString(Pass pass) noexcept {
       return "god_rays";
     case Pass::ObjectCaustics:
       return "object_caustics";
+    case Pass::LocalWater:
+      return "local_water";
   }
   return "unknown";
 }

@@ -11,6 +11,7 @@ namespace postfx {
 #include "postfx/object_caustics/postfx_object_caustics.h"
 #include "postfx/seabed_caustics/postfx_caustics.h"
 #include "postfx/seabed_caustics/postfx_caustics_block.h"
+#include "postfx/seabed_caustics/postfx_local_water.h"
 #include "postfx/seabed_caustics/postfx_tile_irradiance.h"
 #include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 }  // namespace postfx

@@ -4,6 +4,7 @@
 #include "core/gl_enum_names.h"
 #include "god_rays/godrays_validation.h"
 #include "seabed_caustics/caustics_validation.h"
+#include "seabed_caustics/local_water_validation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,10 +55,6 @@ std::string formatName(GLenum format) {
   return glEnumName(format);
 }
 
-struct TextureFacts {
-  GLint target = 0, format = 0, width = 0, height = 0, layers = 0;
-};
-
 // Every query here is valid for any texture name of any kind, so none can raise a GL error in
 // the host's context. The target is the one fact that needs care: glGetTextureParameteriv
 // refuses buffer textures (GL_INVALID_OPERATION in Mesa), while level-0 queries accept every
@@ -77,38 +74,6 @@ bool queryTexture(GLuint texture, TextureFacts& facts) {
     glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &facts.target);
   }  // else no storage (or a buffer texture without a buffer): target left 0, reported below
   return true;
-}
-
-Result checkTexture(const char* field, const TextureRef& ref, std::initializer_list<GLenum> targets,
-                    std::initializer_list<GLenum> formats, TextureFacts& facts,
-                    std::string& error) {
-  if (!queryTexture(ref.texture, facts)) {
-    error = std::string(field) + ": texture " + std::to_string(ref.texture) +
-            " is not a texture name (required)";
-    return Result::MissingTexture;
-  }
-  if (facts.width <= 0 || facts.height <= 0) {
-    error = std::string(field) + ": texture level 0 has no storage";
-    return Result::MissingTexture;
-  }
-  if (std::find(targets.begin(), targets.end(), static_cast<GLenum>(facts.target)) ==
-      targets.end()) {
-    error = std::string(field) + ": texture target " + formatName(facts.target) +
-            " is not accepted here";
-    return Result::UnsupportedFormat;
-  }
-  if (ref.format != 0 && ref.format != static_cast<GLenum>(facts.format)) {
-    error = std::string(field) + ": declared format " + formatName(ref.format) +
-            " but the texture's internal format is " + formatName(facts.format);
-    return Result::UnsupportedFormat;
-  }
-  if (std::find(formats.begin(), formats.end(), static_cast<GLenum>(facts.format)) ==
-      formats.end()) {
-    error = std::string(field) + ": internal format " + formatName(facts.format) +
-            " is not supported for this input";
-    return Result::UnsupportedFormat;
-  }
-  return Result::Ok;
 }
 
 constexpr std::initializer_list<GLenum> kDepthFormats = {
@@ -176,6 +141,38 @@ Result checkShadowTexture(const CreateDesc& create, const FrameDesc& frame, std:
 
 }  // namespace
 
+Result checkTexture(const char* field, const TextureRef& ref, std::initializer_list<GLenum> targets,
+                    std::initializer_list<GLenum> formats, TextureFacts& facts,
+                    std::string& error) {
+  if (!queryTexture(ref.texture, facts)) {
+    error = std::string(field) + ": texture " + std::to_string(ref.texture) +
+            " is not a texture name (required)";
+    return Result::MissingTexture;
+  }
+  if (facts.width <= 0 || facts.height <= 0) {
+    error = std::string(field) + ": texture level 0 has no storage";
+    return Result::MissingTexture;
+  }
+  if (std::find(targets.begin(), targets.end(), static_cast<GLenum>(facts.target)) ==
+      targets.end()) {
+    error = std::string(field) + ": texture target " + formatName(facts.target) +
+            " is not accepted here";
+    return Result::UnsupportedFormat;
+  }
+  if (ref.format != 0 && ref.format != static_cast<GLenum>(facts.format)) {
+    error = std::string(field) + ": declared format " + formatName(ref.format) +
+            " but the texture's internal format is " + formatName(facts.format);
+    return Result::UnsupportedFormat;
+  }
+  if (std::find(formats.begin(), formats.end(), static_cast<GLenum>(facts.format)) ==
+      formats.end()) {
+    error = std::string(field) + ": internal format " + formatName(facts.format) +
+            " is not supported for this input";
+    return Result::UnsupportedFormat;
+  }
+  return Result::Ok;
+}
+
 Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& error) {
   TextureFacts facts;
   const Result r = checkTexture(field, ref, {GL_TEXTURE_2D}, kDepthFormats, facts, error);
@@ -183,7 +180,7 @@ Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& 
 }
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (static_cast<std::uint32_t>(desc.features) >= (1u << 9)) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 10)) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }
@@ -307,6 +304,8 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
        frame.viewExtinction == ViewExtinction::Plugin) &&
       !within(water.scattering, kWaterCoefficientRange))
     return fail("water.scattering must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
+  if (const Result local = validateLocalWaterValues(create, water, error); local != Result::Ok)
+    return local;
 
   if (hasFeature(create.features, Feature::ShadowMask)) {
     const SunShadowMap& shadow = frame.shadow;
@@ -365,6 +364,8 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
   // Only the seabed caustics and the god rays (and the benchmark floor beside them) sample the
   // water: a host with glass but no water simulation may leave it 0. A texture given is
   // still checked, so a stale name is reported rather than sampled.
+  r = validateLocalWaterTextures(frame.water, error);
+  if (r != Result::Ok) return r;
   const bool waterNeeded =
       (hasFeature(create.features, Feature::Caustics) && frame.caustics.enabled) ||
       (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled);

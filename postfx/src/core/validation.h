@@ -3,6 +3,7 @@
 // changes, no GL errors), so a rejected call leaves the host's GL state untouched.
 #include <epoxy/gl.h>
 
+#include <initializer_list>
 #include <string>
 
 #include <postfx/postfx.h>
@@ -64,6 +65,15 @@ struct ValidatedTextures {
   WaterTextureInfo water;
   bool waterMipmapped = false;  // mip-complete: sample with mips; otherwise level 0 only
 };
+
+// What checkTexture learnt of a texture.
+struct TextureFacts {
+  GLint target = 0, format = 0, width = 0, height = 0, layers = 0;
+};
+// One host texture: a texture name with level-0 storage, one of `targets`, its declared format
+// (ref.format, 0: any) its real one, and one of `formats`; messages begin with `field`.
+Result checkTexture(const char* field, const TextureRef& ref, std::initializer_list<GLenum> targets,
+                    std::initializer_list<GLenum> formats, TextureFacts& facts, std::string& error);
 
 // GL-query checks of every texture: a texture name, the right target and format, sizes that
 // match. Runs after validateFrameValues.

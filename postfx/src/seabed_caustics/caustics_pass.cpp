@@ -31,6 +31,7 @@ std::string shaderDefines(const CreateDesc& desc) {
   d += std::string("#define POSTFX_WAVEFRONT_AREA_RATIO ") + flag(Feature::WavefrontAreaRatio) +
        "\n";
   d += std::string("#define POSTFX_TRIPLANAR_WALLS ") + flag(Feature::TriplanarWalls) + "\n";
+  d += std::string("#define POSTFX_LOCAL_WATER ") + flag(Feature::LocalWater) + "\n";
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
   d += "#define POSTFX_CASCADE_SLOTS " + std::to_string(waterCascadeSlots(desc)) + "\n";

@@ -32,7 +32,10 @@
 // inside a disabled #if.
 #include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 #include "postfx/seabed_caustics/postfx_tile_irradiance.h"
+#include "postfx/seabed_caustics/postfx_local_water.h"
+#include "postfx/seabed_caustics/irradiance_bspline.glsl"
 #include "postfx/seabed_caustics/wavefront_area_ratio_lookup.glsl"
+#include "postfx/seabed_caustics/local_water_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_lookup.glsl"
 
 // 4x4 ordered dither, fixed on screen and in time: no temporal noise.
@@ -74,6 +77,9 @@ vec3 sunSource(vec3 p, float t) {
 #if POSTFX_WAVEFRONT_AREA_RATIO
   omega = mix(omega, physical, physicalWeight);
 #endif
+#endif
+#if POSTFX_LOCAL_WATER
+  omega = localWaterIrradiance(p, depthBelow, logFootprint, vec3(omega)).r;  // as the seabed
 #endif
   return vec3(rho * omega) * exp(-g.sunPath.rgb * depthBelow);
 }

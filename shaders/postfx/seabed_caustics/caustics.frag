@@ -2,7 +2,8 @@
 // Seabed caustics ([1], section 4) added into the host's HDR target. Compile-time
 // switches: POSTFX_DEPTH_CONVENTION, POSTFX_NORMAL_ENCODING, POSTFX_DISPERSION,
 // POSTFX_SHADOW_MASK, POSTFX_RAW_OUTPUT, POSTFX_WATER_SINGLE_2D, POSTFX_WAVEFRONT_AREA_RATIO,
-// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS; the variants that read the tile irradiance
+// POSTFX_TRIPLANAR_WALLS, POSTFX_CASCADE_SLOTS, POSTFX_LOCAL_WATER (the regions' light over the
+// model's); the variants that read the tile irradiance
 // define POSTFX_TILE_IRRADIANCE and POSTFX_TILE_GROUPS (RGBA fetches per cascade: 4 depth layers
 // each): the TileIrradiance model (POSTFX_WAVEFRONT_AREA_RATIO 0; POSTFX_TILE_REDUCED where its lookups ran
 // at half resolution, tile_irradiance_reduced.frag) and the WavefrontAreaRatio window continued
@@ -15,7 +16,10 @@
 // inside a disabled #if (the tile irradiance header needs it too).
 #include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
 #include "postfx/seabed_caustics/postfx_tile_irradiance.h"
+#include "postfx/seabed_caustics/postfx_local_water.h"
+#include "postfx/seabed_caustics/irradiance_bspline.glsl"
 #include "postfx/seabed_caustics/wavefront_area_ratio_lookup.glsl"
+#include "postfx/seabed_caustics/local_water_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_lookup.glsl"
 #include "postfx/seabed_caustics/tile_irradiance_upsample.glsl"
 
@@ -106,6 +110,9 @@ void main() {
   omega = mix(omega, physical, physicalWeight);
 #endif
 #endif  // the model
+#if POSTFX_LOCAL_WATER
+  omega = localWaterIrradiance(p, depthBelow, logFootprint, omega);
+#endif
   vec3 raw = omega * (nDotL * visibility * causticSurfaceFade(depthBelow, u.refractedUp.w));
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   // Beer-Lambert along the refracted sun path to the receiver (causticTransmittance) and, with

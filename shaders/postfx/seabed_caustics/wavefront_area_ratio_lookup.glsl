@@ -1,33 +1,19 @@
 // The wavefront area ratio's [4] irradiance lookup, shared by the caustics and the god rays:
 // the depth-layered window texture the irradiance pass rendered this frame. Include after
-// caustics_io.glsl and postfx/seabed_caustics/postfx_wavefront_area_ratio.h.
+// caustics_io.glsl, postfx/seabed_caustics/postfx_wavefront_area_ratio.h and
+// irradiance_bspline.glsl.
 #if POSTFX_WAVEFRONT_AREA_RATIO
 
 layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray causticIrradiance;
 
-// Level 0 reconstructed with the cubic B-spline from four bilinear fetches (each pair of B-spline
-// taps per axis is one bilinear fetch between them at the ratio of their weights). Bilinear
-// magnification shows the texel grid as creases (its slope jumps at every texel edge); the
-// B-spline is C2 across them. Its weights are all positive: no negative lobes, so irradiance
-// stays >= 0, flat light stays exactly flat and the mean is kept.
+// Level 0 reconstructed with the cubic B-spline (irradiance_bspline.glsl).
 float smoothLevelZero(vec2 uv, float layer, float texels) {
-  vec2 x = uv * texels - 0.5;
-  vec2 i = floor(x);
-  vec2 f = x - i;
-  vec2 f2 = f * f, f3 = f2 * f;
-  vec2 w0 = (1.0 - 3.0 * f + 3.0 * f2 - f3) * (1.0 / 6.0);
-  vec2 w1 = (4.0 - 6.0 * f2 + 3.0 * f3) * (1.0 / 6.0);
-  vec2 w3 = f3 * (1.0 / 6.0);
-  vec2 w2 = 1.0 - w0 - w1 - w3;
-  vec2 g0 = w0 + w1, g1 = w2 + w3;
-  // Texel-centre coordinates of the two fetches per axis, back to [0, 1].
-  vec2 c0 = (i - 0.5 + w1 / g0) / texels;
-  vec2 c1 = (i + 1.5 + w3 / g1) / texels;
-  float e00 = textureLod(causticIrradiance, vec3(c0.x, c0.y, layer), 0.0).r;
-  float e10 = textureLod(causticIrradiance, vec3(c1.x, c0.y, layer), 0.0).r;
-  float e01 = textureLod(causticIrradiance, vec3(c0.x, c1.y, layer), 0.0).r;
-  float e11 = textureLod(causticIrradiance, vec3(c1.x, c1.y, layer), 0.0).r;
-  return g0.y * (g0.x * e00 + g1.x * e10) + g1.y * (g0.x * e01 + g1.x * e11);
+  BSplineTaps t = bsplineTaps(uv, texels);
+  float e00 = textureLod(causticIrradiance, vec3(t.c0.x, t.c0.y, layer), 0.0).r;
+  float e10 = textureLod(causticIrradiance, vec3(t.c1.x, t.c0.y, layer), 0.0).r;
+  float e01 = textureLod(causticIrradiance, vec3(t.c0.x, t.c1.y, layer), 0.0).r;
+  float e11 = textureLod(causticIrradiance, vec3(t.c1.x, t.c1.y, layer), 0.0).r;
+  return bsplineSum(t, e00, e10, e01, e11);
 }
 
 // Layer k's irradiance at receiver p (camera-relative) `depthBelow` under the level, each

@@ -1,0 +1,92 @@
+#include "seabed_caustics/local_water_layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/block_check.h"
+#include "core/frame_geometry.h"
+#include "core/validation.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
+
+namespace postfx::detail {
+
+LocalWaterLayout localWaterLayout(const LocalWater& region, const FrameDesc& frame) {
+  LocalWaterLayout l;
+  l.cells = region.gridResolution;
+  const int margin = static_cast<int>(std::ceil(kLocalWaterMargin * l.cells));
+  l.texels = l.cells + 2 * margin;
+  l.pointsPerSide = l.cells + 3;
+  l.layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers);
+  l.add = region.mode == LocalWaterMode::Add;
+  l.fieldLayers = l.add ? 2 * l.layers : l.layers;
+  l.axisU = glm::dvec2(std::cos(region.rotation), -std::sin(region.rotation));
+  const glm::dvec2 axisV(-l.axisU.y, l.axisU.x);
+  l.half = 0.5 * region.size;
+  l.cell = region.size / double(l.cells);
+  l.windowCorner = -l.half - double(margin) * l.cell;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const glm::dvec2 sunXz(sun.x, sun.z);
+  l.sunLocal = glm::dvec3(glm::dot(sunXz, l.axisU), sun.y, glm::dot(sunXz, axisV));
+  const glm::dvec3 down = refractedSunDown(l.sunLocal, frame.water.ior);
+  l.drift = glm::dvec2(down.x, down.z) / std::max(-down.y, 1e-6);
+  for (int k = 0; k < l.layers; ++k)
+    l.depth[k] = wavefrontAreaRatioLayerDepth(k, l.layers, double(region.maxDepth));
+  return l;
+}
+
+shared::LocalWaterBlock buildLocalWaterBlock(const FrameDesc& frame) {
+  shared::LocalWaterBlock b{};
+  const WaterSurface& water = frame.water;
+  const int count = water.localWater == nullptr ? 0 : water.localWaterCount;
+  b.count = glm::vec4(float(count), 0.0f, 0.0f, 0.0f);
+  const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
+  for (int r = 0; r < count; ++r) {
+    const LocalWater& region = water.localWater[r];
+    const LocalWaterLayout l = localWaterLayout(region, frame);
+    const glm::dvec2 centre = region.centre - camera;  // in double: both may be ~1e6 m out
+    b.frame[r] = glm::vec4(saturatedFloat(centre.x), saturatedFloat(centre.y), float(l.axisU.x),
+                           float(l.axisU.y));
+    b.texels[r] = float(l.texels);
+    b.extent[r] =
+        glm::vec4(float(l.half.x), float(l.half.y), region.edgeBlend, l.add ? 0.0f : 1.0f);
+    const glm::dvec2 window = double(l.texels) * l.cell;
+    b.window[r] = glm::vec4(float(l.windowCorner.x), float(l.windowCorner.y), float(1.0 / window.x),
+                            float(1.0 / window.y));
+    b.drift[r] = glm::vec4(float(l.drift.x), float(l.drift.y), float(l.layers),
+                           float(-0.5 * std::log2(l.cell.x * l.cell.y)));
+    for (int k = 0; k < l.layers; ++k) b.depths[2 * r + k / 4][k % 4] = float(l.depth[k]);
+  }
+  return b;
+}
+
+std::uint64_t localWaterRegionBytes(const LocalWater& region) {
+  const int cells = region.gridResolution;
+  const int texels = cells + 2 * static_cast<int>(std::ceil(kLocalWaterMargin * cells));
+  const int layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers) *
+                     (region.mode == LocalWaterMode::Add ? 2 : 1);
+  std::uint64_t texelCount = 0;
+  for (int level = 0; level < wavefrontAreaRatioMipLevels(texels); ++level) {
+    const std::uint64_t side = std::uint64_t(std::max(texels >> level, 1));
+    texelCount += side * side;
+  }
+  return texelCount * std::uint64_t(layers) * 4;
+}
+
+std::uint64_t localWaterGridBytes(const FrameDesc& frame) {
+  std::uint64_t points = 0;
+  for (int r = 0; r < frame.water.localWaterCount; ++r) {
+    const std::uint64_t side = std::uint64_t(frame.water.localWater[r].gridResolution) + 3;
+    points = std::max(points, side * side);
+  }
+  return points * 2 * 16;
+}
+
+std::uint64_t localWaterBytes(const FrameDesc& frame) {
+  if (frame.water.localWater == nullptr || frame.water.localWaterCount <= 0) return 0;
+  std::uint64_t bytes = localWaterGridBytes(frame);
+  for (int r = 0; r < frame.water.localWaterCount; ++r)
+    bytes += localWaterRegionBytes(frame.water.localWater[r]);
+  return bytes;
+}
+
+}  // namespace postfx::detail

@@ -1,0 +1,215 @@
+#include "seabed_caustics/local_water_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glkit/texture.h>
+
+#include "core/block_check.h"
+#include "core/frame_geometry.h"
+#include "core/gl_sizes.h"
+#include "core/shader_library.h"
+#include "core/shared_math.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
+
+namespace postfx::detail {
+
+Result LocalWaterPass::init(const std::string& defines, std::string& error) {
+  // The triangle and point draws are the wavefront area ratio's own: they read grid points in
+  // texels, whatever placed them.
+  const Result r = buildPrograms(
+      defines,
+      {{vertices_,
+        "postfx.local_water.grid",
+        {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/local_water_vertices.comp"}}},
+       {triangles_,
+        "postfx.local_water.triangles",
+        {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.frag"}}},
+       {points_,
+        "postfx.local_water.points",
+        {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
+      error);
+  if (r != Result::Ok) return r;
+  framebuffer_ = glkit::createFramebuffer("postfx.local_water.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.local_water.vao");
+  // The host's surface: clamped at the rectangle's edge, level 0 (the grid is the resolution).
+  surfaceSampler_ =
+      glkit::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "postfx.sampler.local_surface");
+  lookupSampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
+                                        "postfx.sampler.local_water");
+  block_ = glkit::createBuffer(sizeof(shared::LocalWaterBlock), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                               "postfx.local_water.block");
+  clampCount_ = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                    "postfx.local_water.clamp_count");
+  return Result::Ok;
+}
+
+void LocalWaterPass::ensureRegion(Region& region, int texels, int layers) {
+  if (region.texture && region.texels == texels && region.layers == layers) return;
+  region.texture.reset();  // the old size goes first: never two allocated at once
+  region.texture = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.local_water.irradiance");
+  // R32F with mips, as the window model's: exact additive sums, footprint-filtered lookups.
+  glTextureStorage3D(region.texture.id(), wavefrontAreaRatioMipLevels(texels), GL_R32F, texels,
+                     texels, layers);
+  region.texels = texels;
+  region.layers = layers;
+}
+
+Result LocalWaterPass::reserve(const FrameDesc& frame, std::string& error) {
+  const WaterSurface& water = frame.water;
+  for (int r = 0; r < water.localWaterCount; ++r) {
+    const LocalWaterLayout l = localWaterLayout(water.localWater[r], frame);
+    Region& region = regions_[static_cast<std::size_t>(r)];
+    ensureRegion(region, l.texels, l.fieldLayers);
+    if (glkit::storedWidth(region.texture) != l.texels) {
+      error = "water.localWater[" + std::to_string(r) +
+              "]: the driver could not allocate its irradiance layers (gridResolution " +
+              std::to_string(water.localWater[r].gridResolution) + ")";
+      return Result::OutOfMemory;
+    }
+  }
+  // Slots this frame does not use are freed: what is allocated is what the frame needs.
+  for (int r = water.localWaterCount; r < kMaxLocalWater; ++r)
+    regions_[static_cast<std::size_t>(r)] = Region{};
+  const std::uint64_t bytes = localWaterGridBytes(frame);
+  if (!gridPoints_ || gridPointBytes_ != bytes) {
+    gridPointView_.reset();
+    gridPoints_.reset();
+    gridPoints_ =
+        glkit::createBuffer(GLsizeiptr(bytes), nullptr, 0, "postfx.local_water.grid_points");
+    gridPointView_ = glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.local_water.grid_points_view");
+    glTextureBuffer(gridPointView_.id(), GL_RGBA32F, gridPoints_.id());
+    gridPointBytes_ = bytes;
+  }
+  GLint64 stored = 0;
+  glGetNamedBufferParameteri64v(gridPoints_.id(), GL_BUFFER_SIZE, &stored);
+  if (stored < GLint64(bytes)) {
+    gridPointBytes_ = 0;
+    error = "water.localWater: the driver could not allocate the grid points";
+    return Result::OutOfMemory;
+  }
+  return Result::Ok;
+}
+
+void LocalWaterPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  glBindVertexArray(vertexArray_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPointView_.id());
+  glBindSampler(POSTFX_UNIT_GRID_POINTS, 0);
+  glBindSampler(POSTFX_UNIT_LOCAL_SURFACE, surfaceSampler_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
+  for (int r = 0; r < frame.water.localWaterCount; ++r) drawRegion(frame, textures, r);
+  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+}
+
+void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures& textures, int r) {
+  const LocalWater& region = frame.water.localWater[r];
+  const LocalWaterLayout l = localWaterLayout(region, frame);
+  const Region& target = regions_[static_cast<std::size_t>(r)];
+  const WaterSurface& water = frame.water;
+  const float zero = 0.0f;
+  glClearTexImage(target.texture.id(), 0, GL_RED, GL_FLOAT, &zero);
+  glBindTextureUnit(POSTFX_UNIT_LOCAL_SURFACE, region.texture.texture);
+
+  const glm::dvec2 axisV(-l.axisU.y, l.axisU.x);
+  const glm::dvec2 gridCorner = -l.half - l.cell;  // grid point (0, 0): a cell beyond the edge
+  // The cascades beneath (Add mode), each at the mip level whose texel matches the grid
+  // spacing: finer ripples cannot be carried by the grid and would alias into false caustics.
+  const int cascades = l.add ? water.cascadeCount : 0;
+  glm::vec4 cascadeGrid[kMaxCascades] = {}, cascadeStep[kMaxCascades] = {};
+  const int texelsPerSide = std::max(textures.water.width, textures.water.height);
+  const glm::dvec2 world0 =
+      region.centre + gridCorner.x * l.axisU + gridCorner.y * axisV - water.origin;
+  for (int c = 0; c < cascades; ++c) {
+    const double tile = water.tileSize[c];
+    const double lod =
+        std::max(0.0, std::log2(std::min(l.cell.x, l.cell.y) * texelsPerSide / tile));
+    cascadeGrid[c] =
+        glm::vec4(tileFraction(world0.x, tile), tileFraction(world0.y, tile), float(lod), 0.0f);
+    const glm::dvec2 stepI = l.axisU * l.cell.x / tile, stepJ = axisV * l.cell.y / tile;
+    cascadeStep[c] = glm::vec4(stepI.x, stepI.y, stepJ.x, stepJ.y);
+  }
+  const GLuint compute = vertices_.id();
+  if (cascades > 0) {
+    glProgramUniform4fv(compute, 0, cascades, &cascadeGrid[0].x);
+    glProgramUniform4fv(compute, 4, cascades, &cascadeStep[0].x);
+  }
+  glProgramUniform4f(compute, 9, float(gridCorner.x), float(gridCorner.y), float(l.cell.x),
+                     float(l.cell.y));
+  // Texture uv = (local + half) / size: grid point (0, 0) lies one cell before uv 0.
+  glProgramUniform4f(compute, 10, float(-1.0 / l.cells), float(-1.0 / l.cells),
+                     float(1.0 / l.cells), float(1.0 / l.cells));
+  const double flatT = shared::fresnelTransmittance(float(l.sunLocal.y), water.ior);
+  glProgramUniform4f(compute, 11, float(l.sunLocal.x), float(l.sunLocal.y), float(l.sunLocal.z),
+                     water.ior);
+  glProgramUniform1i(compute, 14, l.pointsPerSide);
+  glProgramUniform2f(compute, 15, float(l.axisU.x), float(l.axisU.y));
+  // Triangles whose refracted area is under 0.35 texel go to the point draw (see
+  // WavefrontAreaRatioPass::draw). One texel per cell: flat water's triangles are half a texel,
+  // and must stay rasterised with their exact ratio of 1 (at half a texel, rounding sent some of
+  // them to the points).
+  const float pointRatio = 0.5f / 0.35f;
+  for (GLuint program : {triangles_.id(), points_.id()}) {
+    glProgramUniform1f(program, 8, frame.caustics.maxIrradiance);
+    glProgramUniform1i(program, 9, l.pointsPerSide);
+    glProgramUniform2f(program, 10, float(l.texels), pointRatio);
+  }
+  glViewportIndexedf(0, 0.0f, 0.0f, float(l.texels), float(l.texels));
+  const GLuint groups = static_cast<GLuint>((l.pointsPerSide + 15) / 16);
+  const int cells = l.pointsPerSide - 1;
+  for (int field = 0; field < (l.add ? 2 : 1); ++field) {
+    // Field 0: the region's surface (with the cascades in Add mode); field 1: the cascades alone.
+    glProgramUniform2i(compute, 8, cascades, field == 0 ? 1 : 0);
+    for (int k = 0; k < l.layers; ++k) {
+      const glm::dvec2 entryCorner = l.windowCorner + l.drift * l.depth[k];
+      glProgramUniform4f(compute, 12, saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
+                         float(l.depth[k]), float(1.0 / l.cell.x), float(1.0 / l.cell.y));
+      glProgramUniform4f(compute, 13, float(entryCorner.x), float(entryCorner.y),
+                         float(l.windowCorner.x), float(l.windowCorner.y));
+      glUseProgram(compute);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.id());
+      glDispatchCompute(groups, groups, 1);
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
+      glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, target.texture.id(),
+                                     0, field * l.layers + k);
+      glUseProgram(triangles_.id());
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * l.pointsPerSide, cells);
+      glUseProgram(points_.id());
+      glDrawArrays(GL_POINTS, 0, 2 * cells * cells);
+    }
+  }
+  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  glGenerateTextureMipmap(target.texture.id());
+}
+
+void LocalWaterPass::bind(const FrameDesc& frame, bool regions) {
+  const shared::LocalWaterBlock block =
+      regions ? buildLocalWaterBlock(frame) : shared::LocalWaterBlock{};
+  glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
+  glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_LOCAL_WATER_BLOCK_BINDING, block_.id());
+  for (int r = 0; r < kMaxLocalWater; ++r) {
+    const bool used = regions && r < frame.water.localWaterCount;
+    const GLuint unit = GLuint(POSTFX_UNIT_LOCAL_WATER + r);
+    glBindTextureUnit(unit, used ? regions_[static_cast<std::size_t>(r)].texture.id() : 0);
+    glBindSampler(unit, lookupSampler_.id());
+  }
+}
+
+void LocalWaterPass::release() {
+  for (Region& region : regions_) region = Region{};
+  gridPointView_.reset();
+  gridPoints_.reset();
+  gridPointBytes_ = 0;
+}
+
+std::uint64_t LocalWaterPass::allocatedBytes() const {
+  std::uint64_t bytes = bufferBytes(gridPoints_.id());
+  for (const Region& region : regions_) bytes += textureBytes(region.texture.id(), 4);
+  return bytes;
+}
+
+}  // namespace postfx::detail
