@@ -44,6 +44,9 @@ postfx_add_test(sample_ripple_simulation_tests GL
 postfx_add_test(sample_pool_script_tests
   SOURCES unit/sample_pool_script_test.cpp
   LIBS ocean_host)
+postfx_add_test(sample_water_pick_tests
+  SOURCES unit/sample_water_pick_test.cpp
+  LIBS ocean_host)
 postfx_add_test(sample_pool_cli_tests
   SOURCES unit/sample_pool_cli_test.cpp
   LIBS PkgConfig::OIIO)

@@ -4,6 +4,7 @@
 
 #include <glkit/program.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ocean {
@@ -105,6 +106,7 @@ void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet se
   const GLint roughnessLocation = glGetUniformLocation(program, "roughness");
   const GLint absorptionLocation = glGetUniformLocation(program, "glassAbsorption");
   const GLint detailLocation = glGetUniformLocation(program, "surfaceDetail");
+  const GLint tileLocation = glGetUniformLocation(program, "tileJoints");
   for (const GpuInstance& instance : instances_) {
     if (!inSet(instance, set)) continue;
     const ocean_scene::Material& material = instance.material;
@@ -126,6 +128,11 @@ void GpuScene::draw(GLuint program, const glm::dvec3& cameraPosition, DrawSet se
     if (iorLocation >= 0) glUniform1f(iorLocation, material.ior > 0.0f ? material.ior : 1e4f);
     if (roughnessLocation >= 0) glUniform1f(roughnessLocation, material.roughness);
     if (detailLocation >= 0) glUniform1f(detailLocation, material.proceduralRock ? 1.0f : 0.0f);
+    if (tileLocation >= 0) {
+      const bool tiled = material.tilePitch > 0.0f && material.tileJoint > 0.0f;
+      glUniform2f(tileLocation, tiled ? material.tilePitch : 0.0f,
+                  tiled ? 0.5f * std::min(material.tileJoint, material.tilePitch) : 0.0f);
+    }
     if (absorptionLocation >= 0) {
       // Beer-Lambert: attenuationColor remains after attenuationDistance metres.
       glm::vec3 sigma(0.0f);

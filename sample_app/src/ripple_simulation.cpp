@@ -64,7 +64,16 @@ std::unique_ptr<RippleSimulation> RippleSimulation::create(const RippleDesc& des
   const glm::dvec2 texel = desc.size / double(desc.resolution);
   const double limit =
       desc.waveSpeed * std::sqrt(1.0 / (texel.x * texel.x) + 1.0 / (texel.y * texel.y));
-  const double perSecond = std::ceil(limit / kCourant);
+  double perSecond = std::ceil(limit / kCourant);
+  // The velocity's diffusion is explicit too: stable for nu dt (4/dx^2 + 4/dz^2) <= 2, kept at
+  // half of that.
+  if (!(desc.viscosity >= 0.0 && desc.viscosity <= 1e3)) {
+    error = "ripple simulation: viscosity outside [0, 1e3] m^2/s";
+    return nullptr;
+  }
+  const double diffusion =
+      4.0 * desc.viscosity * (1.0 / (texel.x * texel.x) + 1.0 / (texel.y * texel.y));
+  perSecond = std::max(perSecond, std::ceil(diffusion));
   if (perSecond > kMaxStepsPerSecond) {
     error = "ripple simulation: " + std::to_string(std::llround(perSecond)) +
             " steps a second needed (waveSpeed over texel size), over " +
@@ -188,6 +197,9 @@ void RippleSimulation::step(int count) {
   glUniform1f(glGetUniformLocation(program, "dampingFactor"), float(std::exp(-desc_.damping * dt)));
   glUniform1f(glGetUniformLocation(program, "maxHeight"), float(desc_.maxHeight));
   glUniform1f(glGetUniformLocation(program, "stepSeconds"), float(dt));
+  const glm::dvec2 viscosity = desc_.viscosity * dt / (texel * texel);
+  glUniform2fv(glGetUniformLocation(program, "viscosityWeights"), 1,
+               glm::value_ptr(glm::vec2(viscosity)));
   for (int i = 0; i < count; ++i) {
     glBindImageTexture(0, state_[current_].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
     glBindImageTexture(1, state_[1 - current_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);

@@ -1,6 +1,7 @@
 // ocean_sample view: the scene in a window with a fly camera, feature toggles and an overlay
 // (view_overlay.h) that shows the plugin's per-pass GPU timings and edits its settings live.
 // With --frames N it draws N frames on a fixed clock and quits; --screenshot saves the last one.
+// On local water (the pool preset) a click drops water where it points.
 #include <epoxy/gl.h>
 // epoxy loads GL; GLFW must not pull in the system GL header after it.
 #define GLFW_INCLUDE_NONE
@@ -20,6 +21,7 @@
 #include "scene_setup.h"
 #include "view_flags.h"
 #include "view_overlay.h"
+#include "water_pick.h"
 
 namespace ocean {
 namespace {
@@ -32,6 +34,12 @@ struct ViewState {
   bool overlayVisible = true;
   bool dragging = false;
   double lastX = 0.0, lastY = 0.0;
+  // A click (press and release within kClickPixels, not on the overlay) on local water drops
+  // water there; a longer drag only turns the camera.
+  bool pressed = false;
+  double pressX = 0.0, pressY = 0.0, dragPixels = 0.0;
+  bool clicked = false;
+  double clickX = 0.0, clickY = 0.0;
   bool presetRequested = false;
   bool screenshotRequested = false;  // P: save this frame to --screenshot
   std::string presetName;
@@ -87,8 +95,36 @@ void moveCamera(GLFWwindow* window, ViewState& state, double dt) {
     camera.pitch = glm::clamp(camera.pitch - (y - state.lastY) * 0.004, -1.5, 1.5);
   }
   state.dragging = pressed && (state.dragging || !overOverlay);
+  constexpr double kClickPixels = 4.0;
+  if (pressed && !state.pressed) {
+    state.pressX = x;
+    state.pressY = y;
+    state.dragPixels = overOverlay ? 1e9 : 0.0;  // a press on the overlay is never a drop
+  }
+  if (pressed) state.dragPixels += std::abs(x - state.lastX) + std::abs(y - state.lastY);
+  if (!pressed && state.pressed && state.dragPixels < kClickPixels) {
+    state.clicked = true;
+    state.clickX = state.pressX;
+    state.clickY = state.pressY;
+  }
+  state.pressed = pressed;
   state.lastX = x;
   state.lastY = y;
+}
+
+// A click on the water: a drop where its ray meets the mean level, if local water is there.
+void dropAtClick(GLFWwindow* window, ViewState& state, Renderer& renderer) {
+  if (!state.clicked) return;
+  state.clicked = false;
+  LocalWaterSource* water = renderer.localWater();
+  int width = 0, height = 0;
+  glfwGetWindowSize(window, &width, &height);
+  if (water == nullptr || width <= 0 || height <= 0) return;
+  // Window coordinates run down from the top left; NDC up from the centre.
+  const glm::dvec2 ndc(2.0 * state.clickX / width - 1.0, 1.0 - 2.0 * state.clickY / height);
+  glm::dvec2 xz;
+  if (pickWaterPlane(state.input.camera, double(width) / height, ndc, renderer.optics().level, xz))
+    water->addDrop(xz);
 }
 
 // The window's back buffer as shown (bottom row first, as writeImage takes it).
@@ -131,6 +167,7 @@ int runFrames(GLFWwindow* window, const Options& options, ViewState& state, Rend
       state.presetRequested = false;
     }
     moveCamera(window, state, dt);
+    dropAtClick(window, state, renderer);
     if (!state.paused && !options.freezeTime) {
       // Counted: the time render --frames gives its frame of the same number (sum-free).
       if (counted)

@@ -9,11 +9,12 @@ uniform vec2 courantSquared;  // (c dt / dx)^2, (c dt / dz)^2
 uniform float dampingFactor;  // exp(-damping dt), applied to the velocity
 uniform float maxHeight;      // m: heights are clamped to +-maxHeight
 uniform float stepSeconds;    // dt (s)
+uniform vec2 viscosityWeights;  // nu dt / dx^2, nu dt / dz^2: the velocity's diffusion
 
-float heightAt(ivec2 p, ivec2 size) {
+vec2 stateAt(ivec2 p, ivec2 size) {
   // Reflecting walls: the neighbour beyond an edge is the edge texel itself, so no water flows
   // through it and the Laplacian sums to zero over the grid (the step keeps the volume).
-  return imageLoad(current, clamp(p, ivec2(0), size - 1)).x;
+  return imageLoad(current, clamp(p, ivec2(0), size - 1)).xy;
 }
 
 void main() {
@@ -21,11 +22,13 @@ void main() {
   ivec2 size = imageSize(current);
   if (any(greaterThanEqual(p, size))) return;
   vec2 state = imageLoad(current, p).xy;
+  vec2 alongU = stateAt(p - ivec2(1, 0), size) + stateAt(p + ivec2(1, 0), size) - 2.0 * state;
+  vec2 alongV = stateAt(p - ivec2(0, 1), size) + stateAt(p + ivec2(0, 1), size) - 2.0 * state;
   float h = state.x;
-  float alongU = heightAt(p - ivec2(1, 0), size) + heightAt(p + ivec2(1, 0), size) - 2.0 * h;
-  float alongV = heightAt(p - ivec2(0, 1), size) + heightAt(p + ivec2(0, 1), size) - 2.0 * h;
-  // dt c^2 laplacian(h) = (courantSquared . second differences) / dt.
-  float velocity = state.y + dot(courantSquared, vec2(alongU, alongV)) / stepSeconds;
+  // dt c^2 laplacian(h) = (courantSquared . second differences) / dt; the viscosity's
+  // nu dt laplacian(v) damps a wave at nu k^2, the grid's shortest ones and not the ripples.
+  float velocity = state.y + dot(courantSquared, vec2(alongU.x, alongV.x)) / stepSeconds +
+                   dot(viscosityWeights, vec2(alongU.y, alongV.y));
   velocity *= dampingFactor;
   float height = h + stepSeconds * velocity;
   // The guards: a texel that is not finite returns to rest, and heights stay within the clamp.

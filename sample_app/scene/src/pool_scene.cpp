@@ -13,17 +13,14 @@ namespace ocean_scene {
 namespace {
 
 // The meshes the tiles are sorted into, one material each.
-enum Slot : std::uint32_t { kWhiteTile, kGreyTile, kBlueTile, kGrout, kPaving, kJoint, kSlots };
+enum Slot : std::uint32_t { kWhiteTile, kGreyTile, kBlueTile, kPaving, kSlots };
 
-// A rectangle of tiled surface: origin + s a + t b for s in [0, lengthA], t in [0, lengthB];
-// its face looks along a x b.
+// A rectangle of tiled surface: origin + s a + t b for s in [0, lengthA], t in [0, lengthB],
+// with a and b unit world axes; its face looks along a x b.
 struct Rect {
   glm::vec3 origin, a, b;
   float lengthA, lengthB;
 };
-
-// Joints 4 mm behind the faces: visible between tiles, never coplanar with them.
-constexpr float kJointDepth = 0.004f;
 
 void addQuad(Mesh& mesh, glm::vec3 p, glm::vec3 alongA, glm::vec3 alongB, glm::vec3 normal) {
   const auto base = static_cast<std::uint32_t>(mesh.positions.size());
@@ -45,21 +42,20 @@ std::uint32_t hashTile(int i, int j, int face) {
   return h;
 }
 
-// Tiles of `pitch` with `joint` between them, clipped to the rectangle, over one recessed
-// joint quad; `slotOf` picks each tile's mesh from its index and its centre.
+// Tiles on the world's grid of `pitch` (where the renderer draws their joints: Material::
+// tilePitch), clipped to the rectangle; `slotOf` picks each tile's mesh from its cell and centre.
 template <typename SlotOf>
-void addTiled(std::array<Mesh, kSlots>& meshes, const Rect& r, float pitch, float joint,
-              Slot jointSlot, SlotOf slotOf) {
+void addTiled(std::array<Mesh, kSlots>& meshes, const Rect& r, float pitch, SlotOf slotOf) {
   const glm::vec3 normal = glm::normalize(glm::cross(r.a, r.b));
-  addQuad(meshes[jointSlot], r.origin - normal * kJointDepth, r.a * r.lengthA, r.b * r.lengthB,
-          normal);
-  const int countA = int(std::ceil(r.lengthA / pitch - 1e-4f));
-  const int countB = int(std::ceil(r.lengthB / pitch - 1e-4f));
-  for (int i = 0; i < countA; ++i) {
-    for (int j = 0; j < countB; ++j) {
-      const float s0 = i * pitch + 0.5f * joint, t0 = j * pitch + 0.5f * joint;
-      const float s1 = std::min((i + 1) * pitch - 0.5f * joint, r.lengthA);
-      const float t1 = std::min((j + 1) * pitch - 0.5f * joint, r.lengthB);
+  const float a0 = glm::dot(r.origin, r.a), b0 = glm::dot(r.origin, r.b);
+  const int i0 = int(std::floor(a0 / pitch + 1e-4f)), j0 = int(std::floor(b0 / pitch + 1e-4f));
+  const int i1 = int(std::ceil((a0 + r.lengthA) / pitch - 1e-4f));
+  const int j1 = int(std::ceil((b0 + r.lengthB) / pitch - 1e-4f));
+  for (int i = i0; i < i1; ++i) {
+    for (int j = j0; j < j1; ++j) {
+      const float s0 = std::max(i * pitch - a0, 0.0f), t0 = std::max(j * pitch - b0, 0.0f);
+      const float s1 = std::min((i + 1) * pitch - a0, r.lengthA);
+      const float t1 = std::min((j + 1) * pitch - b0, r.lengthB);
       if (s1 <= s0 || t1 <= t0) continue;
       const glm::vec3 p = r.origin + r.a * s0 + r.b * t0;
       const glm::vec3 centre = r.origin + r.a * (0.5f * (s0 + s1)) + r.b * (0.5f * (t0 + t1));
@@ -68,12 +64,14 @@ void addTiled(std::array<Mesh, kSlots>& meshes, const Rect& r, float pitch, floa
   }
 }
 
-Material matte(const char* name, glm::vec3 albedo) {
+Material matte(const char* name, glm::vec3 albedo, float pitch = 0.0f, float joint = 0.0f) {
   Material m;
   m.name = name;
   m.baseColor = albedo;
   m.metallic = 0.0f;
   m.roughness = 0.8f;
+  m.tilePitch = pitch;
+  m.tileJoint = joint;
   return m;
 }
 
@@ -90,17 +88,16 @@ Model buildPoolScene(const PoolSceneParams& in) {
   p.sphereRadius = std::clamp(p.sphereRadius, 1e-2, 0.25 * std::min(p.size.x, p.size.y));
 
   Model model;
-  // Linear albedos: glazed white and grey tiles, a blue waterline band, grey grout, sandstone
-  // paving with darker joints.
-  model.materials = {matte("pool_tile_white", {0.78f, 0.80f, 0.82f}),
-                     matte("pool_tile_grey", {0.62f, 0.65f, 0.68f}),
-                     matte("pool_tile_blue", {0.08f, 0.22f, 0.52f}),
-                     matte("pool_grout", {0.30f, 0.31f, 0.32f}),
-                     matte("pool_paving", {0.58f, 0.53f, 0.46f}),
-                     matte("pool_paving_joint", {0.33f, 0.31f, 0.28f})};
+  // Linear albedos: glazed white and grey tiles and a blue waterline band in grout joints,
+  // sandstone paving; the renderer draws the joints (Material::tilePitch).
+  const float tile = float(p.tileSize), grout = float(p.groutWidth);
+  model.materials = {matte("pool_tile_white", {0.78f, 0.80f, 0.82f}, tile, grout),
+                     matte("pool_tile_grey", {0.62f, 0.65f, 0.68f}, tile, grout),
+                     matte("pool_tile_blue", {0.08f, 0.22f, 0.52f}, tile, grout),
+                     matte("pool_paving", {0.58f, 0.53f, 0.46f}, 1.0f, 0.01f)};
   std::array<Mesh, kSlots> meshes;
   const char* const names[kSlots] = {"pool_tiles_white", "pool_tiles_grey", "pool_tiles_blue",
-                                     "pool_grout",       "pool_paving",     "pool_paving_joints"};
+                                     "pool_paving"};
   for (std::uint32_t s = 0; s < kSlots; ++s) {
     meshes[s].name = names[s];
     meshes[s].material = s;
@@ -109,7 +106,6 @@ Model buildPoolScene(const PoolSceneParams& in) {
   const float w = float(0.5 * p.size.x), d = float(0.5 * p.size.y);
   const float depth = float(p.depth), rim = float(p.rimHeight), height = depth + rim;
   const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
-  const float tile = float(p.tileSize), grout = float(p.groutWidth);
   // The floor, then the four walls (each facing into the pool), tiled from the floor up.
   const std::array<Rect, 5> pool = {
       Rect{{-w, -depth, -d}, z, x, 2 * d, 2 * w}, Rect{{-w, -depth, -d}, y, z, height, 2 * d},
@@ -117,20 +113,17 @@ Model buildPoolScene(const PoolSceneParams& in) {
       Rect{{-w, -depth, d}, y, x, height, 2 * w}};
   // Pools have a dark band along the waterline: tiles whose centre lies within 0.3 m below it.
   for (int face = 0; face < int(pool.size()); ++face) {
-    addTiled(meshes, pool[size_t(face)], tile, grout, kGrout,
-             [face](int i, int j, glm::vec3 centre) {
-               if (face > 0 && centre.y > -0.3f) return kBlueTile;
-               return hashTile(i, j, face) % 5 == 0 ? kGreyTile : kWhiteTile;
-             });
+    addTiled(meshes, pool[size_t(face)], tile, [face](int i, int j, glm::vec3 centre) {
+      if (face > 0 && centre.y > -0.3f) return kBlueTile;
+      return hashTile(i, j, face) % 5 == 0 ? kGreyTile : kWhiteTile;
+    });
   }
-  // The deck at the rim's height, around the pool: metre slabs on a grid anchored at the far
-  // corner (which lies on whole metres for whole-metre sizes, so the pieces' joints line up).
+  // The deck at the rim's height, around the pool: metre slabs.
   const float e = float(p.deckHalfExtent);
   const std::array<Rect, 4> deck = {
       Rect{{-e, rim, -e}, z, x, 2 * e, e - w}, Rect{{w, rim, -e}, z, x, 2 * e, e - w},
       Rect{{-w, rim, -e}, z, x, e - d, 2 * w}, Rect{{-w, rim, d}, z, x, e - d, 2 * w}};
-  for (const Rect& r : deck)
-    addTiled(meshes, r, 1.0f, 0.01f, kJoint, [](int, int, glm::vec3) { return kPaving; });
+  for (const Rect& r : deck) addTiled(meshes, r, 1.0f, [](int, int, glm::vec3) { return kPaving; });
 
   for (Mesh& mesh : meshes) {
     const std::string name = mesh.name;

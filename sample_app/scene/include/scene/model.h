@@ -48,6 +48,12 @@ struct Material {
   // (colour, weed, bumps) instead of a texture. Not part of glTF: a loaded material has false,
   // and the glTF writer leaves it out.
   bool proceduralRock = false;
+  // A tiled surface (the pool's tiles, the deck's slabs): the renderer darkens the joints of a
+  // grid of this pitch (m, 0: none) fixed to the world on the surface's dominant plane, each
+  // joint tileJoint wide (m), filtered over the pixel so that joints finer than a pixel shade it
+  // by their share instead of aliasing. Not part of glTF, like proceduralRock.
+  float tilePitch = 0.0f;
+  float tileJoint = 0.0f;
 
   bool isRefractive() const { return transmission > 0.0f; }
 };

@@ -17,8 +17,10 @@ struct PoolSceneParams {
   // Height of the deck (the pool's rim) above the water level (m), (0, 2]: the walls hide
   // the water's edge and nothing outside the pool lies below the level.
   double rimHeight = 0.3;
-  // Tile pitch (m), [0.05, 2], and the grout joint between tiles (m), [0, tileSize / 4]; the
-  // grout lies 4 mm behind the tiles' faces (real joints are recessed; no coplanar fighting).
+  // Tile pitch (m), [0.05, 2], and the grout joint between tiles (m), [0, tileSize / 4]. Tiles
+  // lie on the world's grid of the pitch (a side that is not a multiple of it ends in cut
+  // tiles); the renderer draws the joints, filtered (Material::tilePitch), not as geometry,
+  // whose sub-pixel lines would alias into dots.
   double tileSize = 0.25;
   double groutWidth = 0.012;
   // The deck reaches this far from the pool's centre (m), beyond the pool, along x and z.
