@@ -57,6 +57,10 @@ std::unique_ptr<RippleSimulation> RippleSimulation::create(const RippleDesc& des
     error = "ripple simulation: maxHeight outside (0, 100] m";
     return nullptr;
   }
+  if (!inRange(desc.absorbingEdge, 0.0, 0.5 * std::min(desc.size.x, desc.size.y))) {
+    error = "ripple simulation: absorbingEdge outside [0, half the shorter side] m";
+    return nullptr;
+  }
   std::unique_ptr<RippleSimulation> sim(new RippleSimulation());
   sim->desc_ = desc;
   // The largest stable step is 1 / (c sqrt(1/dx^2 + 1/dz^2)); take kCourant of it, rounded down
@@ -89,6 +93,8 @@ std::unique_ptr<RippleSimulation> RippleSimulation::create(const RippleDesc& des
   if (!sim->sphereProgram_) return nullptr;
   sim->slopeProgram_ = buildCompute("sample/ripple_slopes.comp", "sample.ripple_slopes", error);
   if (!sim->slopeProgram_) return nullptr;
+  sim->shiftProgram_ = buildCompute("sample/ripple_shift.comp", "sample.ripple_shift", error);
+  if (!sim->shiftProgram_) return nullptr;
   const int n = desc.resolution;
   for (int i = 0; i < 2; ++i)
     sim->state_[i] = glkit::createTexture2D(GL_RG32F, n, n, GL_NEAREST, "sample.ripple_state");
@@ -194,7 +200,10 @@ void RippleSimulation::step(int count) {
   const glm::dvec2 courant = desc_.waveSpeed * dt / texel;
   glUniform2fv(glGetUniformLocation(program, "courantSquared"), 1,
                glm::value_ptr(glm::vec2(courant * courant)));
-  glUniform1f(glGetUniformLocation(program, "dampingFactor"), float(std::exp(-desc_.damping * dt)));
+  glUniform1f(glGetUniformLocation(program, "damping"), float(desc_.damping));
+  // The sponge's width in texels along u and v (0: reflecting walls everywhere).
+  glUniform2fv(glGetUniformLocation(program, "spongeTexels"), 1,
+               glm::value_ptr(glm::vec2(desc_.absorbingEdge / texel)));
   glUniform1f(glGetUniformLocation(program, "maxHeight"), float(desc_.maxHeight));
   glUniform1f(glGetUniformLocation(program, "stepSeconds"), float(dt));
   const glm::dvec2 viscosity = desc_.viscosity * dt / (texel * texel);
@@ -206,6 +215,23 @@ void RippleSimulation::step(int count) {
     dispatchOver(desc_.resolution);
     current_ = 1 - current_;
   }
+  unbind();
+  glPopDebugGroup();
+  stale_ = true;
+}
+
+void RippleSimulation::shift(glm::ivec2 texels) {
+  if (texels == glm::ivec2(0)) return;
+  const int n = desc_.resolution;
+  texels = glm::clamp(texels, glm::ivec2(-n), glm::ivec2(n));
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "sample.ripple_shift");
+  const GLuint program = shiftProgram_.id();
+  glUseProgram(program);
+  glUniform2i(glGetUniformLocation(program, "offset"), texels.x, texels.y);
+  glBindImageTexture(0, state_[current_].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+  glBindImageTexture(1, state_[1 - current_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+  dispatchOver(n);
+  current_ = 1 - current_;
   unbind();
   glPopDebugGroup();
   stale_ = true;

@@ -48,6 +48,12 @@ struct RippleDesc {
   // webgl-water's scheme lets grid-scale noise (from drops and the ball's rim) ring on as sparkle.
   // Keeps the volume (its Laplacian sums to zero like the heights').
   double viscosity = 1e-3;
+  // Width (m) of an absorbing band along the edges, [0, half the shorter side]; 0 (default):
+  // reflecting walls (a pool). Inside it the velocity's damping rises quadratically to 20/s at
+  // the edge (a sponge layer), so waves leave the rectangle instead of bouncing back: open water
+  // (a wake's region) whose edge is not a wall. The band removes the water that reaches it, so
+  // the step keeps the volume only without it.
+  double absorbingEdge = 0.0;
 };
 
 class RippleSimulation {
@@ -77,6 +83,11 @@ class RippleSimulation {
   void step(int count);
   // Back to rest: zero height and velocity everywhere (the texture is then exactly zero).
   void reset();
+  // The rectangle moved by `texels` (whole texels along u, v): the water stays where it was in
+  // the world, so texel (i, j) takes what was at (i + texels.x, j + texels.y), and what comes
+  // in from outside is at rest (a camera- or object-following simulation, like a dynamic-wave
+  // grid that scrolls). |texels| beyond the resolution clears it.
+  void shift(glm::ivec2 texels);
 
   // GL_TEXTURE_2D, GL_RGBA32F, resolution x resolution, linear filter, clamp to edge: RG =
   // slopes, B = height, A = velocity. Owned by the simulation; valid until it is destroyed.
@@ -94,7 +105,7 @@ class RippleSimulation {
 
   RippleDesc desc_;
   int stepsPerSecond_ = 0;
-  glkit::Program stepProgram_, dropProgram_, sphereProgram_, slopeProgram_;
+  glkit::Program stepProgram_, dropProgram_, sphereProgram_, slopeProgram_, shiftProgram_;
   glkit::Texture state_[2];  // RG32F: height (m), velocity (m/s)
   int current_ = 0;
   bool stale_ = false;     // the output lags the state

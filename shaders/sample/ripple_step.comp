@@ -6,7 +6,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rg32f) uniform readonly image2D current;  // height (m), velocity (m/s)
 layout(binding = 1, rg32f) uniform writeonly image2D next;
 uniform vec2 courantSquared;  // (c dt / dx)^2, (c dt / dz)^2
-uniform float dampingFactor;  // exp(-damping dt), applied to the velocity
+uniform float damping;        // 1/s, applied to the velocity
+uniform vec2 spongeTexels;    // the absorbing band's width along u and v (texels; 0: none)
 uniform float maxHeight;      // m: heights are clamped to +-maxHeight
 uniform float stepSeconds;    // dt (s)
 uniform vec2 viscosityWeights;  // nu dt / dx^2, nu dt / dz^2: the velocity's diffusion
@@ -29,7 +30,11 @@ void main() {
   // nu dt laplacian(v) damps a wave at nu k^2, the grid's shortest ones and not the ripples.
   float velocity = state.y + dot(courantSquared, vec2(alongU.x, alongV.x)) / stepSeconds +
                    dot(viscosityWeights, vec2(alongU.y, alongV.y));
-  velocity *= dampingFactor;
+  // The sponge: damping rises quadratically to 20/s at an absorbing edge.
+  vec2 fromEdge = vec2(min(p, size - 1 - p)) + 0.5;
+  vec2 depth = spongeTexels.x > 0.0 ? max(1.0 - fromEdge / spongeTexels, 0.0) : vec2(0.0);
+  float band = max(depth.x, depth.y);
+  velocity *= exp(-(damping + 20.0 * band * band) * stepSeconds);
   float height = h + stepSeconds * velocity;
   // The guards: a texel that is not finite returns to rest, and heights stay within the clamp.
   if (isnan(velocity) || isinf(velocity) || isnan(height) || isinf(height)) {
