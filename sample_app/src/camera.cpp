@@ -134,6 +134,23 @@ Preset poolPreset() {
   return preset;
 }
 
+// Open sea from above: a ball towed in a circle (wake_water.h) leaves a wake on a calm sea, the
+// sun ahead and high enough to light the water under it.
+Preset wakePreset() {
+  Preset preset = makePreset("wake",
+                             "a ball towed across a calm sea, its simulated wake added to the "
+                             "sea's surface (an Add local water region following it)",
+                             glm::dvec3(0.0, 0.0, 0.0), 0.0, 0.0, 45.0, 160.0);
+  preset.scene = SceneKind::Wake;
+  // 17 m from the circle's centre (wake_water.h: (0, 4), 8 m across), 32 degrees down.
+  const glm::dvec3 target(0.0, 0.0, 4.0);
+  preset.camera.pitch = glm::radians(-32.0);
+  preset.camera.yaw = 0.0;
+  preset.camera.position = target - 17.0 * preset.camera.forward();
+  preset.windSpeed = 4.0;
+  return preset;
+}
+
 Preset exposed(Preset preset, double stops) {
   preset.exposureStops = stops;
   return preset;
@@ -142,8 +159,8 @@ Preset exposed(Preset preset, double stops) {
 // Exposures chosen by eye at 1280x720 for each view's light: the seabed at 10 m gets ~1/4 of
 // the sun above it (absorption, 1 - Fresnel, Lambert's 1/pi at an oblique sun), looking up
 // meets Snell's window, and from above the sky dominates.
-const std::array<Preset, 7>& presets() {
-  static const std::array<Preset, 7> all = {
+const std::array<Preset, 8>& presets() {
+  static const std::array<Preset, 8> all = {
       exposed(makePreset("seabed", "underwater, looking down at the seabed, pillar and arch",
                          {2.0, -4.5, 14.0}, 8.0, -22.0, 62.0, 200.0),
               1.5),
@@ -159,6 +176,7 @@ const std::array<Preset, 7>& presets() {
       exposed(torchPreset(), 0.5),
       exposed(shallowPreset(), 0.5),
       exposed(poolPreset(), 0.0),
+      exposed(wakePreset(), 0.5),
   };
   return all;
 }

@@ -102,7 +102,8 @@ std::string causticsModelList() {
 
 const std::array kValueOptions{
     ValueOption{"--preset", "NAME",
-                "shallow, seabed, sunward, above, waterline, torch or pool (default shallow)", false,
+                "shallow, seabed, sunward, above, waterline, torch, pool or wake (default shallow)",
+                false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.preset = text;  // checked against the presets when the scene is built
                   return true;

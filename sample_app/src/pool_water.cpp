@@ -28,6 +28,8 @@ std::unique_ptr<PoolWater> PoolWater::create(const ocean_scene::PoolSceneParams&
   desc.size = pool.size;
   water->sim_ = RippleSimulation::create(desc, error);
   if (!water->sim_) return nullptr;
+  water->clock_ = std::make_unique<SimulationClock>(water->sim_->stepsPerSecond(), kWarmUpSeconds,
+                                                    kMaxCatchUpSeconds);
   postfx::LocalWater region;
   region.centre = glm::dvec2(0.0);  // the pool is centred on the origin (pool_scene.h)
   region.size = pool.size;
@@ -41,33 +43,21 @@ std::unique_ptr<PoolWater> PoolWater::create(const ocean_scene::PoolSceneParams&
   return water;
 }
 
-double PoolWater::stepTime(long long step) const {
-  return start_ + double(step) / double(sim_->stepsPerSecond());
-}
-
-void PoolWater::restart(double seconds) {
-  sim_->reset();
-  start_ = seconds - kWarmUpSeconds;
-  steps_ = 0;
-  sphere_ = sphereCentre(script_, start_);
-  started_ = true;
-}
-
 bool PoolWater::update(double seconds, std::string& error) {
   if (!std::isfinite(seconds)) {
     error = "pool: the frame's time is not finite";
     return false;
   }
-  const double now = stepTime(steps_);
-  if (!started_ || seconds < now - 0.5 * sim_->stepSeconds() || seconds - now > kMaxCatchUpSeconds)
-    restart(seconds);
-  // Whole steps only: the simulation's time is exact, and frames at the same times give the
-  // same water wherever they run.
-  const long long target =
-      (long long)std::floor((seconds - start_) * double(sim_->stepsPerSecond()) + 1e-6);
+  SimulationClock& clock = *clock_;
+  if (clock.needsRestart(seconds)) {
+    clock.restart(seconds);
+    sim_->reset();
+    sphere_ = sphereCentre(script_, clock.timeAt(0));
+  }
+  const long long target = clock.stepsAt(seconds);
   const double radius = pool_.sphereRadius;
-  for (; steps_ < target; ++steps_) {
-    const double from = stepTime(steps_), to = stepTime(steps_ + 1);
+  for (; clock.steps < target; ++clock.steps) {
+    const double from = clock.timeAt(clock.steps), to = clock.timeAt(clock.steps + 1);
     for (const ScriptedDrop& drop : dropsBetween(script_, from, to))
       sim_->addDrop(drop.centre, drop.radius, drop.strength);
     // The pool's local axes are the world's (rotation 0, centre at the origin): local (u, y, v)

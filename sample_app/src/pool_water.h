@@ -1,9 +1,7 @@
 #pragma once
 // The pool preset's water: a ripple simulation over the pool's rectangle (one Replace region for
 // the plugin, whose walls hide its edge) driven by the pool script's drops and ball, on the
-// frame's clock. The simulation starts at rest kWarmUpSeconds before the first frame's time, so
-// the first frame already shows ripples; a later frame continues it step by step (a jump back in
-// time, or forward by more than kMaxCatchUpSeconds, starts it again the same way).
+// frame's clock (simulation_clock.h: at rest kWarmUpSeconds before the first frame).
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +12,7 @@
 #include "local_water_source.h"
 #include "pool_script.h"
 #include "ripple_simulation.h"
+#include "simulation_clock.h"
 
 namespace ocean {
 
@@ -39,15 +38,11 @@ class PoolWater final : public LocalWaterSource {
 
  private:
   PoolWater() = default;
-  void restart(double seconds);
-  double stepTime(long long step) const;  // s, the clock's time after `step` steps
 
   ocean_scene::PoolSceneParams pool_;
   PoolScript script_;
   std::unique_ptr<RippleSimulation> sim_;
-  bool started_ = false;
-  double start_ = 0.0;   // s: the clock's time at the simulation's rest
-  long long steps_ = 0;  // steps run since start_
+  std::unique_ptr<SimulationClock> clock_;
   glm::dvec3 sphere_{0.0};
   std::size_t sphereInstance_ = 0;
   std::vector<postfx::LocalWater> regions_;

@@ -7,6 +7,7 @@ namespace ocean {
 enum class SceneKind : std::uint8_t {
   Sea,   // the default scene: the open sea over the seabed, reef, rocks, arch and models
   Pool,  // a tiled pool on land with its ripple simulation and ball (scene/pool_scene.h)
+  Wake,  // the sea's scene with a ball towed across the water and its simulated wake
 };
 
 }  // namespace ocean

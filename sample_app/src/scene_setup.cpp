@@ -13,6 +13,7 @@
 #include <scene/gltf_loader.h>
 #include <scene/pool_scene.h>
 #include <scene/seabed.h>
+#include <scene/wake_ball.h>
 
 namespace ocean {
 namespace {
@@ -83,6 +84,8 @@ bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& sc
     }
     ocean_scene::appendModel(scene, model, glm::mat4(place));
   }
+  // The wake's ball: 0.5 m (wake_water.h, WakeDesc::ballRadius); moved every frame.
+  if (kind == SceneKind::Wake) ocean_scene::addWakeBall(scene, 0.5);
   admitCasters(scene, warnings);
   for (const std::string& warning : warnings) {
     std::fprintf(stderr, "ocean_sample: warning: %s\n", warning.c_str());

@@ -1,6 +1,7 @@
 // `ocean_sample render --preset pool`: the pool renders headless, its water moves from frame to
 // frame, the same command gives the same frames bit for bit (scripted drops, the ball, the
-// simulation's whole steps), and a --model it cannot place is refused with one line.
+// simulation's whole steps), and a --model it cannot place is refused with one line. The wake
+// preset renders and moves too.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -121,6 +122,26 @@ TEST_F(PoolCli, SameCommandSameFrames) {
     ASSERT_FALSE(first[i].empty());
     EXPECT_TRUE(first[i] == second[i]) << "frame " << i << " differs between two runs";
   }
+}
+
+// The wake preset renders finite frames that change (1.4 % a frame at 160x90: the sea, the ball
+// and its wake all move; this does not tell them apart).
+TEST_F(PoolCli, WakeRendersAndMoves) {
+  const fs::path out = scratch_ / "wake.exr";
+  const SampleRun run = runSample(
+      "render --preset wake --width 160 --height 90 --frames 2 --out " + out.string(), scratch_);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  int width = 0, height = 0;
+  const std::vector<float> a = readRgb(scratch_ / "wake_0000.exr", width, height);
+  const std::vector<float> b = readRgb(scratch_ / "wake_0001.exr", width, height);
+  ASSERT_EQ(a.size(), size_t(160 * 90 * 3));
+  ASSERT_EQ(b.size(), a.size());
+  double change = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) {
+    ASSERT_TRUE(std::isfinite(a[k]) && std::isfinite(b[k]));
+    change += std::abs(double(b[k]) - double(a[k]));
+  }
+  EXPECT_GT(change / double(a.size()) / meanAbs(a), 0.005);
 }
 
 TEST_F(PoolCli, RefusesModelsItCannotPlace) {
