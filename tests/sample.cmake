@@ -40,6 +40,11 @@ postfx_add_test(sample_glass_refraction_tests GL
 postfx_add_test(sample_ripple_simulation_tests GL
   SOURCES gl/sample_ripple_simulation_test.cpp
   LIBS ocean_host)
+# The host's local water: the pool's surface shows its ripples only inside it; the plugin's
+# feature and region.
+postfx_add_test(sample_local_water_render_tests GL
+  SOURCES gl/sample_local_water_render_test.cpp
+  LIBS ocean_host)
 # The pool preset: its script's determinism (CPU), and headless renders of it (the CLI).
 postfx_add_test(sample_pool_script_tests
   SOURCES unit/sample_pool_script_test.cpp

@@ -154,8 +154,14 @@ int runFrames(GLFWwindow* window, const Options& options, ViewState& state, Rend
     // Counted frames run on a fixed clock, so frame N is the same image on any machine.
     const double dt = counted ? 1.0 / options.fps : now - last;
     last = now;
+    Preset requested;
+    // The keys switch among the presets of the world the window was opened in (its scene is
+    // built once): the sea's five, none from the pool or the wake.
+    if (state.presetRequested &&
+        (!findPreset(state.presetName, requested, known) || requested.scene != state.preset.scene))
+      state.presetRequested = false;
     if (state.presetRequested) {
-      findPreset(state.presetName, state.preset, known);
+      state.preset = requested;
       state.input.camera = state.preset.camera;
       // A preset's sun is one the plugin takes: set it in both, so that it shows even while
       // an edit is refused.

@@ -1,6 +1,7 @@
 #version 450 core
 // Displaced water surface: a camera-centred polar grid (dense near the camera, kilometres
-// wide) displaced by the ocean's cascades.
+// wide) displaced by the ocean's cascades, plus a local water region's height inside it (Add:
+// on the sea; Replace: instead of it); or, where there is no sea, the region's own square.
 #include "shared/sample_frame.h"
 #include "sample/local_water.glsl"
 // Camera-relative xz (m) of the sea's grid, or the region's square in [-0.5, 0.5]^2 (see
