@@ -2,6 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <gbuffer/codec.h>
@@ -388,8 +389,9 @@ void Renderer::endFrame() {
     setLocalWaterUniforms(eye, /*regionSquare=*/false);
     waterGrid_.draw();
   } else if (!localWater_->regions().empty()) {
-    // One vertex a simulation texel for the default 256 (the region's own resolution).
-    if (regionGrid_.empty()) regionGrid_.createSquare(256);
+    // One vertex a cell of the region's own grid (a simulation texel, for the pool's 256).
+    if (regionGrid_.empty())
+      regionGrid_.createSquare(std::clamp(localWater_->regions()[0].gridResolution, 16, 1024));
     setLocalWaterUniforms(eye, /*regionSquare=*/true);
     regionGrid_.draw();
   }

@@ -1,8 +1,9 @@
 #pragma once
-// The sample host: a small deferred renderer of the ocean scene. Per frame: ocean update, sun
-// shadow map, G-buffer (without glass), deferred lighting into RGBA16F, underwater fog, [the
-// plugin's passes], metal and glass drawn forward (caster_surfaces.h), the water surface, tone
-// mapping into RGBA8.
+// The sample host: a small deferred renderer of the ocean scene. Per frame: ocean update, local
+// water update (a pool's or a wake's simulation, local_water_source.h), sun shadow map,
+// G-buffer (without glass), deferred lighting into RGBA16F, underwater fog, [the plugin's
+// passes], metal and glass drawn forward (caster_surfaces.h), the water surface (the sea's, with
+// a local region on it or instead of it), tone mapping into RGBA8.
 #include <epoxy/gl.h>
 
 #include <functional>
