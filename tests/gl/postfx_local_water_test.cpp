@@ -305,6 +305,56 @@ TEST_F(PostfxLocalWaterTest, CircularRippleFocusesARingAtItsParaxialDepth) {
   glDeleteTextures(1, &calm);
 }
 
+// Two regions of different grids and modes share one frame's texture: each one's light is what
+// it is alone (to float rounding of the lookups' coordinates), and they do not see each other.
+TEST_F(PostfxLocalWaterTest, RegionsDoNotDisturbEachOther) {
+  Scene scene(downSpec(3.0, 128));
+  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.02);
+  const GLuint ripples = makeRegionTexture(128, {3.0, 3.0}, rippledSurface);
+  auto fx = postfxtest::makeContext(kLocal);
+  postfx::FrameDesc frame = postfxtest::makeFrame(scene, stormy, 3);
+  frame.caustics.model = postfx::CausticsModel::TileIrradiance;
+  postfx::LocalWater regions[2] = {
+      region(ripples, {-1.6, 0.0}, {3.0, 3.0}, postfx::LocalWaterMode::Replace, 3.0f),
+      region(ripples, {1.6, 0.2}, {3.0, 3.0}, postfx::LocalWaterMode::Add, 3.0f)};
+  regions[0].gridResolution = 96;
+  regions[1].gridResolution = 160;
+  regions[1].rotation = -0.3;
+  frame.water.localWater = regions;
+  frame.water.localWaterCount = 2;
+  const Drawn both = draw(*fx, scene, frame);
+  std::vector<float> alone[2];
+  for (int r = 0; r < 2; ++r) {
+    frame.water.localWater = &regions[r];
+    frame.water.localWaterCount = 1;
+    alone[r] = draw(*fx, scene, frame).raw;
+  }
+  frame.water.localWaterCount = 0;
+  const std::vector<float> none = draw(*fx, scene, frame).raw;
+  double worst = 0.0, largest = 0.0;
+  int touched[2] = {0, 0}, overlap = 0;
+  for (std::size_t i = 0; i < both.raw.size(); ++i) {
+    // A region alone leaves a pixel it does not reach exactly as without regions (tested
+    // above); where region 0 did not reach, the pair must draw region 1's light, and so on.
+    const bool by0 = alone[0][i] != none[i], by1 = alone[1][i] != none[i];
+    touched[0] += by0;
+    touched[1] += by1;
+    overlap += by0 && by1;
+    const float expected = by0 ? alone[0][i] : alone[1][i];
+    worst = std::max(worst, double(std::abs(both.raw[i] - expected)));
+    largest = std::max(largest, double(both.raw[i]));
+  }
+  std::printf("regions reach %d and %d pixels (%d both)\n", touched[0], touched[1], overlap);
+  ASSERT_GT(touched[0], 1000);
+  ASSERT_GT(touched[1], 1000);
+  EXPECT_EQ(overlap, 0);
+  std::printf("two regions: largest difference from each alone %.2e of light up to %.2f\n", worst,
+              largest);
+  EXPECT_LT(worst, 2e-3 * largest);
+  glDeleteTextures(1, &stormy);
+  glDeleteTextures(1, &ripples);
+}
+
 // The light a rippled region lets through is conserved: over its interior the floor's mean equals
 // flat water's (Fresnel's few tenths of a percent aside), however the ripples focus it.
 TEST_F(PostfxLocalWaterTest, RippledRegionConservesFlux) {

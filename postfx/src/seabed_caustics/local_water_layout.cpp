@@ -40,13 +40,15 @@ shared::LocalWaterBlock buildLocalWaterBlock(const FrameDesc& frame) {
   const int count = water.localWater == nullptr ? 0 : water.localWaterCount;
   b.count = glm::vec4(float(count), 0.0f, 0.0f, 0.0f);
   const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
+  const LocalWaterTexture texture = localWaterTexture(frame);
   for (int r = 0; r < count; ++r) {
     const LocalWater& region = water.localWater[r];
     const LocalWaterLayout l = localWaterLayout(region, frame);
     const glm::dvec2 centre = region.centre - camera;  // in double: both may be ~1e6 m out
     b.frame[r] = glm::vec4(saturatedFloat(centre.x), saturatedFloat(centre.y), float(l.axisU.x),
                            float(l.axisU.y));
-    b.texels[r] = float(l.texels);
+    b.lookup[r] = glm::vec4(float(texture.firstLayer[r]), float(l.texels) / float(texture.side),
+                            float(texture.side), 0.0f);
     b.extent[r] =
         glm::vec4(float(l.half.x), float(l.half.y), region.edgeBlend, l.add ? 0.0f : 1.0f);
     const glm::dvec2 window = double(l.texels) * l.cell;
@@ -59,17 +61,28 @@ shared::LocalWaterBlock buildLocalWaterBlock(const FrameDesc& frame) {
   return b;
 }
 
-std::uint64_t localWaterRegionBytes(const LocalWater& region) {
-  const int cells = region.gridResolution;
-  const int texels = cells + 2 * static_cast<int>(std::ceil(kLocalWaterMargin * cells));
-  const int layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers) *
-                     (region.mode == LocalWaterMode::Add ? 2 : 1);
+LocalWaterTexture localWaterTexture(const FrameDesc& frame) {
+  LocalWaterTexture t;
+  for (int r = 0; r < frame.water.localWaterCount && frame.water.localWater != nullptr; ++r) {
+    const LocalWater& region = frame.water.localWater[r];
+    const int cells = region.gridResolution;
+    const int texels = cells + 2 * static_cast<int>(std::ceil(kLocalWaterMargin * cells));
+    const int layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers) *
+                       (region.mode == LocalWaterMode::Add ? 2 : 1);
+    t.side = std::max(t.side, texels);
+    t.firstLayer[r] = t.layers;
+    t.layers += layers;
+  }
+  return t;
+}
+
+std::uint64_t localWaterTextureBytes(const LocalWaterTexture& texture) {
   std::uint64_t texelCount = 0;
-  for (int level = 0; level < wavefrontAreaRatioMipLevels(texels); ++level) {
-    const std::uint64_t side = std::uint64_t(std::max(texels >> level, 1));
+  for (int level = 0; level < wavefrontAreaRatioMipLevels(texture.side); ++level) {
+    const std::uint64_t side = std::uint64_t(std::max(texture.side >> level, 1));
     texelCount += side * side;
   }
-  return texelCount * std::uint64_t(layers) * 4;
+  return texelCount * std::uint64_t(texture.layers) * 4;
 }
 
 std::uint64_t localWaterGridBytes(const FrameDesc& frame) {
@@ -83,10 +96,7 @@ std::uint64_t localWaterGridBytes(const FrameDesc& frame) {
 
 std::uint64_t localWaterBytes(const FrameDesc& frame) {
   if (frame.water.localWater == nullptr || frame.water.localWaterCount <= 0) return 0;
-  std::uint64_t bytes = localWaterGridBytes(frame);
-  for (int r = 0; r < frame.water.localWaterCount; ++r)
-    bytes += localWaterRegionBytes(frame.water.localWater[r]);
-  return bytes;
+  return localWaterGridBytes(frame) + localWaterTextureBytes(localWaterTexture(frame));
 }
 
 }  // namespace postfx::detail

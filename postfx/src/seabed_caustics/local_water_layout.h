@@ -38,11 +38,20 @@ struct LocalWaterLayout {
 // Requires a validated region and a sun above the horizon.
 LocalWaterLayout localWaterLayout(const LocalWater& region, const FrameDesc& frame);
 
+// The one texture all of a frame's regions share: the largest region's side, every region's
+// layers one after another (region r's in the corner [0, its texels) of each).
+struct LocalWaterTexture {
+  int side = 0;
+  int layers = 0;
+  int firstLayer[kMaxLocalWater] = {};
+};
+LocalWaterTexture localWaterTexture(const FrameDesc& frame);
+
 // The lookups' block for one view (camera-relative centres): count 0 without regions.
 shared::LocalWaterBlock buildLocalWaterBlock(const FrameDesc& frame);
 
-// GPU memory one region allocates: its layers with their mip levels (R32F).
-std::uint64_t localWaterRegionBytes(const LocalWater& region);
+// GPU memory of the regions' texture (R32F with its mip levels).
+std::uint64_t localWaterTextureBytes(const LocalWaterTexture& texture);
 // The grid points' buffer for the largest grid of the frame (two vec4 per point).
 std::uint64_t localWaterGridBytes(const FrameDesc& frame);
 // Everything the frame's regions allocate (0 without regions).

@@ -46,33 +46,27 @@ Result LocalWaterPass::init(const std::string& defines, std::string& error) {
   return Result::Ok;
 }
 
-void LocalWaterPass::ensureRegion(Region& region, int texels, int layers) {
-  if (region.texture && region.texels == texels && region.layers == layers) return;
-  region.texture.reset();  // the old size goes first: never two allocated at once
-  region.texture = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.local_water.irradiance");
+void LocalWaterPass::ensureTexture(const LocalWaterTexture& layout) {
+  if (texture_ && textureSide_ == layout.side && textureLayers_ == layout.layers) return;
+  texture_.reset();  // the old size goes first: never two allocated at once
+  texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.local_water.irradiance");
   // R32F with mips, as the window model's: exact additive sums, footprint-filtered lookups.
-  glTextureStorage3D(region.texture.id(), wavefrontAreaRatioMipLevels(texels), GL_R32F, texels,
-                     texels, layers);
-  region.texels = texels;
-  region.layers = layers;
+  glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(layout.side), GL_R32F, layout.side,
+                     layout.side, layout.layers);
+  textureSide_ = layout.side;
+  textureLayers_ = layout.layers;
 }
 
 Result LocalWaterPass::reserve(const FrameDesc& frame, std::string& error) {
-  const WaterSurface& water = frame.water;
-  for (int r = 0; r < water.localWaterCount; ++r) {
-    const LocalWaterLayout l = localWaterLayout(water.localWater[r], frame);
-    Region& region = regions_[static_cast<std::size_t>(r)];
-    ensureRegion(region, l.texels, l.fieldLayers);
-    if (glkit::storedWidth(region.texture) != l.texels) {
-      error = "water.localWater[" + std::to_string(r) +
-              "]: the driver could not allocate its irradiance layers (gridResolution " +
-              std::to_string(water.localWater[r].gridResolution) + ")";
-      return Result::OutOfMemory;
-    }
+  const LocalWaterTexture layout = localWaterTexture(frame);
+  ensureTexture(layout);
+  if (glkit::storedWidth(texture_) != layout.side) {
+    textureSide_ = 0;
+    error = "water.localWater: the driver could not allocate the regions' irradiance layers (" +
+            std::to_string(layout.side) + " texels a side, " + std::to_string(layout.layers) +
+            " layers)";
+    return Result::OutOfMemory;
   }
-  // Slots this frame does not use are freed: what is allocated is what the frame needs.
-  for (int r = water.localWaterCount; r < kMaxLocalWater; ++r)
-    regions_[static_cast<std::size_t>(r)] = Region{};
   const std::uint64_t bytes = localWaterGridBytes(frame);
   if (!gridPoints_ || gridPointBytes_ != bytes) {
     gridPointView_.reset();
@@ -101,17 +95,20 @@ void LocalWaterPass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   glBindSampler(POSTFX_UNIT_GRID_POINTS, 0);
   glBindSampler(POSTFX_UNIT_LOCAL_SURFACE, surfaceSampler_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
-  for (int r = 0; r < frame.water.localWaterCount; ++r) drawRegion(frame, textures, r);
+  const float zero = 0.0f;
+  glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+  const LocalWaterTexture layout = localWaterTexture(frame);
+  for (int r = 0; r < frame.water.localWaterCount; ++r)
+    drawRegion(frame, textures, r, layout.firstLayer[r]);
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  glGenerateTextureMipmap(texture_.id());
 }
 
-void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures& textures, int r) {
+void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures& textures, int r,
+                                int firstLayer) {
   const LocalWater& region = frame.water.localWater[r];
   const LocalWaterLayout l = localWaterLayout(region, frame);
-  const Region& target = regions_[static_cast<std::size_t>(r)];
   const WaterSurface& water = frame.water;
-  const float zero = 0.0f;
-  glClearTexImage(target.texture.id(), 0, GL_RED, GL_FLOAT, &zero);
   glBindTextureUnit(POSTFX_UNIT_LOCAL_SURFACE, region.texture.texture);
 
   const glm::dvec2 axisV(-l.axisU.y, l.axisU.x);
@@ -174,16 +171,14 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
       glDispatchCompute(groups, groups, 1);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
-      glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, target.texture.id(),
-                                     0, field * l.layers + k);
+      glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0,
+                                     firstLayer + field * l.layers + k);
       glUseProgram(triangles_.id());
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * l.pointsPerSide, cells);
       glUseProgram(points_.id());
       glDrawArrays(GL_POINTS, 0, 2 * cells * cells);
     }
   }
-  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
-  glGenerateTextureMipmap(target.texture.id());
 }
 
 void LocalWaterPass::bind(const FrameDesc& frame, bool regions) {
@@ -191,25 +186,20 @@ void LocalWaterPass::bind(const FrameDesc& frame, bool regions) {
       regions ? buildLocalWaterBlock(frame) : shared::LocalWaterBlock{};
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_LOCAL_WATER_BLOCK_BINDING, block_.id());
-  for (int r = 0; r < kMaxLocalWater; ++r) {
-    const bool used = regions && r < frame.water.localWaterCount;
-    const GLuint unit = GLuint(POSTFX_UNIT_LOCAL_WATER + r);
-    glBindTextureUnit(unit, used ? regions_[static_cast<std::size_t>(r)].texture.id() : 0);
-    glBindSampler(unit, lookupSampler_.id());
-  }
+  glBindTextureUnit(POSTFX_UNIT_LOCAL_WATER, regions ? texture_.id() : 0);
+  glBindSampler(POSTFX_UNIT_LOCAL_WATER, lookupSampler_.id());
 }
 
 void LocalWaterPass::release() {
-  for (Region& region : regions_) region = Region{};
+  texture_.reset();
+  textureSide_ = textureLayers_ = 0;
   gridPointView_.reset();
   gridPoints_.reset();
   gridPointBytes_ = 0;
 }
 
 std::uint64_t LocalWaterPass::allocatedBytes() const {
-  std::uint64_t bytes = bufferBytes(gridPoints_.id());
-  for (const Region& region : regions_) bytes += textureBytes(region.texture.id(), 4);
-  return bytes;
+  return bufferBytes(gridPoints_.id()) + textureBytes(texture_.id(), 4);
 }
 
 }  // namespace postfx::detail

@@ -1,13 +1,13 @@
 #pragma once
 // The local water regions' light (Feature::LocalWater), once per frame for every view: per region,
 // per depth layer, its grid refracted onto the layer (local_water_vertices.comp) and drawn by the
-// wavefront area ratio's own triangle and point draws into a plugin-owned GL_R32F 2D array with
-// its mips (a second set of layers in Add mode: the same grid without the region's heights).
+// wavefront area ratio's own triangle and point draws into its layers of one plugin-owned GL_R32F
+// 2D array with mips (a second set of layers in Add mode: the same grid without the region's
+// heights).
 // Then, per view, bind() hands the textures and the view's block to the caustics and god rays.
 // Nothing is allocated before a frame gives a region.
 #include <epoxy/gl.h>
 
-#include <array>
 #include <cstdint>
 #include <string>
 
@@ -33,7 +33,7 @@ class LocalWaterPass {
   // vertex array, SSBO binding 0, texture units POSTFX_UNIT_LOCAL_SURFACE and
   // POSTFX_UNIT_GRID_POINTS, and enables GL_PROGRAM_POINT_SIZE.
   void draw(const FrameDesc& frame, const ValidatedTextures& textures);
-  // Binds the regions' layers on units POSTFX_UNIT_LOCAL_WATER + r and uploads `frame`'s block
+  // Binds the regions' layers on unit POSTFX_UNIT_LOCAL_WATER and uploads `frame`'s block
   // (its camera's) at POSTFX_LOCAL_WATER_BLOCK_BINDING, for the passes of one view. Called for
   // every view that draws while the context has the feature, regions or not: the shaders read
   // the block's count.
@@ -46,12 +46,8 @@ class LocalWaterPass {
   std::uint64_t allocatedBytes() const;
 
  private:
-  struct Region {
-    glkit::Texture texture;
-    int texels = 0, layers = 0;
-  };
-  void ensureRegion(Region& region, int texels, int layers);
-  void drawRegion(const FrameDesc& frame, const ValidatedTextures& textures, int r);
+  void ensureTexture(const LocalWaterTexture& layout);
+  void drawRegion(const FrameDesc& frame, const ValidatedTextures& textures, int r, int firstLayer);
 
   glkit::Program vertices_, triangles_, points_;
   glkit::Framebuffer framebuffer_;
@@ -59,7 +55,9 @@ class LocalWaterPass {
   glkit::Sampler surfaceSampler_, lookupSampler_;
   glkit::Buffer block_;
   glkit::Buffer clampCount_;  // the draws count what maxIrradiance removes; not reported here
-  std::array<Region, kMaxLocalWater> regions_{};
+  // Every region's layers, one after another (LocalWaterTexture).
+  glkit::Texture texture_;
+  int textureSide_ = 0, textureLayers_ = 0;
   glkit::Buffer gridPoints_;
   glkit::Texture gridPointView_;
   std::uint64_t gridPointBytes_ = 0;

@@ -28,14 +28,14 @@
 // window, so both are bound at once): it reuses the grid points' unit on its 2D-array target,
 // whose reader (the irradiance pre-pass) has drawn by then.
 #define POSTFX_UNIT_TILE_IRRADIANCE 6
-// Local water (Feature::LocalWater): each region's irradiance layers on units
-// [POSTFX_UNIT_LOCAL_WATER, + POSTFX_MAX_LOCAL_WATER), read by the caustics and the god rays;
+// Local water (Feature::LocalWater): the regions' irradiance layers (one texture for all), read
+// by the caustics and the god rays;
 // the region's host surface, read by its pre-pass only, on the window's irradiance unit (its
 // reader, the caustics pass, binds it again after the pre-passes).
 #define POSTFX_UNIT_LOCAL_WATER 7
 #define POSTFX_UNIT_LOCAL_SURFACE 5
 // Units [0, POSTFX_UNIT_COUNT) are the ones GlStateGuard saves and restores.
-#define POSTFX_UNIT_COUNT 11
+#define POSTFX_UNIT_COUNT 8
 
 // The object caustics pass binds its own units (under its own state), consecutive from 0:
 // the ray trace reads the caster maps and the receiver depth,

@@ -5,31 +5,23 @@
 // irradiance_bspline.glsl.
 #if POSTFX_LOCAL_WATER
 
-// Region r's layers: [0, layers) its own light (Add: with the cascades beneath), Add mode's
-// [layers, 2 layers) the same grid without the region's heights. Units
-// POSTFX_UNIT_LOCAL_WATER + r.
-layout(binding = POSTFX_UNIT_LOCAL_WATER) uniform sampler2DArray localIrradiance[POSTFX_MAX_LOCAL_WATER];
+// Every region's layers in one texture (a sampler array indexed per region cost llvmpipe twice
+// the caustics pass: it ran every arm): region r's [0, layers) its own light (Add: with the
+// cascades beneath), Add mode's [layers, 2 layers) the same grid without the region's heights,
+// from its first layer lw.lookup[r].x, in the corner [0, lw.lookup[r].y) of each.
+layout(binding = POSTFX_UNIT_LOCAL_WATER) uniform sampler2DArray localIrradiance;
 
-// One fetch of region r's layers: constant indices into the sampler array (r is dynamically
-// uniform, but a constant is what every compiler takes).
-float localFetch(int r, vec3 coord, float lod) {
-  if (r == 0) return textureLod(localIrradiance[0], coord, lod).r;
-  if (r == 1) return textureLod(localIrradiance[1], coord, lod).r;
-  if (r == 2) return textureLod(localIrradiance[2], coord, lod).r;
-  return textureLod(localIrradiance[3], coord, lod).r;
-}
-
-// Layer `layer` of region r at texture coordinate uv: filtered over the footprint (lod, in
-// texels), the B-spline below one texel (as the window model's lookup).
-float localLayer(int r, vec2 uv, float layer, float lod, float texels) {
-  float filtered = localFetch(r, vec3(uv, layer), lod);
+// Layer `layer` at texture coordinate uv: filtered over the footprint (lod, in texels), the
+// B-spline below one texel (as the window model's lookup). `texels`: the texture's side.
+float localLayer(vec2 uv, float layer, float lod, float texels) {
+  float filtered = textureLod(localIrradiance, vec3(uv, layer), lod).r;
   float smoothing = clamp(-lod, 0.0, 1.0);
   if (smoothing > 0.0) {
     BSplineTaps t = bsplineTaps(uv, texels);
-    float e00 = localFetch(r, vec3(t.c0.x, t.c0.y, layer), 0.0);
-    float e10 = localFetch(r, vec3(t.c1.x, t.c0.y, layer), 0.0);
-    float e01 = localFetch(r, vec3(t.c0.x, t.c1.y, layer), 0.0);
-    float e11 = localFetch(r, vec3(t.c1.x, t.c1.y, layer), 0.0);
+    float e00 = textureLod(localIrradiance, vec3(t.c0.x, t.c0.y, layer), 0.0).r;
+    float e10 = textureLod(localIrradiance, vec3(t.c1.x, t.c0.y, layer), 0.0).r;
+    float e01 = textureLod(localIrradiance, vec3(t.c0.x, t.c1.y, layer), 0.0).r;
+    float e11 = textureLod(localIrradiance, vec3(t.c1.x, t.c1.y, layer), 0.0).r;
     filtered = mix(filtered, bsplineSum(t, e00, e10, e01, e11), smoothing);
   }
   return filtered;
@@ -41,8 +33,8 @@ float localLayer(int r, vec2 uv, float layer, float lod, float texels) {
 float localField(int r, vec2 uv, float depthBelow, float base, float lod, float texels) {
   int layers = int(lw.drift[r].z);
   vec3 blend = layerBlend(depthBelow, lw.depths[2 * r], lw.depths[2 * r + 1], layers);
-  float lower = blend.x < 0.0 ? 1.0 : localLayer(r, uv, base + blend.x, lod, texels);
-  float upper = localLayer(r, uv, base + blend.y, lod, texels);
+  float lower = blend.x < 0.0 ? 1.0 : localLayer(uv, base + blend.x, lod, texels);
+  float upper = localLayer(uv, base + blend.y, lod, texels);
   return mix(lower, upper, blend.z);
 }
 
@@ -57,13 +49,13 @@ vec3 localWaterIrradiance(vec3 p, float depthBelow, float logFootprint, vec3 per
     float weight = localWaterWeight(entry, lw.extent[r]);
     // A dynamic branch: on GPUs pixels outside every region skip the fetches.
     if (!(weight > 0.0)) continue;
-    vec2 uv = (entry - lw.window[r].xy) * lw.window[r].zw;
+    vec2 uv = (entry - lw.window[r].xy) * lw.window[r].zw * lw.lookup[r].y;
     float lod = logFootprint + lw.drift[r].w;
     bool replace = lw.extent[r].w > 0.5;
     float layers = lw.drift[r].z;
-    float texels = lw.texels[r];
-    float joint = localField(r, uv, depthBelow, 0.0, lod, texels);
-    float seaOnly = replace ? 0.0 : localField(r, uv, depthBelow, layers, lod, texels);
+    float texels = lw.lookup[r].z, base = lw.lookup[r].x;
+    float joint = localField(r, uv, depthBelow, base, lod, texels);
+    float seaOnly = replace ? 0.0 : localField(r, uv, depthBelow, base + layers, lod, texels);
     float mode = replace ? 1.0 : 0.0;
     light = vec3(localWaterLight(light.r, joint, seaOnly, weight, mode),
                  localWaterLight(light.g, joint, seaOnly, weight, mode),

@@ -16,23 +16,25 @@ struct LocalWaterBlock {
 #else
 layout(std140, binding = POSTFX_LOCAL_WATER_BLOCK_BINDING) uniform LocalWaterBlock {
 #endif
-  vec4 count;   // x: regions this frame (0: the lookup returns the periodic light); yzw: unused
-  vec4 texels;  // region r's texture side in texels, [r]
+  vec4 count;  // x: regions this frame (0: the lookup returns the periodic light); yzw: unused
   // Per region: xy: its centre relative to the camera (world xz, m, from double); zw: its
   // local u axis in world xz, (cos r, -sin r) (v is (sin r, cos r)).
   vec4 frame[POSTFX_MAX_LOCAL_WATER];
   // xy: half its size (m); z: edge blend (m); w: 1 for LocalWaterMode::Replace, 0 for Add.
   vec4 extent[POSTFX_MAX_LOCAL_WATER];
-  // xy: the irradiance texture's corner in entry-point coordinates (local m); zw: 1 / the
-  // texture's extent (1/m) along u and v.
+  // xy: the corner of the region's irradiance layers in entry-point coordinates (local m);
+  // zw: 1 / their extent (1/m) along u and v.
   vec4 window[POSTFX_MAX_LOCAL_WATER];
   // xy: flat water's landing drift per metre of depth, in local axes (a receiver's light entered
   // at its position minus drift * depth); z: depth layers; w: log2(texels per metre).
   vec4 drift[POSTFX_MAX_LOCAL_WATER];
   vec4 depths[2 * POSTFX_MAX_LOCAL_WATER];  // region r: [2r] layers 0-3, [2r + 1] layers 4-7 (m)
+  // x: the region's first layer in the one texture all regions share; y: its share of the
+  // texture's side (its layers fill the corner [0, y) of each); z: the texture's side in texels.
+  vec4 lookup[POSTFX_MAX_LOCAL_WATER];
 #ifdef __cplusplus
 };
-static_assert(sizeof(LocalWaterBlock) == (2 + 6 * POSTFX_MAX_LOCAL_WATER) * 16,
+static_assert(sizeof(LocalWaterBlock) == (1 + 7 * POSTFX_MAX_LOCAL_WATER) * 16,
               "LocalWaterBlock must match its std140 layout");
 #else
 }
