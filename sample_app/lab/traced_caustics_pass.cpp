@@ -4,6 +4,7 @@
 
 #include "caustic_light_units.h"
 #include "gbuffer_readback.h"
+#include "local_water_readback.h"
 #include "scene_triangles.h"
 #include "water_readback.h"
 
@@ -40,8 +41,14 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   }
   reference::GBufferCopy gbuffer;
   if (!reference::readGBuffer(create, desc, gbuffer, error)) return false;
-  reference::WaterTextureSurface water;
-  if (!water.read(desc.water, error)) return false;
+  reference::WaterTextureSurface sea;
+  if (!sea.read(desc.water, error)) return false;
+  // The local water regions over the sea, where the frame has them: the trace refracts the water
+  // the plugin was given.
+  reference::LocalWaterSurface local;
+  if (!local.read(desc.water, sea, error)) return false;
+  const reference::Surface& water =
+      local.regionCount() > 0 ? static_cast<const reference::Surface&>(local) : sea;
   const glm::dmat3 worldToView(glm::mat3(desc.camera.view));
   const glm::dvec4 projection(desc.camera.projection[0][0], desc.camera.projection[1][1],
                               desc.camera.projection[2][0], desc.camera.projection[2][1]);
