@@ -217,6 +217,13 @@ const std::array kValueOptions{
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 1, 8, o.causticsLayers, "--caustics-layers", error);
                 }},
+    ValueOption{"--local-water-grid", "N",
+                "the pool's or wake's region grid cells per side, 16..2048 (default: the "
+                "scene's, 256)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return intIn(text, 16, 2048, o.localWaterGrid, "--local-water-grid", error);
+                }},
     ValueOption{"--caustics-lookup", "RES",
                 "tile model's lookups at full or half (default) resolution", false,
                 [](std::string_view text, Options& o, std::string& error) {
@@ -417,6 +424,9 @@ const std::array kFlagOptions{
                [](Options& o) { o.godRays = false; }},
     FlagOption{"--no-object-caustics", "leave the glass and metal objects' caustics out",
                [](Options& o) { o.objectCaustics = false; }},
+    FlagOption{"--flat-local-water",
+               "give the plugin the pool's or wake's regions flat (compare --flat's frame)",
+               [](Options& o) { o.flatLocalWater = true; }},
     FlagOption{"--triplanar-walls", "steep surfaces blend world-axis projections of the water",
                [](Options& o) { o.triplanarWalls = true; }},
     FlagOption{"--freeze-time", "render/view --frames: time stays at --time",

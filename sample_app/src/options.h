@@ -50,7 +50,14 @@ struct Options {
   bool caustics = true;        // the plugin's seabed caustics
   bool godRays = true;         // the plugin's underwater god rays
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
-  double tau = -1.0;           // caustics tightening; < 0 keeps the plugin's default
+  // The plugin is given the local water regions (pool, wake) with flat surfaces, the sample's
+  // own drawing unchanged: with --caustics-model ray-deviation --tau 0, flat water's frame of
+  // a scene with local water (compare --flat).
+  bool flatLocalWater = false;
+  // The local water regions' grid cells per side (LocalWater::gridResolution); 0 keeps the
+  // scene's. The report's error-against-time rows of the pool sweep it.
+  int localWaterGrid = 0;
+  double tau = -1.0;  // caustics tightening; < 0 keeps the plugin's default
   // Caustics model: the tile irradiance (the plugin's default) unless one of these is set:
   // the wavefront area-ratio irradiance window (Feature::WavefrontAreaRatio, with this
   // grid resolution) or the ray deviation.

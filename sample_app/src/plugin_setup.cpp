@@ -78,6 +78,14 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     return nullptr;
   }
   setup->createDesc_ = desc;
+  setup->flatLocalWater_ = options.flatLocalWater;
+  setup->localWaterGrid_ = options.localWaterGrid;
+  if (options.flatLocalWater) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &setup->flatSurface_);
+    glTextureStorage2D(setup->flatSurface_, 1, GL_RG32F, 1, 1);
+    const float zero[2] = {0.0f, 0.0f};
+    glTextureSubImage2D(setup->flatSurface_, 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, zero);
+  }
   setup->caustics_.enabled = options.caustics;
   // The plugin's caustics are the sample's underwater sun (lighting.frag lights none below the
   // level): given the beam below the surface (dispatch), 1/pi makes its caustic copy the
@@ -120,6 +128,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
 PluginSetup::~PluginSetup() {
   for (postfx::View* view : views_) postfx::destroyView(*context_, view);
   postfx::destroy(context_);
+  if (flatSurface_ != 0) glDeleteTextures(1, &flatSurface_);
 }
 
 bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
@@ -202,6 +211,14 @@ postfx::FrameDesc PluginSetup::describe(const HostFrame& frame) {
   // The pool's (or a wake's) water: the host's own simulation texture, read during the dispatch.
   desc.water.localWater = frame.localWater.empty() ? nullptr : frame.localWater.data();
   desc.water.localWaterCount = int(frame.localWater.size());
+  if ((flatLocalWater_ || localWaterGrid_ > 0) && !frame.localWater.empty()) {
+    regions_ = frame.localWater;
+    for (postfx::LocalWater& region : regions_) {
+      if (flatLocalWater_) region.texture = {flatSurface_, GL_RG32F};
+      if (localWaterGrid_ > 0) region.gridResolution = localWaterGrid_;
+    }
+    desc.water.localWater = regions_.data();
+  }
   desc.shadow.depth = {frame.shadowMap, GL_DEPTH_COMPONENT32F};
   desc.shadow.worldToLightClip = frame.shadowWorldToClip;
   desc.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;

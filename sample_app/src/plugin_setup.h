@@ -54,6 +54,12 @@ class PluginSetup {
   std::vector<postfx::CasterMesh> casters_;  // rebuilt each frame, kept for its capacity
   std::vector<postfx::LocalLight> lights_;   // likewise
   std::vector<postfx::View*> views_;         // dispatchViews', freed with the context
+  // --flat-local-water: the regions given with a flat surface of their own (one zero texel,
+  // clamped over the whole rectangle).
+  bool flatLocalWater_ = false;
+  int localWaterGrid_ = 0;  // --local-water-grid (0: the scene's)
+  GLuint flatSurface_ = 0;
+  std::vector<postfx::LocalWater> regions_;  // the scene's, changed by those two options
 };
 
 }  // namespace ocean
