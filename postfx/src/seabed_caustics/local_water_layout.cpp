@@ -15,7 +15,7 @@ LocalWaterLayout localWaterLayout(const LocalWater& region, const FrameDesc& fra
   l.cells = region.gridResolution;
   const int margin = static_cast<int>(std::ceil(kLocalWaterMargin * l.cells));
   l.texels = l.cells + 2 * margin;
-  l.pointsPerSide = l.cells + 3;
+  l.pointsPerSide = l.cells + 2;
   l.layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers);
   l.add = region.mode == LocalWaterMode::Add;
   l.fieldLayers = l.add ? 2 * l.layers : l.layers;
@@ -88,7 +88,7 @@ std::uint64_t localWaterTextureBytes(const LocalWaterTexture& texture) {
 std::uint64_t localWaterGridBytes(const FrameDesc& frame) {
   std::uint64_t points = 0;
   for (int r = 0; r < frame.water.localWaterCount; ++r) {
-    const std::uint64_t side = std::uint64_t(frame.water.localWater[r].gridResolution) + 3;
+    const std::uint64_t side = std::uint64_t(frame.water.localWater[r].gridResolution) + 2;
     points = std::max(points, side * side);
   }
   return points * 2 * 16;

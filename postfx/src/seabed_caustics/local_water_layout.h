@@ -22,7 +22,9 @@ inline constexpr double kLocalWaterMargin = 0.125;
 struct LocalWaterLayout {
   int cells = 0;          // grid cells per side over the rectangle (gridResolution)
   int texels = 0;         // the texture's side: cells + 2 margins, one texel per cell
-  int pointsPerSide = 0;  // cells + 3: one cell beyond each edge (the surface is clamped there)
+  // cells + 2: at the centres of the rectangle's cells and half a cell beyond each edge (the
+  // surface is clamped there)
+  int pointsPerSide = 0;
   int layers = 0;         // depth layers
   int fieldLayers = 0;    // the texture's: layers, twice that in Add mode (with and without it)
   bool add = false;

@@ -112,7 +112,11 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
   glBindTextureUnit(POSTFX_UNIT_LOCAL_SURFACE, region.texture.texture);
 
   const glm::dvec2 axisV(-l.axisU.y, l.axisU.x);
-  const glm::dvec2 gridCorner = -l.half - l.cell;  // grid point (0, 0): a cell beyond the edge
+  // Grid point (0, 0) half a cell beyond the edge: the points lie at the centres of cells of the
+  // rectangle (of the host's texels, where its texture has gridResolution of them: the grid
+  // then reads the texture's own values, where points on texel corners averaged four and
+  // softened the light).
+  const glm::dvec2 gridCorner = -l.half - 0.5 * l.cell;
   // The cascades beneath (Add mode), each at the mip level whose texel matches the grid
   // spacing: finer ripples cannot be carried by the grid and would alias into false caustics.
   const int cascades = l.add ? water.cascadeCount : 0;
@@ -136,8 +140,8 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
   }
   glProgramUniform4f(compute, 9, float(gridCorner.x), float(gridCorner.y), float(l.cell.x),
                      float(l.cell.y));
-  // Texture uv = (local + half) / size: grid point (0, 0) lies one cell before uv 0.
-  glProgramUniform4f(compute, 10, float(-1.0 / l.cells), float(-1.0 / l.cells),
+  // Texture uv = (local + half) / size: grid point (0, 0) lies half a cell before uv 0.
+  glProgramUniform4f(compute, 10, float(-0.5 / l.cells), float(-0.5 / l.cells),
                      float(1.0 / l.cells), float(1.0 / l.cells));
   const double flatT = shared::fresnelTransmittance(float(l.sunLocal.y), water.ior);
   glProgramUniform4f(compute, 11, float(l.sunLocal.x), float(l.sunLocal.y), float(l.sunLocal.z),
