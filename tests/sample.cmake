@@ -58,3 +58,9 @@ postfx_add_test(sample_pool_cli_tests
 target_compile_definitions(sample_pool_cli_tests PRIVATE
   OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
 add_dependencies(sample_pool_cli_tests ocean_sample)
+# The pool against its traced reference at 640x360, the pattern alone (about 2 minutes).
+postfx_add_test(sample_pool_reference_tests
+  SOURCES unit/sample_pool_reference_test.cpp)
+target_compile_definitions(sample_pool_reference_tests PRIVATE
+  OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
+add_dependencies(sample_pool_reference_tests ocean_sample)

@@ -157,7 +157,7 @@ TEST_F(SampleLocalWater, PluginGetsThePoolsRegionAndTheFeatureOnlyWithIt) {
     EXPECT_EQ(region.mode, postfx::LocalWaterMode::Replace);
     EXPECT_EQ(region.edgeBlend, 0.0f);
     EXPECT_EQ(region.maxDepth, 2.0f);
-    EXPECT_EQ(region.gridResolution, 256);
+    EXPECT_EQ(region.gridResolution, 512);
     EXPECT_EQ(region.size, glm::dvec2(8.0));
     EXPECT_EQ(region.texture.format, GLenum(GL_RGBA32F));
     EXPECT_EQ(region.texture.texture, renderer->localWater()->regions()[0].texture.texture);
