@@ -27,15 +27,27 @@ size="--preset seabed --width 320 --height 180"
 echo "make_images: docs/torch.png"
 "$sample" render --preset torch --width 640 --height 360 --out docs/torch.png > /dev/null
 
+echo "make_images: docs/pool.png and docs/pool_side_by_side.png (the pool, local water)"
+"$sample" render --preset pool --width 960 --height 540 --out docs/pool.png > /dev/null
+size="--preset pool --width 640 --height 360 --no-god-rays"
+"$sample" render $size --out "$work/pool_plugin.exr" > /dev/null
+"$sample" render $size --no-caustics --no-object-caustics --out "$work/pool_base.exr" > /dev/null
+"$sample" render $size --caustics-model ray-deviation --tau 0 --no-object-caustics \
+  --flat-local-water --out "$work/pool_flat.exr" > /dev/null
+"$sample" reference $size --out "$work/pool_reference.exr"
+"$sample" compare --plugin "$work/pool_plugin.exr" --reference "$work/pool_reference.exr" \
+  --base "$work/pool_base.exr" --flat "$work/pool_flat.exr" --out docs/pool_side_by_side.png
+
 echo "make_images: docs/loop.gif (40 frames)"
 "$sample" render --width 320 --height 180 --frames 40 --fps 20 --out docs/loop.gif | tail -n 1
 
 if [ "${1:-}" = "--with-report" ]; then
   echo "make_images: docs/report/ (ocean_sample report: error against run time, stability)"
   "$sample" report --out "$work/report"
+  "$sample" report --only local-water --out "$work/report"
   mkdir -p docs/report
   for f in error_vs_time.md error_vs_time.csv error_vs_time.png temporal_stability.md \
-    temporal_stability.csv; do
+    temporal_stability.csv local_water.md local_water.csv local_water.png; do
     cp "$work/report/$f" "docs/report/$f"
   done
 fi

@@ -51,7 +51,9 @@ presets: shallow (the default: a calm sea over a reef 3 m deep, shown with 512 t
 full-resolution lookups and irradiance layers to 5 m), seabed (underwater, looking at the
 seabed), sunward (underwater, looking up toward the sun), above (above the water looking
 down), waterline (camera 3 cm above the water), torch (underwater at night, a diver's torch
-shining through the glass sphere onto the sand).
+shining through the glass sphere onto the sand), pool (a tiled pool on land after webgl-water:
+a ripple simulation with drops and a ball, the plugin's local water; click the water in view to
+drop), wake (a ball towed across a calm sea, its wake simulated and added to the sea).
 --camera-position and --camera-look-at replace the preset's camera (either alone keeps the
 other from the preset); the look-at point is centred in the image and must not be straight
 above or below the camera. --sun-azimuth/--sun-elevation replace the preset's sun.

@@ -19,6 +19,7 @@
 
 #include "commands.h"
 #include "headless_session.h"
+#include "local_water_rows.h"
 
 namespace ocean {
 namespace {
@@ -82,10 +83,15 @@ int runReport(const Options& given) {
   // Small enough for the CPU references to converge in minutes; --quick for a smoke run.
   options.width = given.quick ? 160 : 320;
   options.height = given.quick ? 90 : 180;
-  // --only stability: the temporal-stability table alone (the error rows take far longer).
-  const bool onlyStability = !given.only.empty();
-  if (onlyStability && std::string("stability").rfind(given.only, 0) != 0)
-    return commandFailed("report --only knows one section, 'stability'; got '" + given.only + "'");
+  // --only stability: the temporal-stability table alone; --only local-water: the local water
+  // rows alone, into local_water.{csv,md,png} (the error rows take far longer).
+  const bool onlyStability =
+      !given.only.empty() && std::string("stability").rfind(given.only, 0) == 0;
+  const bool onlyLocalWater =
+      !given.only.empty() && std::string("local-water").rfind(given.only, 0) == 0;
+  if (!given.only.empty() && !onlyStability && !onlyLocalWater)
+    return commandFailed("report --only knows two sections, 'stability' and 'local-water'; got '" +
+                         given.only + "'");
   std::error_code fsError;
   std::filesystem::create_directories(options.out, fsError);
   if (fsError) return commandFailed("cannot create '" + options.out + "': " + fsError.message());
@@ -101,7 +107,26 @@ int runReport(const Options& given) {
   info.width = options.width;
   info.height = options.height;
   info.quick = given.quick;
+  LocalWaterReportSettings localWater;
+  if (given.quick) {
+    localWater.width = 320;
+    localWater.height = 180;
+    localWater.grids = {64, 256};
+    localWater.timedFrames = 6;
+  }
+  const std::string dir = options.out + "/";
   std::vector<report::Row> rows;
+  if (onlyLocalWater) {
+    if (!measureLocalWaterRows(given, localWater, rows, info.referenceNote, error) ||
+        !report::writeCsv(dir + "local_water.csv", info, rows, error) ||
+        !report::writeErrorPlot(dir + "local_water.png", "local water, " + info.device, rows,
+                                error) ||
+        !report::writeMarkdown(dir + "local_water.md", info, rows, "local_water.png", error))
+      return commandFailed(error);
+    std::fprintf(stderr, "report: wrote %slocal_water.{csv,md,png} (%zu rows)\n", dir.c_str(),
+                 rows.size());
+    return 0;
+  }
   if (!onlyStability) {
     std::fprintf(stderr, "report: rendering the %s preset at %dx%d\n", options.preset.c_str(),
                  options.width, options.height);
@@ -109,6 +134,10 @@ int runReport(const Options& given) {
     if (!session.renderer->render(input, error)) return commandFailed(error);
     glFinish();
     if (!measureErrorRows(session, given.quick, rows, info, error)) return commandFailed(error);
+    std::string localNote;
+    if (!measureLocalWaterRows(given, localWater, rows, localNote, error))
+      return commandFailed(error);
+    info.referenceNote += "\n\n" + localNote;
   }
 
   // Temporal stability on frames of its own size: the traced reference of
@@ -121,7 +150,6 @@ int runReport(const Options& given) {
   if (!report::measureStability(options, stability, stabilityRows, stabilityNote, error))
     return commandFailed(error);
 
-  const std::string dir = options.out + "/";
   if (!onlyStability &&
       (!report::writeCsv(dir + "error_vs_time.csv", info, rows, error) ||
        !report::writeErrorPlot(dir + "error_vs_time.png", "error against GPU time, " + info.device,
