@@ -52,6 +52,9 @@ std::vector<PanelRule> panelRules(const std::vector<Row>& rows) {
       {"object caustics", "relative RMSE of the map against exact ray tracing",
        [](const Row& r) { return r.pass == "object_caustics"; },
        [](const Row& r) { return r.relativeRmse; }},
+      {"local water (the pool)", "relative RMSE of the pattern against traced light",
+       [](const Row& r) { return r.pass == "local_water"; },
+       [](const Row& r) { return r.relativeRmse; }},
   };
 }
 

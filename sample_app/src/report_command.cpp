@@ -117,6 +117,8 @@ int runReport(const Options& given) {
   const std::string dir = options.out + "/";
   std::vector<report::Row> rows;
   if (onlyLocalWater) {
+    info.width = localWater.width;
+    info.height = localWater.height;
     if (!measureLocalWaterRows(given, localWater, rows, info.referenceNote, error) ||
         !report::writeCsv(dir + "local_water.csv", info, rows, error) ||
         !report::writeErrorPlot(dir + "local_water.png", "local water, " + info.device, rows,
