@@ -484,6 +484,48 @@ TEST_F(PostfxLocalWaterTest, BadRegionsAreRefusedAndDrawNothing) {
   glDeleteTextures(1, &wrongFormat);
 }
 
+// A broken simulation (NaN, infinite and huge heights and slopes in its texture) lights its
+// region as flat water, never NaN: the grid sanitises the surface as the cascades' lookups do.
+TEST_F(PostfxLocalWaterTest, BrokenRegionTexturesStayFinite) {
+  Scene scene(downSpec(3.0, 64));
+  const GLuint stormy = postfxtest::makeWaterTexture(32, 3, 0.02);
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Surface broken = [&](glm::dvec2 p) {
+    const int cell = int(std::floor(p.x * 4.0)) + 3 * int(std::floor(p.y * 4.0));
+    switch (((cell % 4) + 4) % 4) {
+      case 0:
+        return glm::dvec3(nan, 0.1, nan);
+      case 1:
+        return glm::dvec3(inf, -inf, 1e30);
+      case 2:
+        return glm::dvec3(1e9, 0.0, -1e9);
+      default:
+        return rippledSurface(p);
+    }
+  };
+  const GLuint surface = makeRegionTexture(64, {6.0, 6.0}, broken);
+  auto fx = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
+  for (const postfx::LocalWaterMode mode :
+       {postfx::LocalWaterMode::Replace, postfx::LocalWaterMode::Add}) {
+    SCOPED_TRACE(int(mode));
+    postfx::FrameDesc frame = postfxtest::makeFrame(scene, stormy, 3);
+    const postfx::LocalWater pool = region(surface, {0.0, 0.0}, {6.0, 6.0}, mode, 3.0f);
+    frame.water.localWater = &pool;
+    frame.water.localWaterCount = 1;
+    const Drawn drawn = draw(*fx, scene, frame);
+    int lit = 0;
+    for (const glm::vec4& p : drawn.target) {
+      ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b));
+      lit += p.g > 0.0f;
+    }
+    for (float r : drawn.raw) ASSERT_TRUE(std::isfinite(r) && r >= 0.0f);
+    EXPECT_GT(lit, 1000) << "the broken texels light as flat water, not as nothing";
+  }
+  glDeleteTextures(1, &stormy);
+  glDeleteTextures(1, &surface);
+}
+
 // The god rays read the regions' light as the seabed does: a flat Replace region over the whole
 // view turns a stormy sea's shafts into flat water's.
 TEST_F(PostfxLocalWaterTest, GodRaysReadTheRegionsLight) {
