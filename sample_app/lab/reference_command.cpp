@@ -21,13 +21,7 @@ namespace {
 constexpr double kObjectRegionIrradiance = 0.05;
 
 reference::FrameTraceDesc traceDesc(const Options& options) {
-  reference::FrameTraceDesc desc;
-  desc.seed = options.seed;
-  desc.targetNoise = options.noise;
-  desc.kernelScale = options.kernelScale;
-  desc.minKernelRadius = options.minKernelRadius;
-  desc.maxBatches = options.maxBatches;
-  desc.threads = options.threads;
+  reference::FrameTraceDesc desc = frameTraceOptions(options);
   desc.progress = [](const reference::FrameTraceProgress& p) {
     std::printf(
         "reference: batch %d, %.3g photons, lit-pixel noise median %.2f %%, p99 %.2f %%, max "

@@ -10,6 +10,17 @@
 
 namespace ocean {
 
+reference::FrameTraceDesc frameTraceOptions(const Options& options) {
+  reference::FrameTraceDesc desc;
+  desc.seed = options.seed;
+  desc.targetNoise = options.noise;
+  desc.kernelScale = options.kernelScale;
+  desc.minKernelRadius = options.minKernelRadius;
+  desc.maxBatches = options.maxBatches;
+  desc.threads = options.threads;
+  return desc;
+}
+
 std::unique_ptr<TracedCausticsPass> TracedCausticsPass::create(
     const PluginSetup& plugin, const ocean_scene::Model& scene, const glm::dvec3& cameraPosition,
     const reference::FrameTraceDesc& trace, std::string& error) {

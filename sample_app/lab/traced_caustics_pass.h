@@ -20,6 +20,10 @@
 
 namespace ocean {
 
+// The trace's settings the command line gives (--seed, --noise, --kernel, --min-kernel,
+// --max-batches, --threads), without progress.
+reference::FrameTraceDesc frameTraceOptions(const Options& options);
+
 class TracedCausticsPass {
  public:
   // `trace` without sun and IOR (taken from the frame); its casters, if any, one per mesh of

@@ -56,13 +56,7 @@ bool measureLocalWaterRows(const Options& base, const LocalWaterReportSettings& 
   };
   if (!renderPool(base, settings, noCaustics, false, traced, error)) return false;
   const std::vector<float> baseFrame = traced.renderer->readRadiance();
-  reference::FrameTraceDesc trace;
-  trace.seed = base.seed;
-  trace.targetNoise = base.noise;
-  trace.kernelScale = base.kernelScale;
-  trace.minKernelRadius = base.minKernelRadius;
-  trace.maxBatches = base.maxBatches;
-  trace.threads = base.threads;
+  reference::FrameTraceDesc trace = frameTraceOptions(base);
   trace.progress = [](const reference::FrameTraceProgress& p) {
     std::fprintf(stderr, "report: local water reference, batch %d, noise p99 %.2f %%, %.0f s\n",
                  p.batch, 100.0 * p.noiseQuantile, p.seconds);

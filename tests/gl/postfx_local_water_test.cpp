@@ -36,6 +36,19 @@ class PostfxLocalWaterTest : public testsupport::GlTest {};
 constexpr postfx::Feature kLocal = postfxtest::kRaw | postfx::Feature::LocalWater;
 constexpr double kIor = 1.333;
 
+// A test's own GL texture, deleted with it.
+class OwnedTexture {
+ public:
+  explicit OwnedTexture(GLuint id) : id_(id) {}
+  ~OwnedTexture() { glDeleteTextures(1, &id_); }
+  OwnedTexture(const OwnedTexture&) = delete;
+  OwnedTexture& operator=(const OwnedTexture&) = delete;
+  operator GLuint() const { return id_; }
+
+ private:
+  GLuint id_;
+};
+
 // (dh/du, dh/dv, h) of a region's surface at local (u, v), metres.
 using Surface = std::function<glm::dvec3(glm::dvec2)>;
 
@@ -129,9 +142,9 @@ Drawn draw(postfx::Context& fx, const Scene& scene, const postfx::FrameDesc& fra
 // grid refracts straight down with a transmittance ratio of 1 and its triangles keep their area.
 TEST_F(PostfxLocalWaterTest, FlatReplaceRegionGivesFlatWatersLight) {
   Scene scene(downSpec(4.0));
-  const GLuint calm = postfxtest::makeWaterTexture(32, 3, 0.0);
-  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.05);
-  const GLuint flat = makeRegionTexture(32, {20.0, 20.0}, flatSurface);
+  const OwnedTexture calm(postfxtest::makeWaterTexture(32, 3, 0.0));
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.05));
+  const OwnedTexture flat(makeRegionTexture(32, {20.0, 20.0}, flatSurface));
   auto fx = postfxtest::makeContext(kLocal);
   const Drawn reference = draw(*fx, scene, postfxtest::makeFrame(scene, calm, 3));
 
@@ -158,17 +171,14 @@ TEST_F(PostfxLocalWaterTest, FlatReplaceRegionGivesFlatWatersLight) {
   ASSERT_GT(floor, 1000);
   EXPECT_GT(seaDeparture, 0.2) << "the sea beneath must be far from flat for this to mean much";
   EXPECT_LT(worst, 2e-3);  // R16F's rounding of values ~1
-  glDeleteTextures(1, &calm);
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &flat);
 }
 
 // An Add region of zero height changes nothing, bit for bit: its two fields come from the same
 // grid and cancel exactly. The same frame in a context without the feature draws the same too.
 TEST_F(PostfxLocalWaterTest, ZeroHeightAddRegionChangesNothing) {
   Scene scene(downSpec(3.0));
-  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.02);
-  const GLuint zero = makeRegionTexture(16, {6.0, 6.0}, flatSurface);
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.02));
+  const OwnedTexture zero(makeRegionTexture(16, {6.0, 6.0}, flatSurface));
   for (const postfx::CausticsModel model :
        {postfx::CausticsModel::TileIrradiance, postfx::CausticsModel::RayDeviation}) {
     SCOPED_TRACE(int(model));
@@ -188,16 +198,14 @@ TEST_F(PostfxLocalWaterTest, ZeroHeightAddRegionChangesNothing) {
     EXPECT_TRUE(identical(before.target, plain.target)) << "the feature alone changes nothing";
     EXPECT_TRUE(postfx::stats(*fx).pass(postfx::Pass::LocalWater).present);
   }
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &zero);
 }
 
 // Where a pixel's light entered the water outside every region, its light is bit-identical to a
 // frame without them; inside, the region's ripples show.
 TEST_F(PostfxLocalWaterTest, OutsideTheRegionNothingChanges) {
   Scene scene(downSpec(3.0, 128));
-  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.02);
-  const GLuint ripples = makeRegionTexture(128, {4.0, 6.0}, rippledSurface);
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.02));
+  const OwnedTexture ripples(makeRegionTexture(128, {4.0, 6.0}, rippledSurface));
   auto fx = postfxtest::makeContext(kLocal);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, stormy, 3);
   frame.caustics.model = postfx::CausticsModel::TileIrradiance;
@@ -241,8 +249,6 @@ TEST_F(PostfxLocalWaterTest, OutsideTheRegionNothingChanges) {
   ASSERT_GT(inside, 1000);
   EXPECT_EQ(outsideChanged, 0);
   EXPECT_GT(insideChanged, inside / 2);
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &ripples);
 }
 
 // A circular ripple's crest is a ring-shaped cylindrical lens of curvature A / sigma^2 across it:
@@ -259,8 +265,8 @@ TEST_F(PostfxLocalWaterTest, CircularRippleFocusesARingAtItsParaxialDepth) {
     const double dhdr = -g * (r - ringRadius) / (sigma * sigma);
     return glm::dvec3(dhdr * p.x / r, dhdr * p.y / r, g);
   };
-  const GLuint surface = makeRegionTexture(256, {4.0, 4.0}, ring);
-  const GLuint calm = postfxtest::makeWaterTexture(32, 3, 0.0);
+  const OwnedTexture surface(makeRegionTexture(256, {4.0, 4.0}, ring));
+  const OwnedTexture calm(postfxtest::makeWaterTexture(32, 3, 0.0));
   auto fx = postfxtest::makeContext(kLocal);
   const double depths[] = {0.5 * focus, 0.75 * focus, focus, 1.5 * focus, 2.0 * focus};
   constexpr int kDepths = 5;
@@ -301,16 +307,14 @@ TEST_F(PostfxLocalWaterTest, CircularRippleFocusesARingAtItsParaxialDepth) {
   }
   EXPECT_NEAR(centre[2], ringRadius, 0.02) << "the ring lands under its crest";
   for (int d : {0, 1, 3, 4}) EXPECT_LT(width[2], width[d]) << "narrowest at the paraxial depth";
-  glDeleteTextures(1, &surface);
-  glDeleteTextures(1, &calm);
 }
 
 // Two regions of different grids and modes share one frame's texture: each one's light is what
 // it is alone (to float rounding of the lookups' coordinates), and they do not see each other.
 TEST_F(PostfxLocalWaterTest, RegionsDoNotDisturbEachOther) {
   Scene scene(downSpec(3.0, 128));
-  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.02);
-  const GLuint ripples = makeRegionTexture(128, {3.0, 3.0}, rippledSurface);
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.02));
+  const OwnedTexture ripples(makeRegionTexture(128, {3.0, 3.0}, rippledSurface));
   auto fx = postfxtest::makeContext(kLocal);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, stormy, 3);
   frame.caustics.model = postfx::CausticsModel::TileIrradiance;
@@ -351,16 +355,14 @@ TEST_F(PostfxLocalWaterTest, RegionsDoNotDisturbEachOther) {
   std::printf("two regions: largest difference from each alone %.2e of light up to %.2f\n", worst,
               largest);
   EXPECT_LT(worst, 2e-3 * largest);
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &ripples);
 }
 
 // The light a rippled region lets through is conserved: over its interior the floor's mean equals
 // flat water's (Fresnel's few tenths of a percent aside), however the ripples focus it.
 TEST_F(PostfxLocalWaterTest, RippledRegionConservesFlux) {
   Scene scene(downSpec(2.5, 128, 1.5));
-  const GLuint calm = postfxtest::makeWaterTexture(32, 3, 0.0);
-  const GLuint ripples = makeRegionTexture(256, {12.0, 12.0}, rippledSurface);
+  const OwnedTexture calm(postfxtest::makeWaterTexture(32, 3, 0.0));
+  const OwnedTexture ripples(makeRegionTexture(256, {12.0, 12.0}, rippledSurface));
   auto fx = postfxtest::makeContext(kLocal);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, calm, 3);
   frame.caustics.surfaceFadeDepth = 0.0f;
@@ -386,16 +388,14 @@ TEST_F(PostfxLocalWaterTest, RippledRegionConservesFlux) {
   ASSERT_GT(n, 5000);
   EXPECT_GT(std::sqrt(contrast / n), 0.1) << "the ripples must make caustics";
   EXPECT_NEAR(ratio, 1.0, 0.02);
-  glDeleteTextures(1, &calm);
-  glDeleteTextures(1, &ripples);
 }
 
 // Everything 1e6 m from the origin (camera, water origin, region): the light is what it is at
 // the origin to float noise, as the region's frame is taken relative to the camera in double.
 TEST_F(PostfxLocalWaterTest, FarFromTheOriginDrawsTheSame) {
   Scene scene(downSpec(3.0));
-  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.02);
-  const GLuint ripples = makeRegionTexture(128, {8.0, 8.0}, rippledSurface);
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.02));
+  const OwnedTexture ripples(makeRegionTexture(128, {8.0, 8.0}, rippledSurface));
   auto fx = postfxtest::makeContext(kLocal);
   std::vector<float> near, far;
   for (const glm::dvec3 offset : {glm::dvec3(0.0), glm::dvec3(1e6, 0.0, -1e6)}) {
@@ -415,18 +415,19 @@ TEST_F(PostfxLocalWaterTest, FarFromTheOriginDrawsTheSame) {
   }
   std::printf("1e6 m away: largest difference %.2e of light up to %.2f\n", worst, largest);
   EXPECT_LT(worst, 0.01 * largest);
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &ripples);
 }
 
 // Bad regions are refused with a message naming the field, and the target is left as it was.
 TEST_F(PostfxLocalWaterTest, BadRegionsAreRefusedAndDrawNothing) {
   Scene scene(downSpec(3.0, 32));
-  const GLuint water = postfxtest::makeWaterTexture(16, 3, 0.02);
-  const GLuint good = makeRegionTexture(16, {4.0, 4.0}, flatSurface);
-  GLuint wrongFormat = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &wrongFormat);
-  glTextureStorage2D(wrongFormat, 1, GL_RGBA8, 16, 16);
+  const OwnedTexture water(postfxtest::makeWaterTexture(16, 3, 0.02));
+  const OwnedTexture good(makeRegionTexture(16, {4.0, 4.0}, flatSurface));
+  const OwnedTexture wrongFormat([] {
+    GLuint t = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &t);
+    glTextureStorage2D(t, 1, GL_RGBA8, 16, 16);
+    return t;
+  }());
   auto fx = postfxtest::makeContext(kLocal);
   auto featureless = postfxtest::makeContext(postfxtest::kRaw);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -457,8 +458,8 @@ TEST_F(PostfxLocalWaterTest, BadRegionsAreRefusedAndDrawNothing) {
       {"maxDepth", [](postfx::FrameDesc&, postfx::LocalWater& r) { r.maxDepth = 0.0f; }},
       {"texture", [](postfx::FrameDesc&, postfx::LocalWater& r) { r.texture.texture = 0; }},
       {"texture",
-       [wrongFormat](postfx::FrameDesc&, postfx::LocalWater& r) {
-         r.texture = {wrongFormat, 0};
+       [&wrongFormat](postfx::FrameDesc&, postfx::LocalWater& r) {
+         r.texture = {GLuint(wrongFormat), 0};
        }},
       {"texture", [](postfx::FrameDesc&, postfx::LocalWater& r) { r.texture.format = GL_RG16F; }},
   };
@@ -479,16 +480,13 @@ TEST_F(PostfxLocalWaterTest, BadRegionsAreRefusedAndDrawNothing) {
     for (const glm::vec4& p : target(scene))
       ASSERT_EQ(p, marker) << "a refused frame draws nothing";
   }
-  glDeleteTextures(1, &water);
-  glDeleteTextures(1, &good);
-  glDeleteTextures(1, &wrongFormat);
 }
 
 // A broken simulation (NaN, infinite and huge heights and slopes in its texture) lights its
 // region as flat water, never NaN: the grid sanitises the surface as the cascades' lookups do.
 TEST_F(PostfxLocalWaterTest, BrokenRegionTexturesStayFinite) {
   Scene scene(downSpec(3.0, 64));
-  const GLuint stormy = postfxtest::makeWaterTexture(32, 3, 0.02);
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(32, 3, 0.02));
   const double inf = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Surface broken = [&](glm::dvec2 p) {
@@ -504,7 +502,7 @@ TEST_F(PostfxLocalWaterTest, BrokenRegionTexturesStayFinite) {
         return rippledSurface(p);
     }
   };
-  const GLuint surface = makeRegionTexture(64, {6.0, 6.0}, broken);
+  const OwnedTexture surface(makeRegionTexture(64, {6.0, 6.0}, broken));
   auto fx = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
   for (const postfx::LocalWaterMode mode :
        {postfx::LocalWaterMode::Replace, postfx::LocalWaterMode::Add}) {
@@ -522,8 +520,6 @@ TEST_F(PostfxLocalWaterTest, BrokenRegionTexturesStayFinite) {
     for (float r : drawn.raw) ASSERT_TRUE(std::isfinite(r) && r >= 0.0f);
     EXPECT_GT(lit, 1000) << "the broken texels light as flat water, not as nothing";
   }
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &surface);
 }
 
 // The god rays read the regions' light as the seabed does: a flat Replace region over the whole
@@ -532,9 +528,9 @@ TEST_F(PostfxLocalWaterTest, GodRaysReadTheRegionsLight) {
   SceneSpec spec = downSpec(6.0, 64, -1.0);
   spec.lookDirection = glm::dvec3(0.0, -0.5, -1.0);
   Scene scene(spec);
-  const GLuint calm = postfxtest::makeWaterTexture(32, 3, 0.0);
-  const GLuint stormy = postfxtest::makeWaterTexture(64, 3, 0.05);
-  const GLuint flat = makeRegionTexture(16, {400.0, 400.0}, flatSurface);
+  const OwnedTexture calm(postfxtest::makeWaterTexture(32, 3, 0.0));
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.05));
+  const OwnedTexture flat(makeRegionTexture(16, {400.0, 400.0}, flatSurface));
   auto fx = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, calm, 3);
   frame.caustics.enabled = false;  // the shafts alone
@@ -560,17 +556,14 @@ TEST_F(PostfxLocalWaterTest, GodRaysReadTheRegionsLight) {
   ASSERT_GT(largest, 0.0);
   EXPECT_GT(seaDeparture, 0.05 * largest);
   EXPECT_LT(worst, 0.01 * largest);
-  glDeleteTextures(1, &calm);
-  glDeleteTextures(1, &stormy);
-  glDeleteTextures(1, &flat);
 }
 
 // The estimate a frame is refused by is, byte for byte, what the regions hold afterwards; a
 // frame without regions holds nothing of theirs.
 TEST_F(PostfxLocalWaterTest, MemoryEstimateIsWhatIsAllocated) {
   Scene scene(downSpec(3.0, 32));
-  const GLuint water = postfxtest::makeWaterTexture(16, 3, 0.02);
-  const GLuint surface = makeRegionTexture(16, {4.0, 4.0}, rippledSurface);
+  const OwnedTexture water(postfxtest::makeWaterTexture(16, 3, 0.02));
+  const OwnedTexture surface(makeRegionTexture(16, {4.0, 4.0}, rippledSurface));
   auto fx = postfxtest::makeContext(kLocal);
   postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3);
   postfx::LocalWater regions[2] = {
@@ -586,8 +579,6 @@ TEST_F(PostfxLocalWaterTest, MemoryEstimateIsWhatIsAllocated) {
     EXPECT_EQ(postfx::detail::localWaterBytes(frame), fx->localWater.allocatedBytes());
   }
   EXPECT_EQ(fx->localWater.allocatedBytes(), 0u);
-  glDeleteTextures(1, &water);
-  glDeleteTextures(1, &surface);
 }
 
 }  // namespace
