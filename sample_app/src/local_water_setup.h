@@ -11,7 +11,8 @@
 namespace ocean {
 
 // Nothing for the sea's presets; the pool's simulation for SceneKind::Pool, the towed ball's
-// wake for SceneKind::Wake (`scene` is the one buildScene made for it). The GL context must be current. False with a message on failure.
+// wake for SceneKind::Wake (`scene` is the one buildScene made for it). The GL context must be
+// current. False with a message on failure.
 bool attachLocalWater(const Preset& preset, const ocean_scene::Model& scene, Renderer& renderer,
                       std::string& error);
 

@@ -20,13 +20,13 @@ namespace postfx::detail {
 inline constexpr double kLocalWaterMargin = 0.125;
 
 struct LocalWaterLayout {
-  int cells = 0;          // grid cells per side over the rectangle (gridResolution)
-  int texels = 0;         // the texture's side: cells + 2 margins, one texel per cell
+  int cells = 0;   // grid cells per side over the rectangle (gridResolution)
+  int texels = 0;  // the texture's side: cells + 2 margins, one texel per cell
   // cells + 2: at the centres of the rectangle's cells and half a cell beyond each edge (the
   // surface is clamped there)
   int pointsPerSide = 0;
-  int layers = 0;         // depth layers
-  int fieldLayers = 0;    // the texture's: layers, twice that in Add mode (with and without it)
+  int layers = 0;       // depth layers
+  int fieldLayers = 0;  // the texture's: layers, twice that in Add mode (with and without it)
   bool add = false;
   glm::dvec2 axisU{1.0, 0.0};          // local u in world xz; v = (-u.y, u.x)
   glm::dvec2 half{0.0};                // half the rectangle (m)
