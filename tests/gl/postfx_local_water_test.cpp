@@ -6,6 +6,7 @@
 // light; the memory estimate is what GL holds.
 #include <gtest/gtest.h>
 #include <postfx/testing.h>
+#include <postfx/views.h>
 
 #include <cmath>
 #include <cstdio>
@@ -355,6 +356,54 @@ TEST_F(PostfxLocalWaterTest, RegionsDoNotDisturbEachOther) {
   std::printf("two regions: largest difference from each alone %.2e of light up to %.2f\n", worst,
               largest);
   EXPECT_LT(worst, 2e-3 * largest);
+}
+
+// Several views of one frame (postfx/views.h) share the regions' light, computed once: each
+// view's image is bit-identical to a context of its own drawing that camera alone.
+TEST_F(PostfxLocalWaterTest, ViewsShareTheRegionsLight) {
+  SceneSpec tilted = downSpec(3.0, 96);
+  tilted.camera = glm::dvec3(1.0, 0.5, 0.5);
+  tilted.lookDirection = glm::dvec3(-0.4, -1.0, -0.3);
+  Scene a(downSpec(3.0, 96)), b(tilted), ownA(a.spec()), ownB(b.spec());
+  const OwnedTexture stormy(postfxtest::makeWaterTexture(64, 3, 0.02));
+  const OwnedTexture ripples(makeRegionTexture(128, {5.0, 5.0}, rippledSurface));
+  postfx::LocalWater regions[2] = {
+      region(ripples, {-0.5, 0.3}, {5.0, 5.0}, postfx::LocalWaterMode::Replace, 3.0f),
+      region(ripples, {2.5, -1.0}, {5.0, 5.0}, postfx::LocalWaterMode::Add, 3.0f)};
+  regions[1].rotation = 0.7;
+  auto shared = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
+  auto contextA = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
+  auto contextB = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
+  postfx::View* views[2] = {nullptr, nullptr};
+  for (postfx::View*& v : views) ASSERT_EQ(postfx::createView(*shared, v), postfx::Result::Ok);
+  auto frameOf = [&](const Scene& scene) {
+    postfx::FrameDesc f = postfxtest::makeFrame(scene, stormy, 3);
+    f.caustics.model = postfx::CausticsModel::TileIrradiance;
+    f.water.localWater = regions;
+    f.water.localWaterCount = 2;
+    return f;
+  };
+  auto viewOf = [](postfx::View* view, const postfx::FrameDesc& f) {
+    postfx::ViewDesc v;
+    v.view = view;
+    v.depth = f.depth;
+    v.normal = f.normal;
+    v.albedo = f.albedo;
+    v.target = f.target;
+    v.camera = f.camera;
+    return v;
+  };
+  for (const Scene* s : {&a, &b, &ownA, &ownB}) s->clearTarget(glm::vec4(0.0f));
+  const postfx::FrameDesc frameA = frameOf(a), frameB = frameOf(b);
+  const postfx::ViewDesc list[2] = {viewOf(views[0], frameA), viewOf(views[1], frameB)};
+  ASSERT_EQ(postfx::dispatch(*shared, frameA, list, 2), postfx::Result::Ok)
+      << postfx::lastError(shared.get());
+  ASSERT_EQ(postfx::dispatch(*contextA, frameOf(ownA)), postfx::Result::Ok);
+  ASSERT_EQ(postfx::dispatch(*contextB, frameOf(ownB)), postfx::Result::Ok);
+  EXPECT_TRUE(identical(target(a), target(ownA)));
+  EXPECT_TRUE(identical(target(b), target(ownB)));
+  EXPECT_FALSE(identical(target(a), target(b)));
+  for (postfx::View* v : views) postfx::destroyView(*shared, v);
 }
 
 // The light a rippled region lets through is conserved: over its interior the floor's mean equals
