@@ -42,7 +42,7 @@ void WaterGrid::createSquare(int cells) {
   const int n = cells + 1;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      points.emplace_back(float(i) / cells - 0.5f, float(j) / cells - 0.5f);
+      points.emplace_back(float(i) / float(cells) - 0.5f, float(j) / float(cells) - 0.5f);
   // (i, j) -> (i + 1, j) is +u, (i, j) -> (i, j + 1) is +v (+x and +z at rotation 0): (a, c, d)
   // and (a, d, b) are counter-clockwise seen from above, as create()'s triangles.
   std::vector<uint32_t> indices;

@@ -231,7 +231,9 @@ TEST(SceneGltf, DefaultSceneIncludesTheModelsOnTheSand) {
       ASSERT_LT(w.y, reef ? -0.8f : -1.0f) << instance.name;
       ASSERT_LT(std::abs(w.x - site.x), reef ? 5.0f : 30.0f) << instance.name;
       ASSERT_LT(std::abs(w.z - site.y), reef ? 5.0f : 30.0f) << instance.name;
-      if (reef) ASSERT_GT(w.y, float(seabedHeight(w.x, w.z)) - 0.05f) << instance.name;
+      if (reef) {
+        ASSERT_GT(w.y, float(seabedHeight(w.x, w.z)) - 0.05f) << instance.name;
+      }
     }
   }
   EXPECT_EQ(refractive, 3);  // sphere, bottle and the reef's sphere

@@ -53,9 +53,10 @@ void addTiled(std::array<Mesh, kSlots>& meshes, const Rect& r, float pitch, Slot
   const int j1 = int(std::ceil((b0 + r.lengthB) / pitch - 1e-4f));
   for (int i = i0; i < i1; ++i) {
     for (int j = j0; j < j1; ++j) {
-      const float s0 = std::max(i * pitch - a0, 0.0f), t0 = std::max(j * pitch - b0, 0.0f);
-      const float s1 = std::min((i + 1) * pitch - a0, r.lengthA);
-      const float t1 = std::min((j + 1) * pitch - b0, r.lengthB);
+      const float s0 = std::max(float(i) * pitch - a0, 0.0f);
+      const float t0 = std::max(float(j) * pitch - b0, 0.0f);
+      const float s1 = std::min(float(i + 1) * pitch - a0, r.lengthA);
+      const float t1 = std::min(float(j + 1) * pitch - b0, r.lengthB);
       if (s1 <= s0 || t1 <= t0) continue;
       const glm::vec3 p = r.origin + r.a * s0 + r.b * t0;
       const glm::vec3 centre = r.origin + r.a * (0.5f * (s0 + s1)) + r.b * (0.5f * (t0 + t1));
