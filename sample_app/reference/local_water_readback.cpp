@@ -73,8 +73,9 @@ bool LocalWaterSurface::read(const postfx::WaterSurface& water, const Surface& b
     regions_.push_back(std::move(region));
   }
   // A point may lie in several regions (each adds or replaces in turn): the bounds add up.
-  maxHeight_ = std::min(maxHeight_ + regions_.size() * regionHeight, kMaxHeight);
-  maxSlope_ = std::min(maxSlope_ + regions_.size() * regionSlope, kMaxSlope * std::sqrt(2.0));
+  const double regions = static_cast<double>(regions_.size());
+  maxHeight_ = std::min(maxHeight_ + regions * regionHeight, kMaxHeight);
+  maxSlope_ = std::min(maxSlope_ + regions * regionSlope, kMaxSlope * std::sqrt(2.0));
   return true;
 }
 

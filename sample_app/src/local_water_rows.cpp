@@ -14,7 +14,7 @@ namespace ocean {
 namespace {
 
 double luminance(const float* rgba) {
-  return 0.2126 * rgba[0] + 0.7152 * rgba[1] + 0.0722 * rgba[2];
+  return 0.2126 * double(rgba[0]) + 0.7152 * double(rgba[1]) + 0.0722 * double(rgba[2]);
 }
 
 // The pool's frame at the settings' size with `change` applied to its options, rendered once:

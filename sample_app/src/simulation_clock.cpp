@@ -17,7 +17,7 @@ void SimulationClock::restart(double seconds) {
 }
 
 long long SimulationClock::stepsAt(double seconds) const {
-  return (long long)std::floor((seconds - start_) * double(stepsPerSecond_) + 1e-6);
+  return static_cast<long long>(std::floor((seconds - start_) * double(stepsPerSecond_) + 1e-6));
 }
 
 double SimulationClock::timeAt(long long step) const {

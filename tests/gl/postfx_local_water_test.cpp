@@ -239,7 +239,7 @@ TEST_F(PostfxLocalWaterTest, OutsideTheRegionNothingChanges) {
       if (distance < -0.02) {
         ++outside;
         outsideChanged += same ? 0 : 1;
-      } else if (distance > pool.edgeBlend) {
+      } else if (distance > double(pool.edgeBlend)) {
         ++inside;
         insideChanged += std::abs(after.raw[i] - before.raw[i]) > 0.02f ? 1 : 0;
       }
@@ -296,7 +296,7 @@ TEST_F(PostfxLocalWaterTest, CircularRippleFocusesARingAtItsParaxialDepth) {
         if (std::abs(r - ringRadius) > 0.4) continue;
         // Per unit floor area: pixels on a ring of radius r are r times as many.
         const double excess =
-            std::max(drawn.raw[std::size_t(y) * scene.spec().width + x] - 1.0, 0.0);
+            std::max(double(drawn.raw[std::size_t(y) * scene.spec().width + x]) - 1.0, 0.0);
         sum += excess;
         first += excess * r;
         second += excess * r * r;
@@ -426,9 +426,10 @@ TEST_F(PostfxLocalWaterTest, RippledRegionConservesFlux) {
   int n = 0;
   for (std::size_t i = 0; i < flat.raw.size(); ++i) {
     if (!(flat.raw[i] > 0.0f)) continue;
-    flatSum += flat.raw[i];
-    rippledSum += rippled.raw[i];
-    contrast += (rippled.raw[i] - flat.raw[i]) * (rippled.raw[i] - flat.raw[i]);
+    const double f = flat.raw[i], r = rippled.raw[i];
+    flatSum += f;
+    rippledSum += r;
+    contrast += (r - f) * (r - f);
     ++n;
   }
   const double ratio = rippledSum / flatSum;
