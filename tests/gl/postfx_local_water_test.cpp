@@ -24,6 +24,7 @@
 #include "gl_fixture.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
+#include "postfx_views_util.h"
 #include "seabed_caustics/local_water_layout.h"
 
 namespace {
@@ -374,8 +375,8 @@ TEST_F(PostfxLocalWaterTest, ViewsShareTheRegionsLight) {
   auto shared = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
   auto contextA = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
   auto contextB = postfxtest::makeContext(kLocal | postfx::Feature::GodRays);
-  postfx::View* views[2] = {nullptr, nullptr};
-  for (postfx::View*& v : views) ASSERT_EQ(postfx::createView(*shared, v), postfx::Result::Ok);
+  const postfxtest::ViewPtr viewA = postfxtest::makeView(*shared),
+                            viewB = postfxtest::makeView(*shared);
   auto frameOf = [&](const Scene& scene) {
     postfx::FrameDesc f = postfxtest::makeFrame(scene, stormy, 3);
     f.caustics.model = postfx::CausticsModel::TileIrradiance;
@@ -383,27 +384,16 @@ TEST_F(PostfxLocalWaterTest, ViewsShareTheRegionsLight) {
     f.water.localWaterCount = 2;
     return f;
   };
-  auto viewOf = [](postfx::View* view, const postfx::FrameDesc& f) {
-    postfx::ViewDesc v;
-    v.view = view;
-    v.depth = f.depth;
-    v.normal = f.normal;
-    v.albedo = f.albedo;
-    v.target = f.target;
-    v.camera = f.camera;
-    return v;
-  };
   for (const Scene* s : {&a, &b, &ownA, &ownB}) s->clearTarget(glm::vec4(0.0f));
-  const postfx::FrameDesc frameA = frameOf(a), frameB = frameOf(b);
-  const postfx::ViewDesc list[2] = {viewOf(views[0], frameA), viewOf(views[1], frameB)};
-  ASSERT_EQ(postfx::dispatch(*shared, frameA, list, 2), postfx::Result::Ok)
+  const postfx::ViewDesc list[2] = {postfxtest::viewOf(viewA.get(), a),
+                                    postfxtest::viewOf(viewB.get(), b)};
+  ASSERT_EQ(postfx::dispatch(*shared, frameOf(a), list, 2), postfx::Result::Ok)
       << postfx::lastError(shared.get());
   ASSERT_EQ(postfx::dispatch(*contextA, frameOf(ownA)), postfx::Result::Ok);
   ASSERT_EQ(postfx::dispatch(*contextB, frameOf(ownB)), postfx::Result::Ok);
   EXPECT_TRUE(identical(target(a), target(ownA)));
   EXPECT_TRUE(identical(target(b), target(ownB)));
   EXPECT_FALSE(identical(target(a), target(b)));
-  for (postfx::View* v : views) postfx::destroyView(*shared, v);
 }
 
 // The light a rippled region lets through is conserved: over its interior the floor's mean equals

@@ -9,21 +9,39 @@
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
+namespace {
+
+// The sizes a region's grid and layers take, from its settings alone (the layout, the shared
+// texture and the memory estimate all read these).
+int texelsPerSide(const LocalWater& region) {
+  return region.gridResolution + 2 * int(std::ceil(kLocalWaterMargin * region.gridResolution));
+}
+int pointsPerSide(const LocalWater& region) {
+  return region.gridResolution + 2;
+}
+int depthLayers(const LocalWater& region) {
+  return std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers);
+}
+int fieldLayers(const LocalWater& region) {
+  return depthLayers(region) * (region.mode == LocalWaterMode::Add ? 2 : 1);
+}
+
+}  // namespace
 
 LocalWaterLayout localWaterLayout(const LocalWater& region, const FrameDesc& frame) {
   LocalWaterLayout l;
   l.cells = region.gridResolution;
-  const int margin = static_cast<int>(std::ceil(kLocalWaterMargin * l.cells));
-  l.texels = l.cells + 2 * margin;
-  l.pointsPerSide = l.cells + 2;
-  l.layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers);
+  l.texels = texelsPerSide(region);
+  l.pointsPerSide = pointsPerSide(region);
+  l.layers = depthLayers(region);
   l.add = region.mode == LocalWaterMode::Add;
-  l.fieldLayers = l.add ? 2 * l.layers : l.layers;
+  l.fieldLayers = fieldLayers(region);
   l.axisU = glm::dvec2(std::cos(region.rotation), -std::sin(region.rotation));
   const glm::dvec2 axisV(-l.axisU.y, l.axisU.x);
   l.half = 0.5 * region.size;
   l.cell = region.size / double(l.cells);
-  l.windowCorner = -l.half - double(margin) * l.cell;
+  // The margin: half of what the texture has beyond the rectangle's cells, on each side.
+  l.windowCorner = -l.half - 0.5 * double(l.texels - l.cells) * l.cell;
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
   const glm::dvec2 sunXz(sun.x, sun.z);
   l.sunLocal = glm::dvec3(glm::dot(sunXz, l.axisU), sun.y, glm::dot(sunXz, axisV));
@@ -65,13 +83,9 @@ LocalWaterTexture localWaterTexture(const FrameDesc& frame) {
   LocalWaterTexture t;
   for (int r = 0; r < frame.water.localWaterCount && frame.water.localWater != nullptr; ++r) {
     const LocalWater& region = frame.water.localWater[r];
-    const int cells = region.gridResolution;
-    const int texels = cells + 2 * static_cast<int>(std::ceil(kLocalWaterMargin * cells));
-    const int layers = std::clamp(region.depthLayers, 1, kMaxWavefrontAreaRatioLayers) *
-                       (region.mode == LocalWaterMode::Add ? 2 : 1);
-    t.side = std::max(t.side, texels);
+    t.side = std::max(t.side, texelsPerSide(region));
     t.firstLayer[r] = t.layers;
-    t.layers += layers;
+    t.layers += fieldLayers(region);
   }
   return t;
 }
@@ -85,18 +99,19 @@ std::uint64_t localWaterTextureBytes(const LocalWaterTexture& texture) {
   return texelCount * std::uint64_t(texture.layers) * 4;
 }
 
-std::uint64_t localWaterGridBytes(const FrameDesc& frame) {
+std::uint64_t localWaterGridPoints(const FrameDesc& frame) {
   std::uint64_t points = 0;
   for (int r = 0; r < frame.water.localWaterCount; ++r) {
-    const std::uint64_t side = std::uint64_t(frame.water.localWater[r].gridResolution) + 2;
+    const std::uint64_t side = std::uint64_t(pointsPerSide(frame.water.localWater[r]));
     points = std::max(points, side * side);
   }
-  return points * 2 * 16;
+  return points;
 }
 
 std::uint64_t localWaterBytes(const FrameDesc& frame) {
   if (frame.water.localWater == nullptr || frame.water.localWaterCount <= 0) return 0;
-  return localWaterGridBytes(frame) + localWaterTextureBytes(localWaterTexture(frame));
+  // Two vec4 per grid point (GridPointBuffer).
+  return localWaterGridPoints(frame) * 2 * 16 + localWaterTextureBytes(localWaterTexture(frame));
 }
 
 }  // namespace postfx::detail

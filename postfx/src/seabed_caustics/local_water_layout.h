@@ -54,8 +54,8 @@ shared::LocalWaterBlock buildLocalWaterBlock(const FrameDesc& frame);
 
 // GPU memory of the regions' texture (R32F with its mip levels).
 std::uint64_t localWaterTextureBytes(const LocalWaterTexture& texture);
-// The grid points' buffer for the largest grid of the frame (two vec4 per point).
-std::uint64_t localWaterGridBytes(const FrameDesc& frame);
+// The largest region's grid points (the buffer is reused by every region and layer).
+std::uint64_t localWaterGridPoints(const FrameDesc& frame);
 // Everything the frame's regions allocate (0 without regions).
 std::uint64_t localWaterBytes(const FrameDesc& frame);
 

@@ -67,20 +67,7 @@ Result LocalWaterPass::reserve(const FrameDesc& frame, std::string& error) {
             " layers)";
     return Result::OutOfMemory;
   }
-  const std::uint64_t bytes = localWaterGridBytes(frame);
-  if (!gridPoints_ || gridPointBytes_ != bytes) {
-    gridPointView_.reset();
-    gridPoints_.reset();
-    gridPoints_ =
-        glkit::createBuffer(GLsizeiptr(bytes), nullptr, 0, "postfx.local_water.grid_points");
-    gridPointView_ = glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.local_water.grid_points_view");
-    glTextureBuffer(gridPointView_.id(), GL_RGBA32F, gridPoints_.id());
-    gridPointBytes_ = bytes;
-  }
-  GLint64 stored = 0;
-  glGetNamedBufferParameteri64v(gridPoints_.id(), GL_BUFFER_SIZE, &stored);
-  if (stored < GLint64(bytes)) {
-    gridPointBytes_ = 0;
+  if (!gridPoints_.ensure(localWaterGridPoints(frame), "postfx.local_water.grid_points")) {
     error = "water.localWater: the driver could not allocate the grid points";
     return Result::OutOfMemory;
   }
@@ -91,7 +78,7 @@ void LocalWaterPass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   glBindVertexArray(vertexArray_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPointView_.id());
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPoints_.view());
   glBindSampler(POSTFX_UNIT_GRID_POINTS, 0);
   glBindSampler(POSTFX_UNIT_LOCAL_SURFACE, surfaceSampler_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
@@ -171,7 +158,7 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
       glProgramUniform4f(compute, 13, float(entryCorner.x), float(entryCorner.y),
                          float(l.windowCorner.x), float(l.windowCorner.y));
       glUseProgram(compute);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.id());
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
       glDispatchCompute(groups, groups, 1);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
@@ -197,13 +184,11 @@ void LocalWaterPass::bind(const FrameDesc& frame, bool regions) {
 void LocalWaterPass::release() {
   texture_.reset();
   textureSide_ = textureLayers_ = 0;
-  gridPointView_.reset();
   gridPoints_.reset();
-  gridPointBytes_ = 0;
 }
 
 std::uint64_t LocalWaterPass::allocatedBytes() const {
-  return bufferBytes(gridPoints_.id()) + textureBytes(texture_.id(), 4);
+  return bufferBytes(gridPoints_.buffer()) + textureBytes(texture_.id(), 4);
 }
 
 }  // namespace postfx::detail

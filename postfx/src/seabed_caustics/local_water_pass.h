@@ -16,6 +16,7 @@
 #include <postfx/postfx.h>
 
 #include "core/validation.h"
+#include "seabed_caustics/grid_point_buffer.h"
 #include "seabed_caustics/local_water_layout.h"
 
 namespace postfx::detail {
@@ -58,9 +59,7 @@ class LocalWaterPass {
   // Every region's layers, one after another (LocalWaterTexture).
   glkit::Texture texture_;
   int textureSide_ = 0, textureLayers_ = 0;
-  glkit::Buffer gridPoints_;
-  glkit::Texture gridPointView_;
-  std::uint64_t gridPointBytes_ = 0;
+  GridPointBuffer gridPoints_;  // the largest region's, reused by every region and layer
 };
 
 }  // namespace postfx::detail

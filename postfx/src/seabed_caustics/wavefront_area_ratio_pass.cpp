@@ -44,20 +44,6 @@ Result WavefrontAreaRatioPass::init(const std::string& defines, std::string& err
   return Result::Ok;
 }
 
-void WavefrontAreaRatioPass::ensureGridPoints(int pointsPerSide) {
-  if (gridPoints_ && gridPointsPerSide_ == pointsPerSide) return;
-  // The old size goes first: never two of them allocated at once.
-  gridPointView_.reset();
-  gridPoints_.reset();
-  // Two vec4 per grid point (see irradiance_vertices.comp); reused by every layer in turn.
-  const GLsizeiptr bytes = GLsizeiptr(pointsPerSide) * pointsPerSide * 2 * 16;
-  gridPoints_ = glkit::createBuffer(bytes, nullptr, 0, "postfx.wavefront_area_ratio.grid_points");
-  gridPointView_ =
-      glkit::createTexture(GL_TEXTURE_BUFFER, "postfx.wavefront_area_ratio.grid_points_view");
-  glTextureBuffer(gridPointView_.id(), GL_RGBA32F, gridPoints_.id());
-  gridPointsPerSide_ = pointsPerSide;
-}
-
 void WavefrontAreaRatioPass::ensureTexture(int resolution, int layers, bool spread) {
   if (texture_ && textureResolution_ == resolution && textureLayers_ == layers &&
       bool(spreadRows_) == spread)
@@ -86,7 +72,7 @@ void WavefrontAreaRatioPass::ensureTexture(int resolution, int layers, bool spre
 
 std::uint64_t WavefrontAreaRatioPass::allocatedBytes() const {
   return textureBytes(texture_.id(), 4) + textureBytes(spreadRows_.id(), 4) +  // R32F
-         bufferBytes(gridPoints_.id()) + bufferBytes(spreadStatisticsBuffer_.id());
+         bufferBytes(gridPoints_.buffer()) + bufferBytes(spreadStatisticsBuffer_.id());
 }
 
 double WavefrontAreaRatioPass::pollClampCounts() {
@@ -116,12 +102,12 @@ void WavefrontAreaRatioPass::place(const FrameDesc& frame) {
 Result WavefrontAreaRatioPass::reserve(const FrameDesc& frame, std::string& error) {
   place(frame);
   ensureTexture(layout_.resolution, layout_.layers, layout_.spread);
-  ensureGridPoints(layout_.cells + 1);
+  // Reused by every layer in turn.
+  const std::uint64_t side = std::uint64_t(layout_.cells) + 1;
+  const bool points = gridPoints_.ensure(side * side, "postfx.wavefront_area_ratio.grid_points");
   // Storage that failed (GL_OUT_OF_MEMORY) leaves the texture without levels and the buffer
   // without bytes: found here, before anything is drawn.
-  GLint64 bytes = 0;
-  glGetNamedBufferParameteri64v(gridPoints_.id(), GL_BUFFER_SIZE, &bytes);
-  if (glkit::storedWidth(texture_) != layout_.resolution || bytes <= 0) {
+  if (glkit::storedWidth(texture_) != layout_.resolution || !points) {
     error = "caustics: the driver could not allocate the irradiance layers (gridResolution " +
             std::to_string(layout_.resolution) + ")";
     return Result::OutOfMemory;
@@ -173,7 +159,7 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
                      static_cast<float>(l.resolution));
   glBindVertexArray(vertexArray_.id());
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPointView_.id());
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPoints_.view());
   const int texelsPerSide = std::max(textures.water.width, textures.water.height);
   const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
   for (int k = 0; k < l.layers; ++k) {
@@ -192,7 +178,7 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
     glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
                        static_cast<float>(l.cell), static_cast<float>(l.depth[k]));
     glUseProgram(compute);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 

@@ -26,6 +26,7 @@
 
 #include "core/gpu_timers.h"
 #include "core/validation.h"
+#include "seabed_caustics/grid_point_buffer.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
@@ -57,7 +58,6 @@ class WavefrontAreaRatioPass {
 
  private:
   void ensureTexture(int resolution, int layers, bool spread);
-  void ensureGridPoints(int pointsPerSide);
   void drawSpread(const FrameDesc& frame, const ValidatedTextures& textures);
 
   glkit::Program vertices_, triangles_, points_, spreadStatistics_, spread_;
@@ -68,9 +68,7 @@ class WavefrontAreaRatioPass {
   // The spread's rows (level 0 only) and the slope statistics of the grid's cells.
   glkit::Texture spreadRows_;
   glkit::Buffer spreadStatisticsBuffer_;
-  glkit::Buffer gridPoints_;
-  glkit::Texture gridPointView_;  // the grid points' RGBA32F buffer-texture view
-  int gridPointsPerSide_ = 0;
+  GridPointBuffer gridPoints_;
   WavefrontAreaRatioLayout layout_{};
   struct ClampSlot {
     glkit::Buffer buffer;
