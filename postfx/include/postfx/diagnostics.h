@@ -25,11 +25,14 @@ enum class Pass : std::uint8_t {
   // The local water regions' light (Feature::LocalWater), once per frame for every view. Runs
   // with the pre-passes, before Floor (listed last so that the older passes keep their values).
   LocalWater,
+  // The waves' reflected light above the water (Feature::ReflectedCaustics), per view: its
+  // field (a window around the view's camera) and the pass that adds it.
+  ReflectedCaustics,
   // Former names, kept so that a host compiles while it renames (CHANGELOG.md).
   CausticsIrradiance [[deprecated("renamed Pass::WavefrontAreaRatio")]] = WavefrontAreaRatio,
   CausticsTileIrradiance [[deprecated("renamed Pass::TileIrradiance")]] = TileIrradiance,
 };
-inline constexpr int kPassCount = 7;
+inline constexpr int kPassCount = 8;
 
 // Stable snake_case name, e.g. "god_rays" for Pass::GodRays; "unknown" outside the enum.
 const char* toString(Pass pass) noexcept;

@@ -13,6 +13,7 @@
 #include <postfx/casters.h>
 #include <postfx/conventions.h>
 #include <postfx/range.h>
+#include <postfx/reflected_caustics.h>
 #include <postfx/settings.h>
 
 namespace postfx {
@@ -189,6 +190,8 @@ struct FrameDesc {
   SunShadowMap shadow;
   CausticsSettings caustics;
   GodRaySettings godRays;                                  // read only with Feature::GodRays
+  // Read only with Feature::ReflectedCaustics (postfx/reflected_caustics.h).
+  ReflectedCausticsSettings reflectedCaustics;
   ObjectCausticsFrame objectCaustics;                      // read only with Feature::ObjectCaustics
   ViewExtinction viewExtinction = ViewExtinction::Plugin;  // all the light dispatch() adds
 };

@@ -55,6 +55,10 @@ enum class Feature : std::uint32_t {
   // Local water regions (WaterSurface::localWater, postfx/local_water.h): their light, computed
   // once per frame for every view, timed as Pass::LocalWater. Without it no shader reads them.
   LocalWater = 1u << 9,
+  // Reflected caustics above the water (FrameDesc::reflectedCaustics,
+  // postfx/reflected_caustics.h), timed as Pass::ReflectedCaustics. Without it nothing above the
+  // level receives light from the plugin's seabed passes.
+  ReflectedCaustics = 1u << 10,
   // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
   PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
 };

@@ -57,6 +57,8 @@ bool FramePlan::runs(Pass pass) const {
       return objects;
     case Pass::LocalWater:
       return localWater;
+    case Pass::ReflectedCaustics:
+      return reflected;
   }
   return false;
 }

@@ -22,6 +22,8 @@ struct FramePlan {
   // or the god rays.
   bool localWater = false;
   bool godRays = false;
+  // The reflected caustics above the water (Feature::ReflectedCaustics): field and pass.
+  bool reflected = false;
   bool objects = false;  // the sun's object caustics
   // The local lights whose object caustics run (indices into ObjectCausticsFrame::lights, in
   // order), and why each of the context's light slots does not.

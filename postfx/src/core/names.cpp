@@ -19,6 +19,8 @@ const char* toString(Pass pass) noexcept {
       return "object_caustics";
     case Pass::LocalWater:
       return "local_water";
+    case Pass::ReflectedCaustics:
+      return "reflected_caustics";
   }
   return "unknown";
 }

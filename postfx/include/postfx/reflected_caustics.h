@@ -1,0 +1,61 @@
+#pragma once
+// Reflected caustics above the water (Feature::ReflectedCaustics): the sunlight the waves mirror
+// upward, the moving bright network on a hull, the underside of a pier, a harbour wall or a cliff.
+// Per view (like WavefrontAreaRatio's window, it follows the view's camera), a grid over the
+// water around the camera reflects the sun (law of reflection through the waves' own normals and
+// heights, Fresnel reflectance per grid point) onto heightLayers horizontal layers above the level, folds summed as the wavefront
+// area ratio sums them under the water. A pixel above the level then receives
+//     albedo * E_sun * intensity * R(theta_sun) * I * max(n . l_r, 0) * visibility,
+// l_r the flat-water reflected sun reversed (from the receiver down toward the water), R the
+// unpolarised Fresnel reflectance of flat water at the sun's incidence and I the field's
+// irradiance relative to flat water's mirror light (1 over a flat sea, its mean over any sea).
+// Surfaces facing up, under the water, on the sky or facing away from the water get none.
+// visibility: with Feature::ShadowMask, the host's sun shadow map at the point of the water
+// the receiver's light was reflected from (flat water's), so water in the shade of a pier or
+// hull mirrors nothing onto its underside; without it, 1. The path from the water up to the
+// receiver is taken as clear (the receiver faces the water and is the first surface the mirror
+// ray meets in the usual hull, pier and wall; an object between them is not seen).
+// Composition: the light is ADDED into FrameDesc::target like the underwater caustics.
+// docs/integration.md, "Reflected caustics".
+#include <postfx/range.h>
+#include <postfx/settings.h>
+
+namespace postfx {
+
+inline constexpr Range<float> kReflectedHeightRange{0.01f, 1e4f};  // m above the level
+inline constexpr Range<int> kReflectedLayersRange{1, 8};
+
+struct ReflectedCausticsSettings {
+  // Off: the pass is skipped (0 ms), nothing is allocated.
+  bool enabled = true;
+  // Multiplier on the reflected light, kIntensityRange; 1 is physical, 0 skips the pass.
+  float intensity = 1.0f;
+  // true: the whole mirror light, its flat-water mean R * E included. false: only the waves'
+  // modulation of it, R * E * (I - 1) (it darkens too), for a host whose lighting already holds
+  // the sun mirrored by a flat sea (a planar-reflection light, a baked water bounce): adding
+  // the mean again would count the mirrored sun twice.
+  bool includeMirrorMean = true;
+  // Side of the square window around the camera the pattern is computed over (m),
+  // kWindowSizeRange; snapped to whole texels in world space. Beyond it, across the outer
+  // eighth, the pattern fades to the flat mean (the mirror light stays).
+  float windowSize = 24.0f;
+  // Water grid cells and irradiance texels per side of the window, kGridResolutionRange. A
+  // mirror deviates light by twice the slope (refraction by a quarter of it), so reflected lines
+  // are sharp and fine: at the default 24 m / 512 a cell is 5.9 cm, ripples shorter than ~4
+  // cells are carried as a blur of their slopes instead (the landing spread). Cost grows with
+  // its square.
+  int gridResolution = 512;
+  // Horizontal receiver layers above the level, kReflectedLayersRange: layer k at
+  // maxHeight * ((k + 1) / heightLayers)^2 (the pattern changes fastest near the water, where
+  // short waves focus). A receiver between two layers interpolates them along the mirror ray.
+  int heightLayers = 6;
+  // Height of the highest layer above the level (m), kReflectedHeightRange. Above it the
+  // pattern fades to its mean over a further half of it: up there the waves' deviations have
+  // spread each point's light over more than the pattern's scale.
+  float maxHeight = 6.0f;
+  // Irradiance clamp relative to flat water's mirror light, kMaxIrradianceRange (folds focus to
+  // infinity).
+  float maxIrradiance = 32.0f;
+};
+
+}  // namespace postfx
