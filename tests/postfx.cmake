@@ -22,6 +22,12 @@ postfx_add_test(postfx_gl_tests
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
 
+postfx_add_test(postfx_reflected_caustics_tests
+  SOURCES gl/postfx_reflected_caustics_test.cpp
+  LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy
+  GL)
+target_include_directories(postfx_reflected_caustics_tests PRIVATE ${_postfx_private})
+
 # The scene fixtures, the CPU ray tracer and the map measurements come from ocean_reference
 # (sample_app/reference), which the report's object-caustics rows use too.
 postfx_add_test(postfx_object_caustics_tests

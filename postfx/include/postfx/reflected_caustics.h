@@ -3,8 +3,9 @@
 // upward, the moving bright network on a hull, the underside of a pier, a harbour wall or a cliff.
 // Per view (like WavefrontAreaRatio's window, it follows the view's camera), a grid over the
 // water around the camera reflects the sun (law of reflection through the waves' own normals and
-// heights, Fresnel reflectance per grid point) onto heightLayers horizontal layers above the level, folds summed as the wavefront
-// area ratio sums them under the water. A pixel above the level then receives
+// heights, Fresnel reflectance per grid point) onto heightLayers horizontal layers above the level,
+// folds summed as the wavefront area ratio sums them under the water. A pixel above the level then
+// receives
 //     albedo * E_sun * intensity * R(theta_sun) * I * max(n . l_r, 0) * visibility,
 // l_r the flat-water reflected sun reversed (from the receiver down toward the water), R the
 // unpolarised Fresnel reflectance of flat water at the sun's incidence and I the field's

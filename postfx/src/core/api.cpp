@@ -97,6 +97,11 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
       if (r != Result::Ok) return r;
       present[int(Pass::LocalWater)] = true;
     }
+    if (hasFeature(desc.features, Feature::ReflectedCaustics)) {
+      r = context->reflected.init(desc, createError);
+      if (r != Result::Ok) return r;
+      present[int(Pass::ReflectedCaustics)] = true;
+    }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
       r = context->objectCaustics.init(detail::shaderDefines(desc), desc.maxLocalLights,
                                        createError);

@@ -15,6 +15,7 @@
 #include "god_rays/godrays_constants.h"
 #include "god_rays/godrays_pass.h"
 #include "object_caustics/object_caustics_pass.h"
+#include "reflected_caustics/reflected_caustics_pass.h"
 #include "seabed_caustics/caustics_pass.h"
 #include "seabed_caustics/local_water_pass.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
@@ -32,7 +33,8 @@ struct Context {
   // Compiled the first time a frame uses the TileIrradiance model.
   detail::TileIrradiancePass tileIrradiance;
   bool tileIrradianceReady = false;
-  detail::LocalWaterPass localWater;  // Feature::LocalWater only
+  detail::LocalWaterPass localWater;        // Feature::LocalWater only
+  detail::ReflectedCausticsPass reflected;  // Feature::ReflectedCaustics only
   detail::ObjectCausticsPass objectCaustics;
   // The shared passes: Pass::TileIrradiance, LocalWater, ObjectCaustics, the lights.
   detail::GpuTimers timers;

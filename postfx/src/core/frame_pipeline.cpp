@@ -71,6 +71,7 @@ struct SharedWork {
   bool tile = false;
   bool localWater = false;
   bool wavefrontAreaRatio = false;
+  bool reflected = false;  // some view draws the reflected caustics
   const FramePlan* objectPlan = nullptr;
   ObjectCausticsViews objects;
   std::vector<ObjectCausticsTarget> targets;
@@ -200,12 +201,13 @@ class HeldTargets {
   HeldTargets(const HeldTargets&) = delete;
   HeldTargets& operator=(const HeldTargets&) = delete;
 
-  bool caustics = false, godRays = false, objects = false;
+  bool caustics = false, godRays = false, objects = false, reflected = false;
   void release() {
+    if (reflected) context_.reflected.finish();
     if (godRays) context_.godRays.finish();
     if (caustics) context_.caustics.finish();
     if (objects) context_.objectCaustics.finishDraws();
-    caustics = godRays = objects = false;
+    caustics = godRays = objects = reflected = false;
   }
 
  private:
@@ -226,6 +228,11 @@ Result prepareView(Context& context, ViewWork& w, HeldTargets& held, std::string
         context.godRays.prepare(w.frame, w.textures, w.godRays, w.view->godRays, error);
     if (r != Result::Ok) return r;
     held.godRays = true;
+  }
+  if (w.plan.reflected) {
+    const Result r = context.reflected.prepare(w.frame, error);
+    if (r != Result::Ok) return r;
+    held.reflected = true;
   }
   return Result::Ok;
 }
@@ -248,6 +255,12 @@ Result reserve(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTa
   if (s.tile) {
     r = context.tileIrradiance.reserve(first, error);
     if (r != Result::Ok) return r;
+  }
+  if (s.reflected) {
+    r = context.reflected.reserve(first, error);
+    if (r != Result::Ok) return r;
+  } else if (context.reflected.ready()) {
+    context.reflected.release();  // a frame without the pass holds none of its memory
   }
   if (s.localWater) {
     r = context.localWater.reserve(first, error);
@@ -336,6 +349,13 @@ void recordView(Context& context, ViewWork& w, const SharedWork& s, bool& tileDr
   if (plan.godRays) {
     timedPass(timers, plan.floor, Pass::GodRays, "postfx.god_rays",
               [&] { context.godRays.draw(w.frame, w.tile.godRays); });
+  }
+  if (plan.reflected) {
+    // Its field samples the water through the seabed state's units; its light reads that
+    // state's block and G-buffer.
+    context.caustics.bindState(w.frame, w.textures, 0);
+    timedPass(timers, plan.floor, Pass::ReflectedCaustics, "postfx.reflected_caustics",
+              [&] { context.reflected.draw(w.frame, w.textures); });
   }
   held.release();  // this view is done with its target
 }
@@ -442,6 +462,7 @@ Result dispatchFrame(Context& context, const FrameDesc& frame, std::span<const V
     s.tile = s.tile || w.plan.tile;
     s.localWater = s.localWater || w.plan.localWater;
     s.wavefrontAreaRatio = s.wavefrontAreaRatio || w.plan.wavefrontAreaRatio;
+    s.reflected = s.reflected || w.plan.reflected;
     r = prefixed(buildViewBlocks(context, w, error), error, static_cast<int>(i), listed);
     if (r != Result::Ok) return r;
     memory.push_back({&w.frame, w.textures.targetWidth, w.textures.targetHeight, w.textures.width,

@@ -6,6 +6,7 @@
 #include "core/visibility.h"
 #include "object_caustics/object_caustics_frame.h"
 #include "object_caustics/object_caustics_light_frame.h"
+#include "reflected_caustics/reflected_caustics_pass.h"
 #include "seabed_caustics/caustics_constants.h"
 
 namespace postfx::detail {
@@ -74,6 +75,7 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
   plan.tile = fieldNeeded && tileIrradianceActive(frame);
   plan.localWater = fieldNeeded && hasFeature(context.desc.features, Feature::LocalWater) &&
                     frame.water.localWaterCount > 0;
+  plan.reflected = reflectedCausticsHaveWork(context.desc, frame);
   plan.objects = objectCausticsHaveWork(context, frame);
   if (hasFeature(context.desc.features, Feature::ObjectCaustics)) {
     for (int i = 0; i < context.desc.maxLocalLights; ++i) {
@@ -83,7 +85,7 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
     }
   }
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
-  plan.fullScreen = plan.caustics || plan.godRays || (plan.objectMaps() && plan.floor);
+  plan.fullScreen = plan.caustics || plan.godRays || plan.reflected || (plan.objectMaps() && plan.floor);
   return plan;
 }
 

@@ -3,6 +3,7 @@
 #include <postfx/testing.h>
 
 #include "god_rays/godrays_constants.h"
+#include "reflected_caustics/reflected_layout.h"
 #include "seabed_caustics/local_water_layout.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
@@ -18,9 +19,10 @@ std::uint64_t square(int side) {
 // view's own (summed over the views); the others are shared.
 struct Terms {
   std::uint64_t raw = 0, godRays = 0, lookups = 0, irradiance = 0, tile = 0, casterMaps = 0,
-                causticMap = 0, localWater = 0;
+                causticMap = 0, localWater = 0, reflected = 0;
   std::uint64_t total() const {
-    return raw + godRays + lookups + irradiance + tile + casterMaps + causticMap + localWater;
+    return raw + godRays + lookups + irradiance + tile + casterMaps + causticMap + localWater +
+           reflected;
   }
 };
 
@@ -42,12 +44,13 @@ void addViewTerms(const CreateDesc& create, const ViewMemory& v, Terms& t) {
 
 Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
   Terms t;
-  bool irradiance = false, tile = false, localWater = false;
+  bool irradiance = false, tile = false, localWater = false, reflected = false;
   for (const ViewMemory& v : views) {
     addViewTerms(create, v, t);
     irradiance = irradiance || v.plan->wavefrontAreaRatio;
     tile = tile || v.plan->tile;
     localWater = localWater || v.plan->localWater;
+    reflected = reflected || v.plan->reflected;
   }
   // Exactly what the passes allocate (their allocatedBytes() asks GL; a test compares). The
   // tile irradiance also runs in WavefrontAreaRatio frames: it continues the window. The
@@ -59,6 +62,10 @@ Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
                                            frame.caustics.depthLayers, landingSpreadOn(frame));
   if (tile) t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
   if (localWater) t.localWater = localWaterBytes(frame);
+  // One field, drawn by each view in turn.
+  if (reflected)
+    t.reflected = reflectedFieldBytes(frame.reflectedCaustics.gridResolution,
+                                      frame.reflectedCaustics.heightLayers);
   if (passes.objectMaps()) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
@@ -105,7 +112,9 @@ Result checkFrameMemory(const CreateDesc& create, std::span<const ViewMemory> vi
        "the tile irradiance (caustics.tileResolution, tileDepthLayers, tileLookupResolution)"},
       {t.casterMaps, "the caster maps (objectCaustics.settings.gridSize)"},
       {t.causticMap, "the caustic map and its history (objectCaustics.settings.mapSize)"},
-      {t.localWater, "the local water layers (water.localWater's gridResolution, depthLayers)"}};
+      {t.localWater, "the local water layers (water.localWater's gridResolution, depthLayers)"},
+      {t.reflected,
+       "the reflected light's layers (reflectedCaustics.gridResolution, heightLayers)"}};
   for (const auto& [bytes, name] : others)
     if (bytes > most) {
       most = bytes;

@@ -9,6 +9,7 @@ namespace postfx {
 #include "postfx/god_rays/postfx_godrays.h"
 #include "postfx/god_rays/postfx_godrays_block.h"
 #include "postfx/object_caustics/postfx_object_caustics.h"
+#include "postfx/reflected_caustics/postfx_reflected_caustics.h"
 #include "postfx/seabed_caustics/postfx_caustics.h"
 #include "postfx/seabed_caustics/postfx_caustics_block.h"
 #include "postfx/seabed_caustics/postfx_local_water.h"

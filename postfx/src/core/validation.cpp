@@ -3,6 +3,7 @@
 #include "core/convention_checks.h"
 #include "core/gl_enum_names.h"
 #include "god_rays/godrays_validation.h"
+#include "reflected_caustics/reflected_validation.h"
 #include "seabed_caustics/caustics_validation.h"
 #include "seabed_caustics/local_water_validation.h"
 
@@ -180,7 +181,7 @@ Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& 
 }
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (static_cast<std::uint32_t>(desc.features) >= (1u << 10)) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 11)) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }
@@ -329,6 +330,10 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
         "shafts a second time (use ViewExtinction::Plugin and fog before dispatch)");
   const Result r = validateCausticsSettings(create, frame.caustics, error);
   if (r != Result::Ok) return r;
+  if (hasFeature(create.features, Feature::ReflectedCaustics)) {
+    const Result reflected = validateReflectedCaustics(frame.reflectedCaustics, error);
+    if (reflected != Result::Ok) return reflected;
+  }
   if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }
@@ -368,7 +373,8 @@ Result validateFrameTextures(const CreateDesc& create, const FrameDesc& frame,
   if (r != Result::Ok) return r;
   const bool waterNeeded =
       (hasFeature(create.features, Feature::Caustics) && frame.caustics.enabled) ||
-      (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled);
+      (hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled) ||
+      (hasFeature(create.features, Feature::ReflectedCaustics) && frame.reflectedCaustics.enabled);
   if (!waterNeeded && frame.water.texture.texture == 0) {
     out.x = out.y = 0;
     out.width = out.targetWidth = target.width;

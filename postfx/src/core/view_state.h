@@ -32,7 +32,7 @@ namespace detail {
 // (the context's).
 constexpr bool isViewPass(Pass pass) {
   return pass == Pass::WavefrontAreaRatio || pass == Pass::Floor || pass == Pass::Caustics ||
-         pass == Pass::GodRays;
+         pass == Pass::GodRays || pass == Pass::ReflectedCaustics;
 }
 
 // Creates the view's timers for the passes the context has (`present`, indexed by Pass).

@@ -1,5 +1,5 @@
 #pragma once
-// The CPU test that lets dispatch() skip the caustics pass when it has nothing to do.
+// The CPU tests that let dispatch() skip the caustics passes when they have nothing to do.
 #include <glm/glm.hpp>
 
 #include <postfx/conventions.h>
@@ -11,6 +11,9 @@ namespace postfx::detail {
 // depth along a downward edge). `levelRelative` = water level - camera y (m). Conservative: a
 // true result may still find every pixel above the water, a false one never misses a pixel.
 bool frustumReachesBelowWater(const glm::dmat3& viewToWorld, const glm::dmat4& projection,
+                              DepthConvention depthConvention, double levelRelative);
+// The same above the level: the camera is at or above it, or a frustum edge climbs to it.
+bool frustumReachesAboveWater(const glm::dmat3& viewToWorld, const glm::dmat4& projection,
                               DepthConvention depthConvention, double levelRelative);
 
 }  // namespace postfx::detail

@@ -1,0 +1,86 @@
+#include "reflected_caustics/reflected_caustics_pass.h"
+
+#include <cmath>
+
+#include <glkit/texture.h>
+
+#include "core/frame_geometry.h"
+#include "core/host_target.h"
+#include "core/shader_library.h"
+#include "core/shared_math.h"
+#include "core/visibility.h"
+#include "seabed_caustics/caustics_pass.h"
+
+namespace postfx::detail {
+
+Result ReflectedCausticsPass::init(const CreateDesc& desc, std::string& error) {
+  Result r = field_.init(shaderDefines(desc), error);
+  if (r != Result::Ok) return r;
+  // Its framebuffer holds the host's target alone: no raw output.
+  r = buildPrograms(shaderDefines(desc),
+                    {{light_,
+                      "postfx.reflected_caustics.light",
+                      {kFullScreenVertex,
+                       {GL_FRAGMENT_SHADER, "postfx/reflected_caustics/reflected_caustics.frag"}},
+                      "#undef POSTFX_RAW_OUTPUT\n#define POSTFX_RAW_OUTPUT 0\n"}},
+                    error);
+  if (r != Result::Ok) return r;
+  framebuffer_ = glkit::createFramebuffer("postfx.reflected_caustics.target");
+  sampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
+                                  "postfx.sampler.reflected_caustics");
+  return Result::Ok;
+}
+
+Result ReflectedCausticsPass::prepare(const FrameDesc& frame, std::string& error) {
+  if (!attachHostTarget(framebuffer_.id(), frame.target.texture, "reflected caustics", error)) {
+    finish();
+    return Result::GlError;
+  }
+  return Result::Ok;
+}
+
+void ReflectedCausticsPass::finish() {
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
+void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  field_.draw(frame, textures);
+  const ReflectedLayout& l = field_.layout();
+  const ReflectedCausticsSettings& s = frame.reflectedCaustics;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const float flatR = shared::fresnelReflectance(static_cast<float>(sun.y), frame.water.ior);
+  const glm::dvec2 centre = l.windowOrigin + 0.5 * l.windowSize -
+                            glm::dvec2(frame.camera.position.x, frame.camera.position.z);
+  float heights[8] = {};
+  for (int k = 0; k < l.layers; ++k) heights[k] = static_cast<float>(l.height[k]);
+  const glm::vec3 scale = frame.sun.irradiance * (s.intensity * flatR);
+  const GLuint program = light_.id();
+  glProgramUniform4f(program, 0, static_cast<float>(centre.x), static_cast<float>(centre.y),
+                     static_cast<float>(1.0 / l.windowSize), static_cast<float>(l.layers));
+  glProgramUniform4fv(program, 1, 2, heights);
+  glProgramUniform4f(program, 3, static_cast<float>(sun.x), static_cast<float>(-sun.y),
+                     static_cast<float>(sun.z), s.maxHeight);
+  glProgramUniform4f(program, 4, scale.x, scale.y, scale.z, s.includeMirrorMean ? 1.0f : 0.0f);
+  glProgramUniform2f(program, 5, static_cast<float>(l.rise.x), static_cast<float>(l.rise.y));
+
+  // Back to the view's rectangle and the seabed state's full-screen vertex array.
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  glViewportIndexedf(0, static_cast<float>(textures.x), static_cast<float>(textures.y),
+                     static_cast<float>(textures.width), static_cast<float>(textures.height));
+  glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, field_.texture());
+  glBindSampler(POSTFX_UNIT_IRRADIANCE, sampler_.id());
+  glUseProgram(program);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+bool reflectedCausticsHaveWork(const CreateDesc& create, const FrameDesc& frame) {
+  const ReflectedCausticsSettings& s = frame.reflectedCaustics;
+  if (!hasFeature(create.features, Feature::ReflectedCaustics) || !s.enabled ||
+      !(s.intensity > 0.0f) || !(frame.sun.direction.y > 0.0) || frame.water.texture.texture == 0)
+    return false;
+  return frustumReachesAboveWater(viewToWorldRotation(frame.camera.view), frame.camera.projection,
+                                  create.depthConvention,
+                                  frame.water.level - frame.camera.position.y);
+}
+
+}  // namespace postfx::detail

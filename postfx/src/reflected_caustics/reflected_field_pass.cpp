@@ -1,0 +1,146 @@
+#include "reflected_caustics/reflected_field_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glkit/texture.h>
+
+#include "core/block_check.h"
+#include "core/frame_geometry.h"
+#include "core/gl_sizes.h"
+#include "core/shader_library.h"
+#include "core/shared_math.h"
+#include "seabed_caustics/wavefront_area_ratio_layout.h"
+
+namespace postfx::detail {
+
+Result ReflectedFieldPass::init(const std::string& defines, std::string& error) {
+  // The triangle and point draws are the wavefront area ratio's own: they read grid points in
+  // texels, whatever placed them.
+  const Result r = buildPrograms(
+      defines,
+      {{vertices_,
+        "postfx.reflected_caustics.grid",
+        {{GL_COMPUTE_SHADER, "postfx/reflected_caustics/reflected_light_vertices.comp"}}},
+       {triangles_,
+        "postfx.reflected_caustics.triangles",
+        {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.frag"}}},
+       {points_,
+        "postfx.reflected_caustics.points",
+        {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.vert"},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
+      error);
+  if (r != Result::Ok) return r;
+  framebuffer_ = glkit::createFramebuffer("postfx.reflected_caustics.framebuffer");
+  vertexArray_ = glkit::createVertexArray("postfx.reflected_caustics.vao");
+  clampCount_ = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                    "postfx.reflected_caustics.clamp_count");
+  return Result::Ok;
+}
+
+Result ReflectedFieldPass::reserve(const FrameDesc& frame, std::string& error) {
+  layout_ = reflectedLayout(frame);
+  const int resolution = layout_.resolution, layers = layout_.layers;
+  if (!(texture_ && textureResolution_ == resolution && textureLayers_ == layers)) {
+    texture_.reset();  // the old size goes first: never two allocated at once
+    texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.reflected_caustics.irradiance");
+    // R32F with mips, as the refracted window's: exact additive sums, footprint-filtered lookups.
+    glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(resolution), GL_R32F, resolution,
+                       resolution, layers);
+    textureResolution_ = resolution;
+    textureLayers_ = layers;
+  }
+  const std::uint64_t side = std::uint64_t(layout_.cells) + 1;
+  const bool points = gridPoints_.ensure(side * side, "postfx.reflected_caustics.grid_points");
+  if (glkit::storedWidth(texture_) != resolution || !points) {
+    textureResolution_ = 0;
+    error =
+        "reflectedCaustics: the driver could not allocate the reflected light's layers "
+        "(gridResolution " +
+        std::to_string(resolution) + ")";
+    return Result::OutOfMemory;
+  }
+  return Result::Ok;
+}
+
+void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+  layout_ = reflectedLayout(frame);
+  const ReflectedLayout& l = layout_;
+  const float zero = 0.0f;
+  glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+  const GLuint zeros[2] = {0, 0};  // never read, kept from wrapping around
+  glNamedBufferSubData(clampCount_.id(), 0, sizeof(zeros), zeros);
+
+  const int pointsPerSide = l.cells + 1;
+  const WaterSurface& water = frame.water;
+  const glm::dvec3 sun = glm::normalize(frame.sun.direction);
+  const double flatR = shared::fresnelReflectance(static_cast<float>(sun.y), water.ior);
+  const double texelsPerMetre = l.resolution / l.windowSize;
+  // Triangles whose landing area is under half a texel go to the point draw, as the refracted
+  // window's (WavefrontAreaRatioPass::draw says why half).
+  const double cellTexels = l.cell * texelsPerMetre;
+  const float pointRatio = static_cast<float>(0.5 * cellTexels * cellTexels / 0.5);
+  const GLuint compute = vertices_.id();
+  glProgramUniform1i(compute, 4, water.cascadeCount);
+  glProgramUniform4f(compute, 6, static_cast<float>(sun.x), static_cast<float>(sun.y),
+                     static_cast<float>(sun.z), water.ior);
+  glProgramUniform4f(compute, 7, saturatedFloat(flatR > 0.0 ? 1.0 / flatR : 0.0),
+                     static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
+  glProgramUniform1i(compute, 9, pointsPerSide);
+  for (GLuint program : {triangles_.id(), points_.id()}) {
+    glProgramUniform1f(program, 8, frame.reflectedCaustics.maxIrradiance);
+    glProgramUniform1i(program, 9, pointsPerSide);
+    glProgramUniform2f(program, 10, static_cast<float>(l.resolution), pointRatio);
+  }
+
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(l.resolution),
+                     static_cast<float>(l.resolution));
+  glBindVertexArray(vertexArray_.id());
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPoints_.view());
+  glBindSampler(POSTFX_UNIT_GRID_POINTS, 0);
+  const int texelsPerSide = std::max(textures.water.width, textures.water.height);
+  const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
+  for (int k = 0; k < l.layers; ++k) {
+    glm::vec4 cascades[kMaxCascades];
+    for (int c = 0; c < water.cascadeCount; ++c) {
+      const double tile = water.tileSize[c];
+      const glm::dvec2 fromOrigin = l.gridOrigin[k] - water.origin;
+      // The mip level whose texel matches the grid spacing: finer ripples cannot be carried.
+      const double lod = std::max(0.0, std::log2(l.cell * texelsPerSide / tile));
+      cascades[c] = glm::vec4(tileFraction(fromOrigin.x, tile), tileFraction(fromOrigin.y, tile),
+                              l.cell / tile, lod);
+    }
+    glProgramUniform4fv(compute, 0, water.cascadeCount, &cascades[0].x);
+    const glm::dvec2 gridLocal = l.gridOrigin[k] - l.windowOrigin;
+    glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
+                       static_cast<float>(l.cell), static_cast<float>(l.height[k]));
+    glUseProgram(compute);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
+    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
+    glUseProgram(triangles_.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);
+    glUseProgram(points_.id());
+    glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
+  }
+  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  glGenerateTextureMipmap(texture_.id());
+}
+
+void ReflectedFieldPass::release() {
+  texture_.reset();
+  textureResolution_ = textureLayers_ = 0;
+  gridPoints_.reset();
+}
+
+std::uint64_t ReflectedFieldPass::allocatedBytes() const {
+  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.buffer());
+}
+
+}  // namespace postfx::detail

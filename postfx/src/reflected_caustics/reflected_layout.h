@@ -1,0 +1,41 @@
+#pragma once
+// Where the reflected light field lies this frame, computed in double from the FrameDesc: the
+// receiver window (camera-centred, snapped to whole texels of its coarsest filtered level so the
+// pattern does not swim), each height layer's water grid (snapped to whole cells, moved against
+// the mirror ray's drift so its light lands in the window) and the layers' heights.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include <postfx/postfx.h>
+
+namespace postfx::detail {
+
+inline constexpr int kMaxReflectedLayers = 8;
+
+struct ReflectedLayout {
+  int resolution = 0;  // texels and grid cells' nominal count per side
+  int layers = 0;
+  double windowSize = 0.0, texel = 0.0;
+  glm::dvec2 windowOrigin{0.0};  // world xz of texel (0, 0)'s corner
+  double cell = 0.0;             // grid spacing (m)
+  int cells = 0;                 // grid cells per side (resolution + 1: snapping headroom)
+  double height[kMaxReflectedLayers] = {};
+  glm::dvec2 gridOrigin[kMaxReflectedLayers] = {};  // world xz of grid vertex (0, 0)
+  // The flat mirror ray's horizontal drift per metre of height: -towardSun.xz / towardSun.y.
+  glm::dvec2 rise{0.0};
+};
+
+// Height of layer k of `layers` (m above the level): denser near the water, where short waves
+// focus their light.
+double reflectedLayerHeight(int k, int layers, double maxHeight);
+
+// Requires validated settings and a sun above the horizon.
+ReflectedLayout reflectedLayout(const FrameDesc& frame);
+
+// GPU memory the field allocates for `gridResolution` and `layers`: the R32F layers with their
+// mip levels and the grid points (two vec4 per point). The memory estimate and
+// ReflectedFieldPass::allocatedBytes() must agree (a test checks).
+std::uint64_t reflectedFieldBytes(int gridResolution, int layers);
+
+}  // namespace postfx::detail

@@ -1,0 +1,56 @@
+#version 450 core
+// Reflected caustics, step 1 of 3: every water grid point's mirrored sun ray onto one height layer
+// above the level, into the buffer the wavefront area ratio's triangle and point draws read
+// (the same two vec4s per point: (landing xy, beam xy) in irradiance texels from the window
+// corner, then (Fresnel reflectance relative to flat water's, 0, 0, 0)). The draws then add the
+// beam area over the landing area, folds summed, exactly as under the water.
+// Compile-time switch: POSTFX_WATER_SINGLE_2D.
+#include "shared/common.h"
+#include "postfx/common/postfx_bindings.h"
+#include "postfx/seabed_caustics/postfx_caustics_block.h"  // POSTFX_MAX_CASCADES (its block goes unused here)
+#include "postfx/seabed_caustics/postfx_caustics.h"
+#include "postfx/reflected_caustics/postfx_reflected_caustics.h"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+#if POSTFX_WATER_SINGLE_2D
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
+#define WATER_COORD(uv, layer) (uv)
+#else
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
+#define WATER_COORD(uv, layer) vec3(uv, float(layer))
+#endif
+
+// Per cascade: xy = uv of grid point (0, 0) (reduced modulo the tile in double), z = uv per grid
+// cell, w = mip level matching the grid spacing (what the grid cannot carry is low-passed away
+// rather than aliased into false lines).
+layout(location = 0) uniform vec4 cascadeGrid[POSTFX_MAX_CASCADES];
+layout(location = 4) uniform int cascadeCount;
+// xy: grid point (0, 0) relative to the window corner (m); z: grid spacing (m); w: the layer's
+// height above the level (m).
+layout(location = 5) uniform vec4 grid;
+layout(location = 6) uniform vec4 towardSun;  // xyz: unit vector to the sun; w: IOR
+// x: 1 / flat-water reflectance; y: texels per metre
+layout(location = 7) uniform vec4 scales;
+layout(location = 9) uniform int pointsPerSide;
+
+layout(std430, binding = POSTFX_STORAGE_GRID_POINTS) writeonly buffer GridPoints {
+  vec4 gridPoints[];
+};
+
+void main() {
+  ivec2 index = ivec2(gl_GlobalInvocationID.xy);
+  if (index.x >= pointsPerSide || index.y >= pointsPerSide) return;
+  vec2 local = grid.xy + vec2(index) * grid.z;
+  vec3 surface = vec3(0.0);
+  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
+    if (c >= cascadeCount) break;
+    vec2 uv = cascadeGrid[c].xy + vec2(index) * cascadeGrid[c].z;
+    surface += textureLod(waterSurface, WATER_COORD(uv, c), cascadeGrid[c].w).rgb;
+  }
+  vec3 hit = reflectToLayer(local, surface, towardSun.xyz, towardSun.w, scales.x, grid.w);
+  vec2 beam = beamPosition(local, surface.z, towardSun.xz / towardSun.y);
+  int i = 2 * (index.y * pointsPerSide + index.x);
+  gridPoints[i] = vec4(hit.xy, beam) * scales.y;
+  gridPoints[i + 1] = vec4(hit.z, 0.0, 0.0, 0.0);
+}

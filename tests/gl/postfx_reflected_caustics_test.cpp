@@ -1,0 +1,392 @@
+// Reflected caustics above the water (postfx/reflected_caustics.h): physics and contracts. Flat
+// water mirrors exactly R(theta_sun) E onto a surface facing the mirrored sun, whatever its
+// height; waves keep that mean and modulate it; the reflected and transmitted fields together
+// carry the incident flux; nothing under the water, on the sky, on faces turned up or away, or
+// in the shade a pier casts on the water; the feature off (or disabled) changes nothing, bit for
+// bit; bad settings are refused with nothing drawn; the memory estimate is what GL holds.
+#include <gtest/gtest.h>
+#include <postfx/testing.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/context.h"
+#include "core/frame_plan.h"
+#include "core/gl_sizes.h"
+#include "core/memory_estimate.h"
+#include "core/shared_math.h"
+#include "gl_fixture.h"
+#include "postfx_scene.h"
+#include "postfx_test_util.h"
+#include "reflected_caustics/reflected_layout.h"
+#include "synthetic_gbuffer.h"
+
+namespace {
+
+using ocean::validation::SyntheticGbuffer;
+using ocean::validation::SyntheticScene;
+using ocean::validation::SyntheticSurface;
+
+class PostfxReflectedCausticsTest : public testsupport::GlTest {};
+
+constexpr float kIor = 1.333f;
+constexpr int kWidth = 96, kHeight = 64;
+constexpr glm::vec3 kSunIrradiance{2.0f, 1.5f, 1.0f};
+constexpr float kAlbedo = 0.5f;
+
+// The sun 35 degrees up, from +z (the mirrored sun then travels toward -z and up).
+glm::dvec3 towardSun() {
+  const double e = glm::radians(35.0);
+  return glm::dvec3(0.0, std::sin(e), std::cos(e));
+}
+
+glm::dvec3 mirrorReversed() {  // l_r: from a receiver down toward the water
+  const glm::dvec3 s = towardSun();
+  return glm::dvec3(s.x, -s.y, s.z);
+}
+
+// Which surface of receiverScene() a pixel shows (SyntheticScene::surfaces order).
+enum SurfaceIndex { kCeiling = 0, kDeck = 1, kSeabed = 2, kWall = 3, kSideWall = 4 };
+
+glm::dmat4 reverseZProjection(double fovYDegrees) {
+  const double fov = glm::radians(fovYDegrees), aspect = double(kWidth) / kHeight, n = 0.05,
+               f = 200.0;
+  glm::dmat4 p(0.0);
+  const double t = 1.0 / std::tan(fov * 0.5);
+  p[0][0] = t / aspect;
+  p[1][1] = t;
+  p[2][2] = n / (f - n);
+  p[2][3] = -1.0;
+  p[3][2] = f * n / (f - n);
+  return p;
+}
+
+// A camera `cameraY` above the level (world y 0) at the origin, looking along `look`: the
+// underside of a pier deck 2 m up (facing down) from z = 0 to -7, its top 2.2 m up (facing up),
+// a quay wall at z = -9 facing +z (toward the sun) from below the seabed up to 5 m, the seabed
+// 3 m down, and a side wall at x = -4 turned away from the water's light (facing +x and -z);
+// sky above the wall. Positions are camera-relative.
+SyntheticScene receiverScene(const glm::dvec3& look, double cameraY) {
+  SyntheticScene s;
+  s.width = kWidth;
+  s.height = kHeight;
+  s.view =
+      glm::dmat4(glm::lookAt(glm::dvec3(0.0), glm::normalize(look), glm::dvec3(0.0, 1.0, 0.0)));
+  s.projection = reverseZProjection(70.0);
+  s.albedoFormat = GL_RGBA16F;
+  s.targetFormat = GL_RGBA32F;
+  s.maxDistance = 199.0;
+  SyntheticSurface ceiling;
+  ceiling.point = {0.0, 2.0 - cameraY, 0.0};
+  ceiling.normal = {0.0, -1.0, 0.0};
+  ceiling.keep = {0.0, 0.0, 1.0, 7.0};  // z >= -7
+  ceiling.albedo = glm::vec3(kAlbedo);
+  SyntheticSurface deck = ceiling;
+  deck.point.y = 2.2 - cameraY;
+  deck.normal = {0.0, 1.0, 0.0};
+  SyntheticSurface seabed;
+  seabed.point = {0.0, -3.0 - cameraY, 0.0};
+  seabed.albedo = glm::vec3(kAlbedo);
+  SyntheticSurface wall;
+  wall.point = {0.0, 0.0, -9.0};
+  wall.normal = {0.0, 0.0, 1.0};
+  wall.keep = {0.0, -1.0, 0.0, 5.0 - cameraY};  // y <= 5
+  wall.albedo = glm::vec3(kAlbedo);
+  SyntheticSurface side;
+  side.point = {-4.0, 0.0, 0.0};
+  side.normal = glm::normalize(glm::dvec3(0.8, 0.0, -0.6));
+  side.keep = {0.0, -1.0, 0.0, 5.0 - cameraY};
+  side.albedo = glm::vec3(kAlbedo);
+  s.surfaces = {ceiling, deck, seabed, wall, side};
+  return s;
+}
+
+// h = sum of A sin(k . x + phase) over a few waves with whole periods per `tile` (seamless):
+// slopes, height (m) per texel of a size^2 single-cascade texture.
+GLuint makeWaves(int size, double tile, double amplitude) {
+  std::vector<glm::vec4> texels(static_cast<std::size_t>(size) * size);
+  const double waves[][4] = {{4, 1, 1.0, 0.0}, {-2, 5, 0.6, 1.3}, {7, -3, 0.35, 2.1}};
+  const double twoPi = 6.283185307179586;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      const glm::dvec2 x = (glm::dvec2(i, j) + 0.5) * (tile / size);
+      glm::dvec3 h(0.0);
+      for (const auto& w : waves) {
+        const glm::dvec2 k = twoPi / tile * glm::dvec2(w[0], w[1]);
+        const double a = amplitude * w[2], phase = glm::dot(k, x) + w[3];
+        h += glm::dvec3(a * k.x * std::cos(phase), a * k.y * std::cos(phase), a * std::sin(phase));
+      }
+      texels[static_cast<std::size_t>(j) * size + i] = glm::vec4(glm::vec3(h), 1.0f);
+    }
+  return postfxtest::makeWaterTextureFromTexels(size, texels);
+}
+
+class OwnedTexture {
+ public:
+  explicit OwnedTexture(GLuint id) : id_(id) {}
+  ~OwnedTexture() { glDeleteTextures(1, &id_); }
+  OwnedTexture(const OwnedTexture&) = delete;
+  OwnedTexture& operator=(const OwnedTexture&) = delete;
+  operator GLuint() const { return id_; }
+
+ private:
+  GLuint id_;
+};
+
+postfx::FrameDesc frameFor(const SyntheticGbuffer& g, const SyntheticScene& s, double cameraY,
+                           GLuint water, double tile) {
+  postfx::FrameDesc f;
+  f.depth = {g.depth(), GL_DEPTH_COMPONENT32F};
+  f.normal = {g.normal(), g.normalFormat()};
+  f.albedo = {g.albedo(), GL_RGBA16F};
+  f.target = {g.target(), GL_RGBA32F};
+  f.camera.position = glm::dvec3(0.0, cameraY, 0.0);
+  f.camera.view = glm::mat4(s.view);
+  f.camera.projection = s.projection;
+  f.sun.direction = towardSun();
+  f.sun.irradiance = kSunIrradiance;
+  f.water.level = 0.0;
+  f.water.texture = {water, GL_RGBA32F};
+  f.water.cascadeCount = 1;
+  f.water.tileSize[0] = tile;
+  f.water.ior = kIor;
+  f.reflectedCaustics.gridResolution = 256;
+  f.reflectedCaustics.windowSize = 24.0f;
+  return f;
+}
+
+std::vector<glm::vec4> readTarget(const SyntheticGbuffer& g) {
+  return postfxtest::readRgba(g.target(), kWidth, kHeight);
+}
+
+float flatReflectance() {
+  return postfx::shared::fresnelReflectance(static_cast<float>(towardSun().y), kIor);
+}
+
+// A scene, its G-buffer, water and frame: one dispatch's worth.
+struct Receivers {
+  double cameraY;
+  SyntheticScene scene;
+  SyntheticGbuffer gbuffer;
+  OwnedTexture water;
+  postfx::FrameDesc frame;
+  Receivers(const glm::dvec3& look, double y, double amplitude)
+      : cameraY(y),
+        scene(receiverScene(look, y)),
+        gbuffer(scene),
+        water(makeWaves(256, 8.0, amplitude)),
+        frame(frameFor(gbuffer, scene, y, water, 8.0)) {}
+};
+
+const glm::dvec3 kLookAtPier{0.0, 0.25, -1.0};
+
+TEST_F(PostfxReflectedCausticsTest, FlatWaterMirrorsExactlyTheFresnelShareOfTheSun) {
+  Receivers s(kLookAtPier, 0.6, 0.0);
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+  ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+  const std::vector<glm::vec4> out = readTarget(s.gbuffer);
+  const float r = flatReflectance();
+  ASSERT_GT(r, 0.01f);
+  int ceiling = 0, wall = 0, dark = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const auto& p = s.gbuffer.pixel(x, y);
+      const glm::vec4 light = out[static_cast<std::size_t>(y) * kWidth + x];
+      const double height = p.position.y + s.cameraY;
+      const double facing = glm::dot(p.normal, mirrorReversed());
+      if (p.surface >= 0 && height > 0.01 && facing > 0.0) {
+        for (int c = 0; c < 3; ++c) {
+          const double expected = kAlbedo * kSunIrradiance[c] * r * facing;
+          ASSERT_NEAR(light[c], expected, 2e-3 * expected)
+              << x << "," << y << " surface " << p.surface;
+        }
+        (p.surface == kCeiling ? ceiling : wall) += 1;
+      } else if (p.surface < 0 || height < -0.01 || facing < 0.0) {
+        // The sky, under the water, facing up or away: nothing at all.
+        ASSERT_EQ(light, glm::vec4(0.0f)) << x << "," << y << " surface " << p.surface;
+        ++dark;
+      }
+      EXPECT_EQ(light.a, 0.0f);
+    }
+  EXPECT_GT(ceiling, 400);
+  EXPECT_GT(wall, 200);
+  EXPECT_GT(dark, 400);
+}
+
+TEST_F(PostfxReflectedCausticsTest, WavesKeepTheMeanAndDrawAPattern) {
+  Receivers flat(kLookAtPier, 0.6, 0.0), waves(kLookAtPier, 0.6, 0.02);
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+  ASSERT_EQ(postfx::dispatch(*fx, flat.frame), postfx::Result::Ok);
+  ASSERT_EQ(postfx::dispatch(*fx, waves.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+  const std::vector<glm::vec4> a = readTarget(flat.gbuffer), b = readTarget(waves.gbuffer);
+  double sumFlat = 0.0, sumWaves = 0.0, sumSquares = 0.0;
+  int n = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+      ASSERT_TRUE(std::isfinite(b[i].r) && b[i].r >= 0.0f) << x << "," << y;
+      if (waves.gbuffer.pixel(x, y).surface != kCeiling) {
+        if (a[i].r == 0.0f) ASSERT_EQ(b[i].r, 0.0f) << "light where flat water gives none";
+        continue;
+      }
+      const double ratio = b[i].r / a[i].r;
+      sumFlat += a[i].r;
+      sumWaves += b[i].r;
+      sumSquares += ratio * ratio;
+      ++n;
+    }
+  ASSERT_GT(n, 400);
+  // The ceiling's view is a few metres of water's light: its mean is flat water's within the
+  // pattern's sampling (a few bright lines more or less).
+  EXPECT_NEAR(sumWaves / sumFlat, 1.0, 0.15);
+  const double meanRatio = sumWaves / sumFlat;
+  const double contrast = std::sqrt(std::max(sumSquares / n - meanRatio * meanRatio, 0.0));
+  EXPECT_GT(contrast, 0.2) << "the waves' mirrored network is missing";
+}
+
+// Mean of a field layer's level 0 over the window's inner half (the grid reaches beyond the
+// window on every side: light mirrored or refracted in from outside lands there too).
+double innerMean(GLuint texture, int layer) {
+  GLint side = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &side);
+  std::vector<float> texels(static_cast<std::size_t>(side) * side);
+  glGetTextureSubImage(texture, 0, 0, 0, layer, side, side, 1, GL_RED, GL_FLOAT,
+                       static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  double sum = 0.0;
+  int n = 0;
+  for (int y = side / 4; y < 3 * side / 4; ++y)
+    for (int x = side / 4; x < 3 * side / 4; ++x) {
+      sum += texels[static_cast<std::size_t>(y) * side + x];
+      ++n;
+    }
+  return sum / n;
+}
+
+TEST_F(PostfxReflectedCausticsTest, ReflectedAndTransmittedFluxAddUpToTheIncidentFlux) {
+  // The same waves mirrored onto the first height layer and refracted onto the first depth
+  // layer (the wavefront area ratio's window), each relative to flat water's share: weighted by
+  // R_flat and T_flat they carry all the light that reached the water. Steep waves (slopes to
+  // ~0.39, 21 degrees) spread R far from R_flat; the sun 50 degrees up mirrors none of it back
+  // into the water (below 2 x 21 degrees the steepest faces would, and their light would meet
+  // the next wave, which neither field follows).
+  Receivers s(kLookAtPier, 0.6, 0.05);
+  s.frame.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
+  s.frame.caustics.tileUnresolvedSpread = false;
+  s.frame.sun.angularDiameterDegrees = 0.0f;
+  s.frame.sun.direction =
+      glm::dvec3(0.0, std::sin(glm::radians(50.0)), std::cos(glm::radians(50.0)));
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics | postfx::Feature::Caustics |
+                                    postfx::Feature::WavefrontAreaRatio);
+  ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+  const double reflected = innerMean(fx->reflected.field().texture(), 0);
+  const double transmitted = innerMean(fx->wavefrontAreaRatio.texture(), 0);
+  const float cosine = static_cast<float>(glm::normalize(s.frame.sun.direction).y);
+  const double r = postfx::shared::fresnelReflectance(cosine, kIor);
+  const double t = postfx::shared::fresnelTransmittance(cosine, kIor);
+  EXPECT_NEAR(r + t, 1.0, 1e-6);
+  EXPECT_GT(std::abs(reflected - 1.0), 0.01) << "the waves should move R away from flat water's";
+  // Measured 1.0002 (reflected 1.033 x R 0.0245, transmitted 0.9994 x T 0.9755).
+  EXPECT_NEAR(r * reflected + t * transmitted, 1.0, 2e-3)
+      << "reflected " << reflected << " x R " << r << ", transmitted " << transmitted << " x T "
+      << t;
+}
+
+TEST_F(PostfxReflectedCausticsTest, FeatureOffOrDisabledChangesNothingBitForBit) {
+  Receivers s(kLookAtPier, 0.6, 0.02);
+  s.frame.caustics.model = postfx::CausticsModel::TileIrradiance;
+  auto run = [&s](postfx::Feature features, bool enabled) {
+    const glm::vec4 zero(0.0f);
+    glClearTexImage(s.gbuffer.target(), 0, GL_RGBA, GL_FLOAT, &zero[0]);
+    auto fx = postfxtest::makeContext(features);
+    s.frame.reflectedCaustics.enabled = enabled;
+    EXPECT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+    return readTarget(s.gbuffer);
+  };
+  const std::vector<glm::vec4> without = run(postfx::Feature::Caustics, true);
+  const std::vector<glm::vec4> disabled =
+      run(postfx::Feature::Caustics | postfx::Feature::ReflectedCaustics, false);
+  const std::vector<glm::vec4> with =
+      run(postfx::Feature::Caustics | postfx::Feature::ReflectedCaustics, true);
+  ASSERT_EQ(std::memcmp(without.data(), disabled.data(), without.size() * sizeof(glm::vec4)), 0);
+  int added = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+      const auto& p = s.gbuffer.pixel(x, y);
+      if (p.surface < 0 || p.position.y + s.cameraY <= 0.0) {
+        // Under the water and on the sky: the seabed light alone, to the bit.
+        ASSERT_EQ(std::memcmp(&with[i], &without[i], sizeof(glm::vec4)), 0) << x << "," << y;
+      } else if (with[i].r > without[i].r) {
+        ++added;
+      }
+    }
+  EXPECT_GT(added, 400);
+}
+
+TEST_F(PostfxReflectedCausticsTest, SkippedWithNothingAboveTheWaterInView) {
+  // A diver's camera 2 m down looking down at the seabed: no part of the frustum reaches the
+  // level, so the pass records nothing and reports 0 ms.
+  Receivers s(glm::dvec3(0.0, -1.0, -0.2), -2.0, 0.02);
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+  for (int frame = 0; frame < 6; ++frame)
+    ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok);
+  const postfx::PassStats stats = postfx::stats(*fx).pass(postfx::Pass::ReflectedCaustics);
+  EXPECT_TRUE(stats.present);
+  EXPECT_TRUE(stats.skipped);
+  EXPECT_EQ(stats.lastMs, 0.0);
+  EXPECT_EQ(fx->reflected.allocatedBytes(), 0u) << "a skipped pass holds no memory";
+  // Seen from above, it runs and is timed; the estimate is what GL holds.
+  Receivers above(kLookAtPier, 0.6, 0.02);
+  for (int frame = 0; frame < 6; ++frame)
+    ASSERT_EQ(postfx::dispatch(*fx, above.frame), postfx::Result::Ok);
+  const postfx::PassStats ran = postfx::stats(*fx).pass(postfx::Pass::ReflectedCaustics);
+  EXPECT_FALSE(ran.skipped);
+  EXPECT_GT(ran.lastMs, 0.0);
+  postfx::detail::FramePlan plan = postfx::detail::planFrame(*fx, above.frame);
+  ASSERT_TRUE(plan.reflected);
+  EXPECT_EQ(postfx::detail::frameMemoryBytes(fx->desc, above.frame, kWidth, kHeight, plan),
+            fx->reflected.allocatedBytes());
+}
+
+TEST_F(PostfxReflectedCausticsTest, BadSettingsAreRefusedWithNothingDrawn) {
+  Receivers s(kLookAtPier, 0.6, 0.02);
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+  const glm::vec4 marker(0.25f, 0.5f, 0.75f, 1.0f);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  struct Case {
+    const char* field;
+    void (*spoil)(postfx::ReflectedCausticsSettings&, float);
+  };
+  const Case cases[] = {
+      {"intensity", [](postfx::ReflectedCausticsSettings& r, float v) { r.intensity = v; }},
+      {"windowSize", [](postfx::ReflectedCausticsSettings& r, float v) { r.windowSize = v; }},
+      {"maxHeight", [](postfx::ReflectedCausticsSettings& r, float v) { r.maxHeight = v; }},
+      {"maxIrradiance", [](postfx::ReflectedCausticsSettings& r, float v) { r.maxIrradiance = v; }},
+      {"gridResolution",
+       [](postfx::ReflectedCausticsSettings& r, float) { r.gridResolution = 4096; }},
+      {"heightLayers", [](postfx::ReflectedCausticsSettings& r, float) { r.heightLayers = 0; }}};
+  for (const Case& c : cases)
+    for (float bad : {nan, -1.0f, 1e30f}) {
+      s.gbuffer.target();
+      glClearTexImage(s.gbuffer.target(), 0, GL_RGBA, GL_FLOAT, &marker[0]);
+      postfx::FrameDesc frame = s.frame;
+      c.spoil(frame.reflectedCaustics, bad);
+      ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::InvalidArgument)
+          << c.field << " " << bad;
+      EXPECT_NE(std::string(postfx::lastError(fx.get()))
+                    .find(std::string("reflectedCaustics.") + c.field),
+                std::string::npos)
+          << postfx::lastError(fx.get());
+      for (const glm::vec4& v : readTarget(s.gbuffer)) ASSERT_EQ(v, marker);
+    }
+  // A frame that needs the water but gives none is refused too.
+  postfx::FrameDesc frame = s.frame;
+  frame.water.texture = {};
+  EXPECT_NE(postfx::dispatch(*fx, frame), postfx::Result::Ok);
+}
+
+}  // namespace
