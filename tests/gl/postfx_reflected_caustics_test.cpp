@@ -200,7 +200,7 @@ TEST_F(PostfxReflectedCausticsTest, FlatWaterMirrorsExactlyTheFresnelShareOfTheS
       const double facing = glm::dot(p.normal, mirrorReversed());
       if (p.surface >= 0 && height > 0.01 && facing > 0.0) {
         for (int c = 0; c < 3; ++c) {
-          const double expected = kAlbedo * kSunIrradiance[c] * r * facing;
+          const double expected = double(kAlbedo * kSunIrradiance[c] * r) * facing;
           ASSERT_NEAR(light[c], expected, 2e-3 * expected)
               << x << "," << y << " surface " << p.surface;
         }
@@ -230,12 +230,14 @@ TEST_F(PostfxReflectedCausticsTest, WavesKeepTheMeanAndDrawAPattern) {
       const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
       ASSERT_TRUE(std::isfinite(b[i].r) && b[i].r >= 0.0f) << x << "," << y;
       if (waves.gbuffer.pixel(x, y).surface != kCeiling) {
-        if (a[i].r == 0.0f) ASSERT_EQ(b[i].r, 0.0f) << "light where flat water gives none";
+        if (a[i].r == 0.0f) {
+          ASSERT_EQ(b[i].r, 0.0f) << "light where flat water gives none";
+        }
         continue;
       }
-      const double ratio = b[i].r / a[i].r;
-      sumFlat += a[i].r;
-      sumWaves += b[i].r;
+      const double ratio = double(b[i].r / a[i].r);
+      sumFlat += double(a[i].r);
+      sumWaves += double(b[i].r);
       sumSquares += ratio * ratio;
       ++n;
     }
@@ -260,7 +262,7 @@ double innerMean(GLuint texture, int layer) {
   int n = 0;
   for (int y = side / 4; y < 3 * side / 4; ++y)
     for (int x = side / 4; x < 3 * side / 4; ++x) {
-      sum += texels[static_cast<std::size_t>(y) * side + x];
+      sum += double(texels[static_cast<std::size_t>(y) * side + x]);
       ++n;
     }
   return sum / n;
@@ -387,6 +389,31 @@ TEST_F(PostfxReflectedCausticsTest, BadSettingsAreRefusedWithNothingDrawn) {
   postfx::FrameDesc frame = s.frame;
   frame.water.texture = {};
   EXPECT_NE(postfx::dispatch(*fx, frame), postfx::Result::Ok);
+}
+
+TEST(ReflectedCausticsMath, MirrorTurnsTheLandingByTwiceTheSlope) {
+  // Sun from +z at elevation e: a slope dh/dz = s tilts the normal by s toward -z, turning the
+  // mirrored ray's elevation by 2 s; its landing per metre of height, -cot(elevation) along z,
+  // moves by 2 / sin^2(e) per unit slope; across the azimuth a slope dh/dx = s gives the ray
+  // 2 s sin(e) sideways per sin(e) of rise: 2 per unit slope at any elevation.
+  for (double degrees : {10.0, 35.0, 70.0}) {
+    const double e = glm::radians(degrees);
+    const glm::dvec3 sun(0.0, std::sin(e), std::cos(e));
+    const glm::dvec4 j = postfx::detail::reflectedLandingJacobian(sun);
+    // Packed (d offset / d sx, d offset / d sz): the along-azimuth term is d(offset.z) / d sz.
+    EXPECT_NEAR(std::abs(j.w), 2.0 / (std::sin(e) * std::sin(e)), 1e-4 * (1.0 + std::abs(j.w)))
+        << degrees;
+    EXPECT_NEAR(std::abs(j.x), 2.0, 1e-4) << degrees;
+    EXPECT_NEAR(j.y, 0.0, 1e-6);
+    EXPECT_NEAR(j.z, 0.0, 1e-6);
+    // A flat mirror keeps the disc's angular size: its landing spread per metre of height is the
+    // refraction-free one, r^2 / 4 (1 / sin^4 along, 1 / sin^2 across).
+    const double r = 0.01;
+    const glm::dvec3 c = postfx::detail::reflectedSunDiscCovariance(sun, r);
+    const double s2 = std::sin(e) * std::sin(e);
+    EXPECT_NEAR(c.z, 0.25 * r * r / (s2 * s2), 1e-3 * c.z) << degrees;
+    EXPECT_NEAR(c.x, 0.25 * r * r / s2, 1e-3 * c.x) << degrees;
+  }
 }
 
 }  // namespace

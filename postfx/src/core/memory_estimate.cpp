@@ -65,7 +65,7 @@ Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
   // One field, drawn by each view in turn.
   if (reflected)
     t.reflected = reflectedFieldBytes(frame.reflectedCaustics.gridResolution,
-                                      frame.reflectedCaustics.heightLayers);
+                                      frame.reflectedCaustics.heightLayers, landingSpreadOn(frame));
   if (passes.objectMaps()) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and

@@ -17,7 +17,7 @@ namespace postfx::detail {
 Result ReflectedFieldPass::init(const std::string& defines, std::string& error) {
   // The triangle and point draws are the wavefront area ratio's own: they read grid points in
   // texels, whatever placed them.
-  const Result r = buildPrograms(
+  Result r = buildPrograms(
       defines,
       {{vertices_,
         "postfx.reflected_caustics.grid",
@@ -32,6 +32,8 @@ Result ReflectedFieldPass::init(const std::string& defines, std::string& error) 
          {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
       error);
   if (r != Result::Ok) return r;
+  r = spread_.init(defines, "postfx.reflected_caustics", error);
+  if (r != Result::Ok) return r;
   framebuffer_ = glkit::createFramebuffer("postfx.reflected_caustics.framebuffer");
   vertexArray_ = glkit::createVertexArray("postfx.reflected_caustics.vao");
   clampCount_ = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
@@ -44,6 +46,7 @@ Result ReflectedFieldPass::reserve(const FrameDesc& frame, std::string& error) {
   const int resolution = layout_.resolution, layers = layout_.layers;
   if (!(texture_ && textureResolution_ == resolution && textureLayers_ == layers)) {
     texture_.reset();  // the old size goes first: never two allocated at once
+    spread_.ensure(false, 0, 0);
     texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.reflected_caustics.irradiance");
     // R32F with mips, as the refracted window's: exact additive sums, footprint-filtered lookups.
     glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(resolution), GL_R32F, resolution,
@@ -51,6 +54,7 @@ Result ReflectedFieldPass::reserve(const FrameDesc& frame, std::string& error) {
     textureResolution_ = resolution;
     textureLayers_ = layers;
   }
+  spread_.ensure(layout_.spread, resolution, layers);
   const std::uint64_t side = std::uint64_t(layout_.cells) + 1;
   const bool points = gridPoints_.ensure(side * side, "postfx.reflected_caustics.grid_points");
   if (glkit::storedWidth(texture_) != resolution || !points) {
@@ -130,17 +134,28 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
     glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
   }
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  if (l.spread) {
+    float heights[kMaxReflectedLayers] = {};
+    for (int k = 0; k < l.layers; ++k) heights[k] = static_cast<float>(l.height[k]);
+    spread_.draw(frame, textures,
+                 {texture_.id(), l.resolution, l.layers, heights, l.cell, l.windowSize,
+                  reflectedLandingJacobian(sun),
+                  reflectedSunDiscCovariance(
+                      sun, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees)))});
+  }
   glGenerateTextureMipmap(texture_.id());
 }
 
 void ReflectedFieldPass::release() {
   texture_.reset();
+  spread_.ensure(false, 0, 0);
   textureResolution_ = textureLayers_ = 0;
   gridPoints_.reset();
 }
 
 std::uint64_t ReflectedFieldPass::allocatedBytes() const {
-  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.buffer());
+  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.buffer()) +
+         spread_.allocatedBytes();
 }
 
 }  // namespace postfx::detail

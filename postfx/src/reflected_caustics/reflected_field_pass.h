@@ -21,6 +21,7 @@
 #include "core/validation.h"
 #include "reflected_caustics/reflected_layout.h"
 #include "seabed_caustics/grid_point_buffer.h"
+#include "seabed_caustics/layer_spread.h"
 
 namespace postfx::detail {
 
@@ -52,6 +53,7 @@ class ReflectedFieldPass {
   glkit::Buffer clampCount_;  // the draws count what the clamp removes; nobody reads it here
   int textureResolution_ = 0, textureLayers_ = 0;
   GridPointBuffer gridPoints_;
+  LayerSpread spread_;
   ReflectedLayout layout_{};
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/shared_math.h"
+#include "seabed_caustics/tile_irradiance_pass.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
@@ -40,11 +41,52 @@ ReflectedLayout reflectedLayout(const FrameDesc& frame) {
     const glm::dvec2 start = windowCentre - l.rise * l.height[k] - 0.5 * gridSpan;
     l.gridOrigin[k] = glm::floor(start / l.cell) * l.cell;
   }
+  l.spread = landingSpreadOn(frame);
   return l;
 }
 
-std::uint64_t reflectedFieldBytes(int gridResolution, int layers) {
-  return wavefrontAreaRatioBytes(gridResolution, layers, false);
+std::uint64_t reflectedFieldBytes(int gridResolution, int layers, bool spread) {
+  return wavefrontAreaRatioBytes(gridResolution, layers, spread);
+}
+
+namespace {
+
+// Horizontal offset per metre of height of sunlight from `towardSun` mirrored by a surface of
+// unit normal `normal`.
+glm::dvec2 mirroredOffsetPerHeight(const glm::dvec3& towardSun, const glm::dvec3& normal) {
+  const glm::dvec3 r = glm::reflect(-towardSun, normal);
+  return glm::dvec2(r.x, r.z) / std::max(r.y, 1e-6);
+}
+
+}  // namespace
+
+glm::dvec4 reflectedLandingJacobian(const glm::dvec3& towardSun) {
+  const glm::dvec3 sun = glm::normalize(towardSun);
+  auto offset = [&](double sx, double sz) {
+    return mirroredOffsetPerHeight(sun, glm::normalize(glm::dvec3(-sx, 1.0, -sz)));
+  };
+  const double e = 1e-5;
+  const glm::dvec2 dx = (offset(e, 0.0) - offset(-e, 0.0)) / (2.0 * e);
+  const glm::dvec2 dz = (offset(0.0, e) - offset(0.0, -e)) / (2.0 * e);
+  return glm::dvec4(dx, dz);
+}
+
+glm::dvec3 reflectedSunDiscCovariance(const glm::dvec3& towardSun, double angularRadius) {
+  const glm::dvec3 sun = glm::normalize(towardSun);
+  const glm::dvec3 helper =
+      std::abs(sun.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
+  const glm::dvec3 side = glm::normalize(glm::cross(sun, helper));
+  const glm::dvec3 up = glm::cross(side, sun);
+  const glm::dvec3 flat(0.0, 1.0, 0.0);
+  auto offset = [&](const glm::dvec3& toward) {
+    return mirroredOffsetPerHeight(glm::normalize(toward), flat);
+  };
+  const double e = 1e-5;
+  const glm::dvec2 a = (offset(sun + e * side) - offset(sun - e * side)) / (2.0 * e);
+  const glm::dvec2 b = (offset(sun + e * up) - offset(sun - e * up)) / (2.0 * e);
+  // A uniform disc of radius r has variance r^2 / 4 along each of its axes.
+  const double v = 0.25 * angularRadius * angularRadius;
+  return v * glm::dvec3(a.x * a.x + b.x * b.x, a.x * a.y + b.x * b.y, a.y * a.y + b.y * b.y);
 }
 
 }  // namespace postfx::detail

@@ -24,7 +24,19 @@ struct ReflectedLayout {
   glm::dvec2 gridOrigin[kMaxReflectedLayers] = {};  // world xz of grid vertex (0, 0)
   // The flat mirror ray's horizontal drift per metre of height: -towardSun.xz / towardSun.y.
   glm::dvec2 rise{0.0};
+  // The layers are blurred by the landing spread of the slopes finer than a cell
+  // (CausticsSettings::tileUnresolvedSpread) and of the sun's disc (Sun::angularDiameterDegrees),
+  // as the refracted window's are.
+  bool spread = false;
 };
+
+// Derivative of the mirrored sun's landing offset per metre of height with respect to the
+// water slopes (dh/dx, dh/dz) at flat water, packed as landingDriftJacobian's: a mirror turns
+// the ray by twice the slope, so it is about 2 / sin^2(elevation) along the sun's azimuth.
+glm::dvec4 reflectedLandingJacobian(const glm::dvec3& towardSun);
+// Covariance (xx, xz, zz, m^2 per metre^2 of height) of where light from the sun's disc of
+// `angularRadius` radians lands after a flat mirror, about where its centre's would.
+glm::dvec3 reflectedSunDiscCovariance(const glm::dvec3& towardSun, double angularRadius);
 
 // Height of layer k of `layers` (m above the level): denser near the water, where short waves
 // focus their light.
@@ -34,8 +46,9 @@ double reflectedLayerHeight(int k, int layers, double maxHeight);
 ReflectedLayout reflectedLayout(const FrameDesc& frame);
 
 // GPU memory the field allocates for `gridResolution` and `layers`: the R32F layers with their
-// mip levels and the grid points (two vec4 per point). The memory estimate and
-// ReflectedFieldPass::allocatedBytes() must agree (a test checks).
-std::uint64_t reflectedFieldBytes(int gridResolution, int layers);
+// mip levels and the grid points (two vec4 per point); with `spread`, the blur's copy of level 0
+// and the slope statistics. The memory estimate and ReflectedFieldPass::allocatedBytes() must
+// agree (a test checks).
+std::uint64_t reflectedFieldBytes(int gridResolution, int layers, bool spread);
 
 }  // namespace postfx::detail

@@ -40,9 +40,19 @@ void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
                                  const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
                                  int cascades) {
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
-  const glm::vec4 drift(landingDriftJacobian(sun, frame.water.ior));
-  const glm::vec3 disc(sunDiscLandingCovariance(
-      sun, frame.water.ior, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees))));
+  setSpreadCovarianceUniforms(
+      program, frame, slotCascade, texelsPerMetre, cascades,
+      landingDriftJacobian(sun, frame.water.ior),
+      sunDiscLandingCovariance(sun, frame.water.ior,
+                               0.5 * glm::radians(double(frame.sun.angularDiameterDegrees))));
+}
+
+void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
+                                 const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
+                                 int cascades, const glm::dvec4& jacobian,
+                                 const glm::dvec3& discCovariance) {
+  const glm::vec4 drift(jacobian);
+  const glm::vec3 disc(discCovariance);
   glProgramUniform4iv(program, 10, 1, &slotCascade.x);
   glProgramUniform4fv(program, 11, 1, &texelsPerMetre.x);
   glProgramUniform4fv(program, 12, 1, &drift.x);

@@ -36,6 +36,12 @@ bool landingSpreadOn(const FrameDesc& frame);
 void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
                                  const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
                                  int cascades);
+// The same with the landing's slope Jacobian and sun-disc covariance given (the reflected
+// light's, whose mirror moves its landing by other amounts than refraction).
+void setSpreadCovarianceUniforms(GLuint program, const FrameDesc& frame,
+                                 const glm::ivec4& slotCascade, const glm::vec4& texelsPerMetre,
+                                 int cascades, const glm::dvec4& jacobian,
+                                 const glm::dvec3& discCovariance);
 
 struct TileIrradianceLayout {
   int resolution = 0;  // irradiance texels per tile side

@@ -7,6 +7,7 @@
 
 #include "core/frame_geometry.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/layer_spread.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
@@ -58,10 +59,8 @@ std::uint64_t wavefrontAreaRatioBytes(int gridResolution, int depthLayers, bool 
   }
   const std::uint64_t points =
       std::uint64_t(gridResolution + 2) * std::uint64_t(gridResolution + 2);
-  const std::uint64_t rows =
-      spread ? std::uint64_t(gridResolution) * std::uint64_t(gridResolution) : 0;
-  return (texels + rows) * std::uint64_t(depthLayers) * 4 + points * 2 * 16 +
-         (spread ? tileSpreadStatisticsBytes() : 0);
+  return texels * std::uint64_t(depthLayers) * 4 + points * 2 * 16 +
+         (spread ? layerSpreadBytes(gridResolution, depthLayers) : 0);
 }
 
 }  // namespace postfx::detail

@@ -10,12 +10,13 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/caustics_constants.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
 
 Result WavefrontAreaRatioPass::init(const std::string& defines, std::string& error) {
-  const Result r = buildPrograms(
+  Result r = buildPrograms(
       defines,
       {{vertices_,
         "postfx.wavefront_area_ratio.grid",
@@ -27,14 +28,10 @@ Result WavefrontAreaRatioPass::init(const std::string& defines, std::string& err
        {points_,
         "postfx.wavefront_area_ratio.points",
         {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.vert"},
-         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}},
-       {spreadStatistics_,
-        "postfx.wavefront_area_ratio.spread_statistics",
-        {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_spread.comp"}}},
-       {spread_,
-        "postfx.wavefront_area_ratio.spread",
-        {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_spread.comp"}}}},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
       error);
+  if (r != Result::Ok) return r;
+  r = spread_.init(defines, "postfx.wavefront_area_ratio", error);
   if (r != Result::Ok) return r;
   framebuffer_ = glkit::createFramebuffer("postfx.wavefront_area_ratio.framebuffer");
   vertexArray_ = glkit::createVertexArray("postfx.wavefront_area_ratio.vao");
@@ -45,34 +42,26 @@ Result WavefrontAreaRatioPass::init(const std::string& defines, std::string& err
 }
 
 void WavefrontAreaRatioPass::ensureTexture(int resolution, int layers, bool spread) {
-  if (texture_ && textureResolution_ == resolution && textureLayers_ == layers &&
-      bool(spreadRows_) == spread)
-    return;
-  // The old size goes first: never two of them allocated at once.
-  texture_.reset();
-  spreadRows_.reset();
-  spreadStatisticsBuffer_.reset();
-  if (spread) {
-    spreadRows_ =
-        glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.wavefront_area_ratio.spread_rows");
-    glTextureStorage3D(spreadRows_.id(), 1, GL_R32F, resolution, resolution, layers);
-    spreadStatisticsBuffer_ = glkit::createBuffer(GLsizeiptr(tileSpreadStatisticsBytes()), nullptr,
-                                                  GL_DYNAMIC_STORAGE_BIT,
-                                                  "postfx.wavefront_area_ratio.spread_statistics");
+  if (!(texture_ && textureResolution_ == resolution && textureLayers_ == layers)) {
+    // The old size goes first: never two of them allocated at once.
+    texture_.reset();
+    spread_.ensure(false, 0, 0);
+    texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.wavefront_area_ratio");
+    // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
+    // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
+    // mean light over its texels), where point lookups at level 0 aliased into sparkle and
+    // flicker.
+    glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(resolution), GL_R32F, resolution,
+                       resolution, layers);
+    textureResolution_ = resolution;
+    textureLayers_ = layers;
   }
-  texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.wavefront_area_ratio");
-  // R32F: additive sums of many triangles stay exact well past R16F's 11 bits. With its mip
-  // chain: the lookup filters a pixel's footprint (irradiance is linear, so a mip level is the
-  // mean light over its texels), where point lookups at level 0 aliased into sparkle and flicker.
-  glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(resolution), GL_R32F, resolution,
-                     resolution, layers);
-  textureResolution_ = resolution;
-  textureLayers_ = layers;
+  spread_.ensure(spread, resolution, layers);
 }
 
 std::uint64_t WavefrontAreaRatioPass::allocatedBytes() const {
-  return textureBytes(texture_.id(), 4) + textureBytes(spreadRows_.id(), 4) +  // R32F
-         bufferBytes(gridPoints_.buffer()) + bufferBytes(spreadStatisticsBuffer_.id());
+  return textureBytes(texture_.id(), 4) + bufferBytes(gridPoints_.buffer()) +  // R32F
+         spread_.allocatedBytes();
 }
 
 double WavefrontAreaRatioPass::pollClampCounts() {
@@ -192,58 +181,22 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
   // The spread before the last layer is detached: dispatched after the detach, llvmpipe's
   // GL_TIME_ELAPSED query around the next pass (the tile field's, compute only) read 11,000 s
   // in every frame (Mesa 22.3); nothing else changes with the order.
-  if (l.spread) drawSpread(frame, textures);
+  if (l.spread) {
+    float depths[kMaxWavefrontAreaRatioLayers] = {};
+    for (int k = 0; k < l.layers; ++k) depths[k] = static_cast<float>(l.depth[k]);
+    spread_.draw(
+        frame, textures,
+        {texture_.id(), l.resolution, l.layers, depths, l.cell, l.windowSize,
+         landingDriftJacobian(sun, water.ior),
+         sunDiscLandingCovariance(sun, water.ior,
+                                  0.5 * glm::radians(double(frame.sun.angularDiameterDegrees)))});
+  }
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
   glGenerateTextureMipmap(texture_.id());
   // The fragment atomics must land before the buffer is read back. (The irradiance itself is a
   // framebuffer write, ordered before later draws that sample it without a barrier.)
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   slot.fence = glkit::Fence(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
-}
-
-void WavefrontAreaRatioPass::drawSpread(const FrameDesc& frame, const ValidatedTextures& textures) {
-  const WavefrontAreaRatioLayout& l = layout_;
-  const WaterSurface& water = frame.water;
-  const int cascades = std::min(water.cascadeCount, kMaxCascades);
-  // The slopes inside the grid's cells, per cascade: its cells per tile are the tile over the
-  // grid spacing (the grid's water lookups are filtered to that cell).
-  const int texelsPerSide = std::max(textures.water.width, textures.water.height);
-  glm::vec4 cellsPerTile(1.0f);
-  for (int c = 0; c < cascades; ++c)
-    cellsPerTile[c] =
-        static_cast<float>(std::min(water.tileSize[c] / l.cell, double(texelsPerSide)));
-  const GLuint statistics = spreadStatistics_.id();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_SPREAD,
-                   spreadStatisticsBuffer_.id());
-  glProgramUniform4fv(statistics, 0, 1, &cellsPerTile.x);
-  glUseProgram(statistics);
-  glDispatchCompute(static_cast<GLuint>(cascades), static_cast<GLuint>(shared::TILE_SPREAD_PARTS),
-                    1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-  // The blur: one slot, every cascade's cell slopes added up (the grid refracts their sum).
-  float depths[shared::TILE_MAX_LAYERS] = {};
-  for (int k = 0; k < l.layers && k < shared::TILE_MAX_LAYERS; ++k)
-    depths[k] = static_cast<float>(l.depth[k]);
-  const GLuint spread = spread_.id();
-  glProgramUniform1fv(spread, 1, shared::TILE_MAX_LAYERS, depths);
-  glProgramUniform1f(spread, 15, static_cast<float>(l.cell));
-  setSpreadCovarianceUniforms(spread, frame, glm::ivec4(0),
-                              glm::vec4(static_cast<float>(l.resolution / l.windowSize)), cascades);
-  glUseProgram(spread);
-  glBindSampler(POSTFX_UNIT_TILE_IRRADIANCE, 0);  // texelFetch only; none of the host's
-  const GLuint groups = static_cast<GLuint>((l.resolution + 7) / 8);
-  // Rows: the layers into spreadRows_; columns: back into level 0.
-  for (int direction = 0; direction < 2; ++direction) {
-    const GLuint from = direction == 0 ? texture_.id() : spreadRows_.id();
-    const GLuint to = direction == 0 ? spreadRows_.id() : texture_.id();
-    glBindTextureUnit(POSTFX_UNIT_TILE_IRRADIANCE, from);
-    glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, to, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    glProgramUniform4i(spread, 0, l.resolution, direction, l.layers, 0);
-    glDispatchCompute(groups, groups, static_cast<GLuint>(l.layers));
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT);
-  }
 }
 
 }  // namespace postfx::detail

@@ -27,6 +27,7 @@
 #include "core/gpu_timers.h"
 #include "core/validation.h"
 #include "seabed_caustics/grid_point_buffer.h"
+#include "seabed_caustics/layer_spread.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
@@ -58,16 +59,13 @@ class WavefrontAreaRatioPass {
 
  private:
   void ensureTexture(int resolution, int layers, bool spread);
-  void drawSpread(const FrameDesc& frame, const ValidatedTextures& textures);
 
-  glkit::Program vertices_, triangles_, points_, spreadStatistics_, spread_;
+  glkit::Program vertices_, triangles_, points_;
   glkit::Framebuffer framebuffer_;
   glkit::VertexArray vertexArray_;
   glkit::Texture texture_;
   int textureResolution_ = 0, textureLayers_ = 0;
-  // The spread's rows (level 0 only) and the slope statistics of the grid's cells.
-  glkit::Texture spreadRows_;
-  glkit::Buffer spreadStatisticsBuffer_;
+  LayerSpread spread_;  // the landing spread (with it on: layout_.spread)
   GridPointBuffer gridPoints_;
   WavefrontAreaRatioLayout layout_{};
   struct ClampSlot {
