@@ -6,6 +6,7 @@
 // bit; bad settings are refused with nothing drawn; the memory estimate is what GL holds.
 #include <gtest/gtest.h>
 #include <postfx/testing.h>
+#include <postfx/views.h>
 
 #include <cmath>
 #include <cstring>
@@ -20,6 +21,8 @@
 #include "core/memory_estimate.h"
 #include "core/shared_math.h"
 #include "gl_fixture.h"
+#include "postfx_gl_snapshot.h"
+#include "postfx_host_state.h"
 #include "postfx_scene.h"
 #include "postfx_test_util.h"
 #include "reflected_caustics/reflected_layout.h"
@@ -389,6 +392,133 @@ TEST_F(PostfxReflectedCausticsTest, BadSettingsAreRefusedWithNothingDrawn) {
   postfx::FrameDesc frame = s.frame;
   frame.water.texture = {};
   EXPECT_NE(postfx::dispatch(*fx, frame), postfx::Result::Ok);
+}
+
+TEST_F(PostfxReflectedCausticsTest, WaterInTheShadeMirrorsNothing) {
+  // A sun shadow map whose left half (light-space x < 0) is occluded: a pier's shade on the
+  // water. A receiver whose flat mirror ray comes from shaded water gets nothing; one lit from
+  // sunlit water gets exactly what it gets without the mask.
+  Receivers s(kLookAtPier, 0.6, 0.0);
+  const int side = 256;
+  GLuint map = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &map);
+  OwnedTexture owned(map);
+  glTextureStorage2D(map, 1, GL_DEPTH_COMPONENT32F, side, side);
+  std::vector<float> depths(static_cast<std::size_t>(side) * side);
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x)
+      depths[static_cast<std::size_t>(y) * side + x] = x < side / 2 ? 0.0f : 1.0f;
+  glTextureSubImage2D(map, 0, 0, 0, side, side, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  const glm::dmat4 lightClip =
+      glm::orthoRH_ZO(-30.0, 30.0, -30.0, 30.0, 1.0, 300.0) *
+      glm::lookAt(100.0 * towardSun(), glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+  s.frame.shadow.depth = {map, GL_DEPTH_COMPONENT32F};
+  s.frame.shadow.worldToLightClip = lightClip;
+  s.frame.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  auto plain = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+  ASSERT_EQ(postfx::dispatch(*plain, s.frame), postfx::Result::Ok);
+  const std::vector<glm::vec4> unmasked = readTarget(s.gbuffer);
+  const glm::vec4 zero(0.0f);
+  glClearTexImage(s.gbuffer.target(), 0, GL_RGBA, GL_FLOAT, &zero[0]);
+  auto fx =
+      postfxtest::makeContext(postfx::Feature::ReflectedCaustics | postfx::Feature::ShadowMask);
+  ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+  const std::vector<glm::vec4> masked = readTarget(s.gbuffer);
+  int shaded = 0, sunlit = 0;
+  const glm::dvec3 lr = mirrorReversed();
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+      if (!(unmasked[i].r > 0.0f)) {
+        ASSERT_EQ(masked[i], zero);
+        continue;
+      }
+      const auto& p = s.gbuffer.pixel(x, y);
+      const glm::dvec3 world = p.position + glm::dvec3(0.0, s.cameraY, 0.0);
+      const glm::dvec3 water = world + lr * (world.y / -lr.y);
+      const glm::dvec4 clip = lightClip * glm::dvec4(water, 1.0);
+      const double u = 0.5 * (clip.x / clip.w) + 0.5;
+      if (u < 0.5 - 4.0 / side) {
+        ASSERT_EQ(masked[i], zero) << x << "," << y;
+        ++shaded;
+      } else if (u > 0.5 + 4.0 / side) {
+        ASSERT_NEAR(masked[i].r, unmasked[i].r, 1e-6f * unmasked[i].r) << x << "," << y;
+        ++sunlit;
+      }
+    }
+  EXPECT_GT(shaded, 100);
+  EXPECT_GT(sunlit, 100);
+}
+
+TEST_F(PostfxReflectedCausticsTest, EachViewDrawsWhatAContextOfItsOwnWould) {
+  // Two cameras 7 m apart in one dispatch: each view's field follows its own camera, so each
+  // image is bit for bit what a context drawing that camera alone draws.
+  Receivers a(kLookAtPier, 0.6, 0.02), b(glm::dvec3(0.3, 0.1, -1.0), 1.2, 0.02);
+  b.frame.camera.position = glm::dvec3(7.0, 1.2, 3.0);
+  b.frame.water.texture = a.frame.water.texture;
+  std::vector<glm::vec4> alone[2];
+  Receivers* both[2] = {&a, &b};
+  for (int v = 0; v < 2; ++v) {
+    auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+    ASSERT_EQ(postfx::dispatch(*fx, both[v]->frame), postfx::Result::Ok);
+    alone[v] = readTarget(both[v]->gbuffer);
+    const glm::vec4 zero(0.0f);
+    glClearTexImage(both[v]->gbuffer.target(), 0, GL_RGBA, GL_FLOAT, &zero[0]);
+  }
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
+  postfx::View* views[2] = {nullptr, nullptr};
+  postfx::ViewDesc descs[2];
+  for (int v = 0; v < 2; ++v) {
+    ASSERT_EQ(postfx::createView(*fx, views[v]), postfx::Result::Ok);
+    const postfx::FrameDesc& f = both[v]->frame;
+    descs[v] = {views[v], f.depth, f.normal, f.albedo, f.target, f.camera, {}, nullptr};
+  }
+  EXPECT_EQ(postfx::dispatch(*fx, a.frame, descs, 2), postfx::Result::Ok)
+      << postfx::lastError(fx.get());
+  for (int v = 0; v < 2; ++v) {
+    const std::vector<glm::vec4> together = readTarget(both[v]->gbuffer);
+    EXPECT_EQ(std::memcmp(together.data(), alone[v].data(), together.size() * sizeof(glm::vec4)), 0)
+        << "view " << v;
+    EXPECT_FALSE(postfx::stats(*views[v]).pass(postfx::Pass::ReflectedCaustics).skipped);
+    postfx::destroyView(*fx, views[v]);
+  }
+}
+
+TEST_F(PostfxReflectedCausticsTest, EveryHostStateSurvivesDispatch) {
+  // The host's unusual state (postfx_host_state.h) around a frame whose reflected pass runs with
+  // its field's spread and the shadow mask, one it skips, and one it refuses.
+  Receivers s(kLookAtPier, 0.6, 0.02);
+  GLuint map = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &map);
+  OwnedTexture owned(map);
+  glTextureStorage2D(map, 1, GL_DEPTH_COMPONENT32F, 64, 64);
+  const float one = 1.0f;
+  glClearTexImage(map, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+  s.frame.shadow.depth = {map, GL_DEPTH_COMPONENT32F};
+  s.frame.shadow.worldToLightClip =
+      glm::orthoRH_ZO(-30.0, 30.0, -30.0, 30.0, 1.0, 300.0) *
+      glm::lookAt(100.0 * towardSun(), glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+  s.frame.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics |
+                                    postfx::Feature::ShadowMask | postfx::Feature::Caustics);
+  postfxtest::HostState host;
+  host.set();
+  const postfxtest::GlSnapshot before = postfxtest::snapshotGlState();
+  auto expectSame = [&before](const char* when) {
+    const postfxtest::GlSnapshot after = postfxtest::snapshotGlState();
+    for (const auto& [name, value] : before)
+      EXPECT_EQ(value, after.at(name)) << when << ": " << name;
+  };
+  ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
+  expectSame("pass ran");
+  s.frame.reflectedCaustics.enabled = false;
+  ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok);
+  expectSame("pass skipped");
+  s.frame.reflectedCaustics.enabled = true;
+  s.frame.reflectedCaustics.maxHeight = -1.0f;
+  ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::InvalidArgument);
+  expectSame("dispatch refused");
+  host.reset();
 }
 
 TEST(ReflectedCausticsMath, MirrorTurnsTheLandingByTwiceTheSlope) {

@@ -6,7 +6,8 @@
 //   per frame, shared:  Pass::TileIrradiance (the seabed light field, computed over the water's
 //                       tile, not the screen), the object caustics' maps (the sun's caster maps,
 //                       splats and temporal history, and each local light's), their timers;
-//   per view:           Pass::WavefrontAreaRatio (its window follows the view's camera),
+//   per view:           Pass::WavefrontAreaRatio and Pass::ReflectedCaustics (their windows
+//                       follow the view's camera),
 //                       Pass::Floor, Pass::Caustics, Pass::GodRays (with the god-ray grid's
 //                       pivot, which follows the camera), the object caustics' composite into the
 //                       view's target, the view's raw output and reduced-resolution textures,
@@ -78,8 +79,8 @@ void destroyView(Context& context, View* view) noexcept;
 Result dispatch(Context& context, const FrameDesc& frame, const ViewDesc* views,
                 int viewCount) noexcept;
 
-// The view's own passes (Pass::WavefrontAreaRatio, Floor, Caustics, GodRays; the others read
-// present = false), updated by each dispatch that carries the view. The shared passes
+// The view's own passes (Pass::WavefrontAreaRatio, Floor, Caustics, GodRays, ReflectedCaustics;
+// the others read present = false), updated by each dispatch that carries the view. The shared passes
 // (Pass::TileIrradiance, Pass::ObjectCaustics with every view's composite, the local lights) are
 // timed once per frame in stats(context), with clampedFluxFraction.
 const FrameStats& stats(const View& view) noexcept;
