@@ -30,6 +30,7 @@ FrameReceivers makeFrameReceivers(int width, int height, const glm::dvec3& camer
   r.position.assign(n, glm::dvec3(0.0));
   r.normal.assign(n, glm::dvec3(0.0));
   r.valid.assign(n, 0);
+  r.above.assign(n, 0);
   const glm::dmat3 viewToWorld = glm::transpose(worldToView);
   for (size_t i = 0; i < n && i < viewPositions.size() && i < normals.size() && i < sky.size();
        ++i) {
@@ -41,6 +42,7 @@ FrameReceivers makeFrameReceivers(int width, int height, const glm::dvec3& camer
     r.position[i] = p;
     r.normal[i] = normal / length;
     r.valid[i] = r.depthBelow(i) > 0.0 ? 1 : 0;
+    r.above[i] = r.depthBelow(i) < 0.0 ? 1 : 0;
   }
   return r;
 }

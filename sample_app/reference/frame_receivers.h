@@ -19,6 +19,9 @@ struct FrameReceivers {
   std::vector<glm::dvec3> position;  // camera-relative world (m)
   std::vector<glm::dvec3> normal;    // unit world normal from the G-buffer
   std::vector<std::uint8_t> valid;   // 1: a surface under the water level is drawn here
+  // 1: a surface above the water level is drawn here (the receivers of the light the water
+  // reflects up, FrameTraceDesc::reflected). Empty: none.
+  std::vector<std::uint8_t> above;
 
   size_t size() const { return static_cast<size_t>(width) * static_cast<size_t>(height); }
   // Angle one pixel subtends at the centre of the view (rad).
@@ -33,7 +36,7 @@ struct FrameReceivers {
 // Receivers from a read-back G-buffer: `viewPositions` (view space, per pixel, from the depth
 // reconstruction) and world normals; `sky` marks pixels where nothing was drawn. A pixel is a
 // valid receiver when it is not sky, its position is finite, its normal is unit and it lies
-// below the water level.
+// below the water level; `above` when it is all that but lies above the level.
 FrameReceivers makeFrameReceivers(int width, int height, const glm::dvec3& camera,
                                   const glm::dmat3& worldToView, const glm::dvec4& projection,
                                   double level, const std::vector<glm::dvec3>& viewPositions,

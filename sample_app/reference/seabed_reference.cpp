@@ -211,6 +211,18 @@ double fresnelTransmittance(double cosIncident, double ior) {
   return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
 }
 
+double fresnelReflectance(double cosIncident, double ior) {
+  const double ci = std::clamp(cosIncident, 0.0, 1.0);
+  const double si2 = 1.0 - ci * ci;
+  const double st2 = si2 / (ior * ior);
+  if (st2 >= 1.0) return 1.0;  // total internal reflection (ior < 1 only)
+  const double ct = std::sqrt(1.0 - st2);
+  const double rs = (ci - ior * ct) / (ci + ior * ct);
+  const double rp = (ior * ci - ct) / (ior * ci + ct);
+  const double r = 0.5 * (rs * rs + rp * rp);
+  return std::isfinite(r) ? std::clamp(r, 0.0, 1.0) : 1.0;
+}
+
 glm::dvec3 refractSunRay(const glm::dvec3& towardSun, double slopeX, double slopeZ, double ior) {
   const glm::dvec3 normal = glm::normalize(glm::dvec3(-slopeX, 1.0, -slopeZ));
   return glm::refract(-glm::normalize(towardSun), normal, 1.0 / ior);

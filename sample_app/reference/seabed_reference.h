@@ -110,6 +110,8 @@ struct ReferenceResult {
 // Unpolarised Fresnel transmittance from air into a medium of index `ior` at an incidence
 // cosine cosIncident in [0, 1]: 1 - (Rs + Rp) / 2.
 double fresnelTransmittance(double cosIncident, double ior);
+// The reflected share at the same incidence: (Rs + Rp) / 2 (the two add to 1 up to rounding).
+double fresnelReflectance(double cosIncident, double ior);
 
 // Direction of a ray going DOWN into the water, refracted from the sun at a surface with the
 // given slopes; y < 0 except for degenerate (near-vertical) normals.
