@@ -49,6 +49,13 @@ postfx_add_test(reference_frame_tests
           unit/pattern_comparison_test.cpp unit/reference_frame_casters_test.cpp
   LIBS ocean_reference)
 
+# The traced frame reference's reflected light above the water (FrameTraceDesc::reflected):
+# flat water's mirror light, a wave's reflected and refracted flux against the sun's, where none
+# may land, its noise, determinism, and the refracted light untouched; CPU only.
+postfx_add_test(reference_reflected_tests
+  SOURCES unit/reference_frame_reflected_test.cpp
+  LIBS ocean_reference)
+
 # The traced frame reference's light against the plugin's own added light (same units).
 postfx_add_test(reference_frame_units_tests GL
   SOURCES gl/reference_frame_units_test.cpp

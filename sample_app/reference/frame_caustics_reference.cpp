@@ -12,6 +12,7 @@
 
 #include "local_light_launch.h"
 #include "photon_launch_plan.h"
+#include "reflected_light_path.h"
 
 namespace ocean::reference {
 namespace {
@@ -26,17 +27,29 @@ constexpr double kSumScale = 4294967296.0;  // 2^32
 constexpr double kNoiseFloor = 0.2;
 // A photon counts for a pixel only on a surface turned within 60 degrees of the pixel's.
 constexpr double kMinNormalAgreement = 0.5;
+// Mirrorings of one reflected photon between waves before its light is given up.
+constexpr int kMaxMirrorBounces = 4;
+// The reflected launch's random streams differ from the refracted one's by this.
+constexpr std::uint64_t kMirrorStream = 0x6A09E667F3BCC909ull;
 
 struct Accumulator {
   std::vector<std::int64_t> sum;
-  std::vector<std::int64_t> object;  // 3 per pixel (RGB), with casters only
-  std::vector<std::int64_t> local;   // 3 per pixel (RGB), with traced local lights only
-  void reset(size_t n, bool casters, bool lights) {
+  std::vector<std::int64_t> object;     // 3 per pixel (RGB), with casters only
+  std::vector<std::int64_t> local;      // 3 per pixel (RGB), with traced local lights only
+  std::vector<std::int64_t> reflected;  // with reflected light only
+  std::uint64_t backOfWave = 0, mirrorBackOfWave = 0, mirrorIntoWater = 0, mirrorRebounds = 0;
+  void reset(size_t n, bool casters, bool lights, bool mirror) {
     sum.assign(n, 0);
     object.assign(casters ? 3 * n : 0, 0);
     local.assign(lights ? 3 * n : 0, 0);
+    reflected.assign(mirror ? n : 0, 0);
+    backOfWave = mirrorBackOfWave = mirrorIntoWater = mirrorRebounds = 0;
   }
 };
+
+// Which of a water photon's paths a launch follows: the refracted light under the water, or
+// the reflected light above it (a launch of its own: see the header).
+enum class PhotonPath { Refracted, Reflected };
 
 // Where the sun ray through the mean plane at world (u, v) meets the surface: the root of
 // g(p) = p - (u, v) - s h(p), s = sun.xz / sun.y, by Newton's method with the surface's own
@@ -76,6 +89,14 @@ std::vector<int> searchWindows(const std::vector<int>& reach, int width, int hei
   return out;
 }
 
+// The pixels that gather one kind of light (the refracted under the water, the reflected above
+// it) and their kernels.
+struct Kernels {
+  std::vector<double> radiusSquared;  // per pixel, 0 = gathers none of it
+  // Per pixel: how many pixels around a photon projected there can hold it in their kernel.
+  std::vector<int> window;
+};
+
 struct Frame {
   const Surface& water;
   const EmbreeScene& scene;
@@ -84,31 +105,34 @@ struct Frame {
   glm::dvec3 sun;
   glm::dvec3 up;  // unperturbed refracted sun reversed (receiver -> surface)
   double flatTransmittance = 1.0;
-  std::vector<double> radiusSquared;  // per pixel, 0 = not a receiver
-  // Per pixel: how many pixels around a photon projected there can hold it in their kernel.
-  std::vector<int> window;
+  Kernels seabed;  // the receivers under the water
   SunDisc disc{glm::dvec3(0.0, 1.0, 0.0), 0.0};
   CasterPathDesc casterPath;
+  // Reflected light: the receivers above the water, l_r (receiver -> water under flat water)
+  // and flat water's reflectance at the sun's incidence.
+  Kernels mirror;
+  glm::dvec3 mirrorDown{0.0, -1.0, 0.0};
+  double flatReflectance = 1.0;
 };
 
 // A photon of `weight` (per channel) landing at x on a surface of normal `normal`: added to
-// the kernel sums (Channels per pixel) of every pixel whose kernel holds it.
+// the kernel sums (Channels per pixel) of every pixel of `kernels` whose kernel holds it.
 template <int Channels>
-void splat(const Frame& f, const glm::dvec3& x, const glm::dvec3& normal, const double* weight,
-           std::int64_t* sums) {
+void splat(const Frame& f, const Kernels& kernels, const glm::dvec3& x, const glm::dvec3& normal,
+           const double* weight, std::int64_t* sums) {
   const FrameReceivers& r = f.receivers;
   glm::dvec2 pixel;
   if (!r.project(x, pixel)) return;
   const int cx = static_cast<int>(std::floor(pixel.x)), cy = static_cast<int>(std::floor(pixel.y));
   if (cx < -64 || cy < -64 || cx >= r.width + 64 || cy >= r.height + 64) return;
-  const int w0 = f.window[static_cast<size_t>(std::clamp(cy, 0, r.height - 1)) * r.width +
-                          std::clamp(cx, 0, r.width - 1)];
+  const int w0 = kernels.window[static_cast<size_t>(std::clamp(cy, 0, r.height - 1)) * r.width +
+                                std::clamp(cx, 0, r.width - 1)];
   const int x0 = std::max(cx - w0, 0), x1 = std::min(cx + w0, r.width - 1);
   const int y0 = std::max(cy - w0, 0), y1 = std::min(cy + w0, r.height - 1);
   for (int py = y0; py <= y1; ++py) {
     for (int px = x0; px <= x1; ++px) {
       const size_t i = static_cast<size_t>(py) * r.width + px;
-      const double r2 = f.radiusSquared[i];
+      const double r2 = kernels.radiusSquared[i];
       if (!(r2 > 0.0)) continue;
       const glm::dvec3 d = x - r.position[i];
       const double d2 = glm::dot(d, d);
@@ -120,15 +144,65 @@ void splat(const Frame& f, const glm::dvec3& x, const glm::dvec3& normal, const 
   }
 }
 
-// One cell's photons of one batch, splatted into `acc`.
-void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cellX, int cellZ,
-               Accumulator& acc) {
+// A sunlit photon of horizontal beam area `cellWeight` that met the water at `entry` (world x,
+// z; height above the level) where the normal is `normal`: mirrored there, weighted by the
+// reflectance relative to flat water's, and splatted where it first lands on a face turned
+// toward it (mirrored again by any wave it runs into first).
+void reflectPhoton(const Frame& f, const glm::dvec3& sunRay, const glm::dvec3& entry,
+                   const glm::dvec3& normal, double cosIncident, double cellWeight,
+                   Accumulator& acc) {
+  const FrameReceivers& r = f.receivers;
+  const double levelRelative = r.level - r.camera.y;
+  double w = cellWeight * fresnelReflectance(cosIncident, f.desc.ior) / f.flatReflectance;
+  glm::dvec3 at = entry;
+  glm::dvec3 dir = glm::reflect(-sunRay, normal);
+  for (int bounce = 0;; ++bounce) {
+    const WaterCrossing again = nextWaterCrossing(f.water, at, dir);
+    if (again.kind == WaterCrossing::Kind::Lost) {
+      ++acc.mirrorIntoWater;
+      return;
+    }
+    const bool meets = again.kind == WaterCrossing::Kind::Meets;
+    const glm::dvec3 from(at.x - r.camera.x, levelRelative + at.y, at.z - r.camera.z);
+    RayHit hit;
+    if (f.scene.intersect(from, dir, 0.0, meets ? again.t : 1e30, hit)) {
+      if (glm::dot(dir, hit.normal) < 0.0) {  // a face turned away absorbs it
+        const double weight[1] = {w};
+        splat<1>(f, f.mirror, from + dir * hit.t, hit.normal, weight, acc.reflected.data());
+      }
+      return;
+    }
+    if (!meets) return;  // up into the sky
+    if (bounce + 1 >= kMaxMirrorBounces) {
+      ++acc.mirrorIntoWater;
+      return;
+    }
+    // A later wave: its reflected share goes on, the rest enters the water (not followed here).
+    at += dir * again.t;
+    const SurfaceSample s = f.water.sample(at.x, at.z);
+    const glm::dvec3 n = glm::normalize(glm::dvec3(-s.slopeX, 1.0, -s.slopeZ));
+    const double cosAgain = -glm::dot(dir, n);
+    if (!(cosAgain > 0.0)) {
+      ++acc.mirrorIntoWater;
+      return;
+    }
+    if (bounce == 0) ++acc.mirrorRebounds;
+    w *= fresnelReflectance(cosAgain, f.desc.ior);
+    dir = glm::reflect(dir, n);
+  }
+}
+
+// One cell's photons of one batch along `path`, splatted into `acc`. The reflected launch draws
+// from streams of its own: the refracted one's photons are the same with or without it.
+void traceCell(const Frame& f, const PhotonLaunchPlan& plan, PhotonPath path, int batch, int cellX,
+               int cellZ, Accumulator& acc) {
   const size_t cell = static_cast<size_t>(cellZ) * plan.columns + cellX;
   const double need = plan.need[cell];
   if (!(need > 0.0)) return;
-  postfx::water::GaussianRandom random((f.desc.seed * 0x9E3779B97F4A7C15ull) ^
-                                       (static_cast<std::uint64_t>(batch) << 40) ^
-                                       (cell * 0xD1B54A32D192ED03ull));
+  const bool mirror = path == PhotonPath::Reflected;
+  postfx::water::GaussianRandom random(
+      (f.desc.seed * 0x9E3779B97F4A7C15ull) ^ (static_cast<std::uint64_t>(batch) << 40) ^
+      (cell * 0xD1B54A32D192ED03ull) ^ (mirror ? kMirrorStream : 0ull));
   random.nextBits();
   // n x n strata, or one photon with probability `need` (weight 1 / need) where less than one
   // is needed.
@@ -141,7 +215,7 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
   const double levelRelative = r.level - r.camera.y;
   const std::function<void(const CasterLanding&)> land = [&f, &acc](const CasterLanding& l) {
     const double weight[3] = {l.weight.x, l.weight.y, l.weight.z};
-    splat<3>(f, l.point, l.normal, weight, acc.object.data());
+    splat<3>(f, f.seabed, l.point, l.normal, weight, acc.object.data());
   };
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b < n; ++b) {
@@ -156,7 +230,16 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
       const glm::dvec3 entry = entryPoint(f.water, sunRay, u, v, at);
       const glm::dvec3 normal = glm::normalize(glm::dvec3(-at.slopeX, 1.0, -at.slopeZ));
       const double cosIncident = glm::dot(sunRay, normal);
-      if (!(cosIncident > 0.0)) continue;  // the back of a wave: no light enters here
+      if (!(cosIncident > 0.0)) {  // the back of a wave: no light enters or is reflected here
+        ++(mirror ? acc.mirrorBackOfWave : acc.backOfWave);
+        continue;
+      }
+      if (mirror) {
+        const glm::dvec3 from(entry.x - r.camera.x, levelRelative + entry.y, entry.z - r.camera.z);
+        if (f.scene.boundsMax().y > from.y && f.scene.occluded(from, sunRay, 0.0, 1e30)) continue;
+        reflectPhoton(f, sunRay, entry, normal, cosIncident, cellWeight, acc);
+        continue;
+      }
       const glm::dvec3 dir = refractSunRay(sunRay, at.slopeX, at.slopeZ, f.desc.ior);
       if (!(dir.y < 0.0)) continue;
       const double w =
@@ -168,7 +251,7 @@ void traceCell(const Frame& f, const PhotonLaunchPlan& plan, int batch, int cell
       if (!(glm::dot(dir, hit.normal) < 0.0)) continue;  // a face turned away absorbs it
       const glm::dvec3 x = from + dir * hit.t;
       const double weight[1] = {w};
-      splat<1>(f, x, hit.normal, weight, acc.sum.data());
+      splat<1>(f, f.seabed, x, hit.normal, weight, acc.sum.data());
       if (isCaster(f.desc.casters, hit.mesh))
         followThroughCasters(f.scene, f.desc.casters, f.casterPath, from, dir, hit, glm::dvec3(w),
                              random, land);
@@ -201,7 +284,7 @@ void traceLightRow(const Frame& f, const LightCap& cap, int batch, int row, Accu
     const double wet = wetLength(f, cap.position, entry) + wetLength(f, l.from, l.point);
     const glm::dvec3 w = l.weight * glm::exp(-f.desc.waterAbsorption * wet);
     const double weight[3] = {w.x, w.y, w.z};
-    splat<3>(f, l.point, l.normal, weight, acc.local.data());
+    splat<3>(f, f.seabed, l.point, l.normal, weight, acc.local.data());
   };
   for (int i = 0; i < n; ++i) {
     const double cosTheta = 1.0 - (row + random.nextUniform()) / n * (1.0 - cap.cosHalf);
@@ -234,6 +317,20 @@ bool litByFlatWater(const Frame& f, size_t i) {
   return !(f.scene.boundsMax().y > atSurface.y && f.scene.occluded(atSurface, f.sun, 0.0, 1e30));
 }
 
+// Flat water's mirror light reaches receiver i (above the level): it faces l_r, nothing lies on
+// the mirror ray down from it to the level, and the water point there is sunlit.
+bool litByFlatMirror(const Frame& f, size_t i) {
+  const FrameReceivers& r = f.receivers;
+  const glm::dvec3& q = r.position[i];
+  const glm::dvec3& n = r.normal[i];
+  if (!(glm::dot(n, f.mirrorDown) > 0.0)) return false;
+  const glm::dvec3 from = q + n * std::max(1e-3, 1e-4 * glm::length(q));
+  const double toWater = (r.level - r.camera.y - from.y) / f.mirrorDown.y;
+  if (toWater > 0.0 && f.scene.occluded(from, f.mirrorDown, 0.0, toWater)) return false;
+  const glm::dvec3 atWater = from + f.mirrorDown * std::max(toWater, 0.0);
+  return !(f.scene.boundsMax().y > atWater.y && f.scene.occluded(atWater, f.sun, 0.0, 1e30));
+}
+
 // Under flat water the light reaching receiver i passes through a caster first: the unperturbed
 // refracted ray up from it meets a caster before the water plane.
 bool inCasterShadow(const Frame& f, size_t i) {
@@ -246,6 +343,121 @@ bool inCasterShadow(const Frame& f, size_t i) {
   RayHit hit;
   return toSurface > 0.0 && f.scene.intersect(from, f.up, 0.0, toSurface, hit) &&
          isCaster(f.desc.casters, hit.mesh);
+}
+
+// A receiver's kernel radius (m) and how many pixels from it a photon in its kernel can project.
+struct KernelSize {
+  double radius = 0.0;
+  int reach = 0;
+};
+
+KernelSize kernelSize(const FrameReceivers& receivers, size_t i, const FrameTraceDesc& desc,
+                      double rpp) {
+  const glm::dvec3& q = receivers.position[i];
+  const glm::dvec3& n = receivers.normal[i];
+  const double distance = glm::length(q);
+  const double facing = distance > 0.0 ? std::abs(glm::dot(n, q)) / distance : 1.0;
+  const double radius =
+      std::max(desc.kernelScale * distance * rpp / std::sqrt(std::max(facing, 1.0 / 16.0)),
+               desc.minKernelRadius);
+  // A photon within r_i of q_i projects at most r_i / (|q_i| rpp) pixels (+1 for the pixel
+  // centre) from pixel i; the area-matched radius keeps that below 4 kernelScale.
+  const int reach =
+      static_cast<int>(std::ceil(std::min(radius / std::max(distance * rpp, 1e-12), 64.0))) + 1;
+  return {radius, reach};
+}
+
+// Photons per square metre of the water plane a kernel of `radius` receiving `flat` (its light
+// under flat water, in photons' units) needs.
+double launchDensity(const FrameTraceDesc& desc, double radius, double flat) {
+  double density =
+      desc.kernelPhotonsPerBatch / (kPi * radius * radius * std::max(flat, kNoiseFloor));
+  // Where that is under one photon per cell, the cell launches single photons at random:
+  // plain Poisson counting, without the several-fold gain of stratification. Such kernels
+  // (large, far away) get more photons, up to one per cell, so that they converge with the
+  // stratified ones instead of setting the number of batches.
+  const double cellArea = desc.cellSize * desc.cellSize;
+  if (density * cellArea < 1.0) density = std::min(density * desc.sparseBoost, 1.0 / cellArea);
+  return density;
+}
+
+// The receivers above the level (reflected light): their kernels into f.mirror, kernel radii
+// and flat mirror light into `result`, and where on the water plane their light comes from.
+// Flat water mirrors the sun to a receiver h metres above the level from the water point
+// h (sun.xz / sun.y) toward the sun. A wave of height eta moves the sun's entry by
+// eta sun.xz / sun.y and the reflected ray's start as much again; a normal tilted by the slope
+// turns the reflected ray by twice its tilt, moving its origin at most maxMirrorDrift per metre
+// of rise (from the lowest trough to the receiver); the kernel disc adds its radius on every
+// path. Each bound is taken 5 % wider (the drift is sampled, not solved).
+std::vector<LaunchNeed> planMirrorReceivers(Frame& f, double rpp, FrameTraceResult& result) {
+  const FrameReceivers& receivers = f.receivers;
+  const FrameTraceDesc& desc = f.desc;
+  const size_t count = receivers.size();
+  const double maxHeight = f.water.maxHeight();
+  const double slope = f.water.maxSlope() + std::tan(desc.sunAngularRadius);
+  const glm::dvec2 toSun(f.sun.x / f.sun.y, f.sun.z / f.sun.y);
+  const double mirrorDrift = 1.05 * maxMirrorDrift(f.sun, slope);
+  const double heightDrift = 1.05 * 2.0 * glm::length(toSun) * maxHeight;
+  f.mirror.radiusSquared.assign(count, 0.0);
+  std::vector<int> reach(count, 0);
+  std::vector<LaunchNeed> needs;
+  for (size_t i = 0; i < count; ++i) {
+    if (!receivers.above[i]) continue;
+    const KernelSize kernel = kernelSize(receivers, i, desc, rpp);
+    result.kernelRadius[i] = kernel.radius;
+    f.mirror.radiusSquared[i] = kernel.radius * kernel.radius;
+    reach[i] = kernel.reach;
+    const glm::dvec3& n = receivers.normal[i];
+    result.flatReflected[i] = std::max(glm::dot(n, f.mirrorDown), 0.0) / -f.mirrorDown.y;
+    if (!mayReceiveMirrorLight(n, f.sun, f.water.maxSlope(), desc.sunAngularRadius)) continue;
+    const double height = -receivers.depthBelow(i);
+    const glm::dvec3& q = receivers.position[i];
+    const glm::dvec2 world(q.x + receivers.camera.x, q.z + receivers.camera.z);
+    const double kernelReach = kernel.radius * (1.0 + glm::length(toSun) + mirrorDrift);
+    needs.push_back(
+        {world + toSun * height,
+         mirrorDrift * (height + kernel.radius + maxHeight) + heightDrift + kernelReach + 1e-3,
+         launchDensity(desc, kernel.radius, result.flatReflected[i])});
+  }
+  f.mirror.window = searchWindows(reach, receivers.width, receivers.height);
+  return needs;
+}
+
+// A launch plan of at most `maxPhotons` per batch (thinned uniformly above it).
+PhotonLaunchPlan planLaunch(const std::vector<LaunchNeed>& needs, const FrameTraceDesc& desc) {
+  PhotonLaunchPlan plan = planPhotonLaunch(needs, desc.cellSize);
+  if (plan.photons() > static_cast<double>(desc.maxPhotonsPerBatch)) {
+    const double thin = static_cast<double>(desc.maxPhotonsPerBatch) / plan.photons();
+    for (double& n : plan.need) n *= thin;
+  }
+  return plan;
+}
+
+// Per pixel, over batches, one kind of light's batch estimates: their sum and sum of squares
+// (summed in batch order from the integer batch sums: deterministic).
+struct BatchMoments {
+  std::vector<double> sum, squares;
+  void add(size_t i, double estimate) {
+    sum[i] += estimate;
+    squares[i] += estimate * estimate;
+  }
+  // Mean and standard error of the mean of `batches` independent estimates (their scatter).
+  double mean(size_t i, double batches) const { return sum[i] / batches; }
+  double standardError(size_t i, double batches) const {
+    const double e = sum[i] / batches;
+    const double variance =
+        batches > 1.0 ? std::max(squares[i] - batches * e * e, 0.0) / (batches - 1.0) : 0.0;
+    return std::sqrt(variance / batches);
+  }
+};
+
+struct NoiseStatistics {
+  double median = 0.0, quantile = 0.0, max = 0.0;
+};
+
+NoiseStatistics noiseStatistics(const std::vector<double>& noise, double q) {
+  return {quantile(noise, 0.5), quantile(noise, q),
+          noise.empty() ? 0.0 : *std::max_element(noise.begin(), noise.end())};
 }
 
 }  // namespace
@@ -266,16 +478,27 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   const bool sunUp = glm::normalize(desc.towardSun).y > 0.0;
   const bool casters = !desc.casters.empty();
   const bool lights = casters && !desc.lights.empty();
+  // Reflected light: sunlight only, onto the receivers above the level.
+  const bool mirror = desc.reflected && sunUp && receivers.above.size() == count;
+  if (desc.reflected) {
+    result.reflectedIrradiance.assign(count, 0.0);
+    result.flatReflected.assign(count, 0.0);
+    result.reflectedStandardError.assign(count, 0.0);
+    result.reflectedNoise.assign(count, 0.0);
+    result.reflectedLit.assign(count, 0);
+  }
   if (!sunUp && !lights) return result;
   const glm::dvec3 sun = sunUp ? glm::normalize(desc.towardSun) : glm::dvec3(0.0, 1.0, 0.0);
 
-  Frame f{water, scene, receivers,         desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior), 1.0,
-          {},    {},    SunDisc(sun, 0.0), {}};
+  Frame f{water, scene, receivers,         desc, sun, -refractSunRay(sun, 0.0, 0.0, desc.ior),
+          1.0,   {},    SunDisc(sun, 0.0), {},   {},  flatMirrorDirection(sun),
+          1.0};
   f.flatTransmittance = fresnelTransmittance(sun.y, desc.ior);
   f.disc = SunDisc(sun, sunUp ? desc.sunAngularRadius : 0.0);
-  f.radiusSquared.assign(count, 0.0);
+  f.seabed.radiusSquared.assign(count, 0.0);
   f.casterPath.waterIor = desc.ior;
   f.casterPath.waterLevel = receivers.level - receivers.camera.y;
+  f.flatReflectance = fresnelReflectance(sun.y, desc.ior);
   if (casters) {
     result.objectIrradiance.assign(count, glm::dvec3(0.0));
     result.casterShadow.assign(count, 0);
@@ -283,7 +506,6 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
 
   // Kernels, flat irradiance, lit mask and what each receiver needs from the launch.
   const double rpp = receivers.radiansPerPixel();
-  const double kernelPhotons = desc.kernelPhotonsPerBatch;
   const glm::dvec3 flatDown = -f.up;
   const glm::dvec2 drift(flatDown.x / -flatDown.y, flatDown.z / -flatDown.y);
   // The sun's disc moves a ray less than a slope of its angular radius would (the refraction
@@ -298,52 +520,42 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
     if (!receivers.valid[i]) continue;
     const glm::dvec3& q = receivers.position[i];
     const glm::dvec3& n = receivers.normal[i];
-    const double distance = glm::length(q);
-    const double facing = distance > 0.0 ? std::abs(glm::dot(n, q)) / distance : 1.0;
-    const double radius =
-        std::max(desc.kernelScale * distance * rpp / std::sqrt(std::max(facing, 1.0 / 16.0)),
-                 desc.minKernelRadius);
+    const KernelSize kernel = kernelSize(receivers, i, desc, rpp);
+    const double radius = kernel.radius;
     result.kernelRadius[i] = radius;
-    f.radiusSquared[i] = radius * radius;
-    // A photon within r_i of q_i projects at most r_i / (|q_i| rpp) pixels (+1 for the pixel
-    // centre) from pixel i; the area-matched radius keeps that below 4 kernelScale.
-    reach[i] =
-        static_cast<int>(std::ceil(std::min(radius / std::max(distance * rpp, 1e-12), 64.0))) + 1;
+    f.seabed.radiusSquared[i] = radius * radius;
+    reach[i] = kernel.reach;
     if (!sunUp) continue;
     result.flatIrradiance[i] = std::max(glm::dot(n, f.up), 0.0) / f.up.y;
     const double depth = receivers.depthBelow(i);
     const glm::dvec2 world(q.x + receivers.camera.x, q.z + receivers.camera.z);
     // Light can land anywhere on the kernel disc, which spans r horizontally and r in depth.
     const double kernelReach = radius * (1.0 + glm::length(drift) + slopeDrift);
-    double density =
-        kernelPhotons / (kPi * radius * radius * std::max(result.flatIrradiance[i], kNoiseFloor));
-    // Where that is under one photon per cell, the cell launches single photons at random:
-    // plain Poisson counting, without the several-fold gain of stratification. Such kernels
-    // (large, far away) get more photons, up to one per cell, so that they converge with the
-    // stratified ones instead of setting the number of batches.
-    const double cellArea = desc.cellSize * desc.cellSize;
-    if (density * cellArea < 1.0) density = std::min(density * desc.sparseBoost, 1.0 / cellArea);
     needs.push_back({world - drift * depth,
                      slopeDrift * (depth + water.maxHeight()) + heightDrift + kernelReach + 1e-3,
-                     density});
+                     launchDensity(desc, radius, result.flatIrradiance[i])});
   }
-  f.window = searchWindows(reach, receivers.width, receivers.height);
-  std::vector<double> litNoise;
+  f.seabed.window = searchWindows(reach, receivers.width, receivers.height);
+  const std::vector<LaunchNeed> mirrorNeeds =
+      mirror ? planMirrorReceivers(f, rpp, result) : std::vector<LaunchNeed>{};
   {
     std::vector<std::thread> threads;
     const int threadCount = std::max(1, desc.threads);
     for (int t = 0; t < threadCount; ++t) {
       threads.emplace_back([&, t] {
-        for (size_t i = static_cast<size_t>(t); i < count; i += static_cast<size_t>(threadCount))
+        for (size_t i = static_cast<size_t>(t); i < count; i += static_cast<size_t>(threadCount)) {
           if (receivers.valid[i] && sunUp) {
             result.lit[i] = litByFlatWater(f, i) ? 1 : 0;
             if (casters && !result.lit[i]) result.casterShadow[i] = inCasterShadow(f, i) ? 1 : 0;
           }
+          if (mirror && receivers.above[i]) result.reflectedLit[i] = litByFlatMirror(f, i) ? 1 : 0;
+        }
       });
     }
     for (std::thread& thread : threads) thread.join();
   }
   for (size_t i = 0; i < count; ++i) result.litPixels += result.lit[i];
+  for (std::uint8_t l : result.reflectedLit) result.reflectedLitPixels += l;
 
   // Local lights: each pixel's direct light from them (the unit of their noise), the casters'
   // shadows in it, and one stratified cone of photons per light and caster.
@@ -351,51 +563,62 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
   std::vector<double> localUnit;
   if (lights) {
     result.localIrradiance.assign(count, glm::dvec3(0.0));
-    caps = planLightCaps(scene, receivers, desc, f.radiusSquared, result.localDirect,
+    caps = planLightCaps(scene, receivers, desc, f.seabed.radiusSquared, result.localDirect,
                          result.casterShadow, localUnit, result.localDirectMedian);
     for (const LightCap& cap : caps)
       result.lightPhotonsPerBatch += static_cast<std::uint64_t>(cap.strata) * cap.strata;
   }
   for (std::uint8_t s : result.casterShadow) result.casterShadowPixels += s;
 
-  PhotonLaunchPlan plan = sunUp ? planPhotonLaunch(needs, desc.cellSize) : PhotonLaunchPlan{};
-  if (plan.photons() > static_cast<double>(desc.maxPhotonsPerBatch)) {
-    const double thin = static_cast<double>(desc.maxPhotonsPerBatch) / plan.photons();
-    for (double& n : plan.need) n *= thin;
-  }
-  const auto perBatch =
-      static_cast<std::uint64_t>(std::llround(plan.photons())) + result.lightPhotonsPerBatch;
+  const PhotonLaunchPlan plan = sunUp ? planLaunch(needs, desc) : PhotonLaunchPlan{};
+  const PhotonLaunchPlan mirrorPlan =
+      !mirrorNeeds.empty() ? planLaunch(mirrorNeeds, desc) : PhotonLaunchPlan{};
+  result.reflectedPhotonsPerBatch = static_cast<std::uint64_t>(std::llround(mirrorPlan.photons()));
+  const auto perBatch = static_cast<std::uint64_t>(std::llround(plan.photons())) +
+                        result.lightPhotonsPerBatch + result.reflectedPhotonsPerBatch;
   result.photonsPerBatch = perBatch;
 
   const int threadCount = std::max(1, desc.threads);
-  // Per pixel, over batches: the sum of the batch estimates and of their squares (summed in
-  // batch order from the integer batch sums: deterministic).
-  std::vector<double> sum(count, 0.0), squares(count, 0.0);
+  // Per pixel, over batches: the batch estimates of the light under the water (seabed, plus
+  // the mean object light and the local lights' in their units) and of the reflected light.
+  BatchMoments moments{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0)};
+  BatchMoments mirrorMoments{std::vector<double>(mirror ? count : 0, 0.0),
+                             std::vector<double>(mirror ? count : 0, 0.0)};
   // With casters, apart: the seabed estimate's and the object light's sums.
   std::vector<double> seabedSum(casters ? count : 0, 0.0);
   std::vector<glm::dvec3> objectSum(casters ? count : 0, glm::dvec3(0.0));
   std::vector<glm::dvec3> localSum(lights ? count : 0, glm::dvec3(0.0));
   Accumulator batchTotal;
   std::vector<Accumulator> partial(static_cast<size_t>(threadCount));
+  std::vector<double> litNoise, mirrorNoise;
   for (int batch = 0; batch < std::max(desc.maxBatches, 1); ++batch) {
     std::vector<std::thread> threads;
     for (int t = 0; t < threadCount; ++t) {
-      partial[static_cast<size_t>(t)].reset(count, casters, lights);
+      partial[static_cast<size_t>(t)].reset(count, casters, lights, mirror);
       threads.emplace_back([&, t] {
+        Accumulator& acc = partial[static_cast<size_t>(t)];
         for (int row = t; row < plan.rows; row += threadCount)
           for (int column = 0; column < plan.columns; ++column)
-            traceCell(f, plan, batch, column, row, partial[static_cast<size_t>(t)]);
+            traceCell(f, plan, PhotonPath::Refracted, batch, column, row, acc);
+        for (int row = t; row < mirrorPlan.rows; row += threadCount)
+          for (int column = 0; column < mirrorPlan.columns; ++column)
+            traceCell(f, mirrorPlan, PhotonPath::Reflected, batch, column, row, acc);
         for (const LightCap& cap : caps)
           for (int row = t; row < cap.strata; row += threadCount)
-            traceLightRow(f, cap, batch, row, partial[static_cast<size_t>(t)]);
+            traceLightRow(f, cap, batch, row, acc);
       });
     }
     for (std::thread& thread : threads) thread.join();
-    batchTotal.reset(count, casters, lights);
+    batchTotal.reset(count, casters, lights, mirror);
     for (const Accumulator& p : partial) {
       for (size_t i = 0; i < count; ++i) batchTotal.sum[i] += p.sum[i];
       for (size_t k = 0; k < p.object.size(); ++k) batchTotal.object[k] += p.object[k];
       for (size_t k = 0; k < p.local.size(); ++k) batchTotal.local[k] += p.local[k];
+      for (size_t k = 0; k < p.reflected.size(); ++k) batchTotal.reflected[k] += p.reflected[k];
+      result.backOfWavePhotons += p.backOfWave;
+      result.reflectedBackOfWavePhotons += p.mirrorBackOfWave;
+      result.reflectedIntoWaterPhotons += p.mirrorIntoWater;
+      result.reflectedReboundPhotons += p.mirrorRebounds;
     }
     for (size_t i = 0; i < count; ++i) {
       double estimate = static_cast<double>(batchTotal.sum[i]) / kSumScale;
@@ -415,20 +638,26 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
         // In units of the lights' direct light here, as the sun's is in flat water's.
         estimate += (local.x + local.y + local.z) / (3.0 * kSumScale * localUnit[i]);
       }
-      sum[i] += estimate;
-      squares[i] += estimate * estimate;
+      moments.add(i, estimate);
+      if (mirror) mirrorMoments.add(i, static_cast<double>(batchTotal.reflected[i]) / kSumScale);
     }
     result.batches = batch + 1;
     result.photons += perBatch;
     const double batches = result.batches;
     litNoise.clear();
+    mirrorNoise.clear();
     for (size_t i = 0; i < count; ++i) {
+      if (mirror && receivers.above[i]) {
+        const double e = mirrorMoments.mean(i, batches);
+        const double se = mirrorMoments.standardError(i, batches);
+        result.reflectedIrradiance[i] = e;
+        result.reflectedStandardError[i] = se;
+        result.reflectedNoise[i] = se / std::max({e, result.flatReflected[i], kNoiseFloor});
+        if (result.reflectedLit[i]) mirrorNoise.push_back(result.reflectedNoise[i]);
+      }
       if (!receivers.valid[i]) continue;
-      const double e = sum[i] / batches;  // seabed + mean object light
-      // Standard error of the mean of independent batch estimates, from their scatter.
-      const double variance =
-          batches > 1.0 ? std::max(squares[i] - batches * e * e, 0.0) / (batches - 1.0) : 0.0;
-      const double se = std::sqrt(variance / batches);
+      const double e = moments.mean(i, batches);  // seabed + mean object light
+      const double se = moments.standardError(i, batches);
       result.irradiance[i] = e;
       if (casters) {
         result.irradiance[i] = seabedSum[i] / batches;
@@ -439,17 +668,37 @@ FrameTraceResult traceFrameCaustics(const Surface& water, const EmbreeScene& sce
       result.noise[i] = se / std::max({e, result.flatIrradiance[i], kNoiseFloor});
       if (result.lit[i] || (casters && result.casterShadow[i])) litNoise.push_back(result.noise[i]);
     }
-    result.noiseMedian = quantile(litNoise, 0.5);
-    result.noiseQuantile = quantile(litNoise, desc.noiseQuantile);
-    result.noiseMax = litNoise.empty() ? 0.0 : *std::max_element(litNoise.begin(), litNoise.end());
+    const NoiseStatistics mirrorStats = noiseStatistics(mirrorNoise, desc.noiseQuantile);
+    result.reflectedNoiseMedian = mirrorStats.median;
+    result.reflectedNoiseQuantile = mirrorStats.quantile;
+    result.reflectedNoiseMax = mirrorStats.max;
+    // The reflected light's noise decides convergence with the rest.
+    litNoise.insert(litNoise.end(), mirrorNoise.begin(), mirrorNoise.end());
+    const NoiseStatistics stats = noiseStatistics(litNoise, desc.noiseQuantile);
+    result.noiseMedian = stats.median;
+    result.noiseQuantile = stats.quantile;
+    result.noiseMax = stats.max;
     result.converged =
         result.batches >= std::max(desc.minBatches, 2) && result.noiseQuantile < desc.targetNoise;
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool done = result.converged || result.batches >= desc.maxBatches;
     if (desc.progress) {
-      desc.progress({result.batches, result.photons, result.noiseMedian, result.noiseQuantile,
-                     result.noiseMax, result.seconds, done, result.converged});
+      FrameTraceProgress progress;
+      progress.batch = result.batches;
+      progress.photons = result.photons;
+      progress.noiseMedian = result.noiseMedian;
+      progress.noiseQuantile = result.noiseQuantile;
+      progress.noiseMax = result.noiseMax;
+      progress.reflected = mirror;
+      progress.reflectedLitPixels = result.reflectedLitPixels;
+      progress.reflectedNoiseMedian = result.reflectedNoiseMedian;
+      progress.reflectedNoiseQuantile = result.reflectedNoiseQuantile;
+      progress.reflectedNoiseMax = result.reflectedNoiseMax;
+      progress.seconds = result.seconds;
+      progress.done = done;
+      progress.converged = result.converged;
+      desc.progress(progress);
     }
     if (done) break;
   }

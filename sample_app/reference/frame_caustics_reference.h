@@ -38,6 +38,19 @@
 //     light can reach need for kernelPhotonsPerBatch photons per kernel per batch (times
 //     sparseBoost for kernels so large that their cells launch single random photons; a pixel's
 //     light enters at most the largest slope drift from where flat water would bring it).
+//   * Reflected light above the water (FrameTraceDesc::reflected): a second launch, planned for
+//     the receivers above the level (FrameReceivers::above) as the first is for those under
+//     it, with photons of its own random streams, so that the refracted light's photons, sums
+//     and results are bit for bit those of a trace without it. Each photon that meets the water
+//     (the same entry, normal and sun occlusion as a refracted one) is mirrored about the local
+//     normal, weighted by the unpolarised Fresnel reflectance there relative to flat water's,
+//     R(cos_local) / R(sun.y), and traced (Embree) to its first hit; a face turned toward it
+//     gathers it in a kernel estimate of its own (reflectedIrradiance), one turned away absorbs
+//     it. A reflected ray that runs into a later wave (a low sun) is mirrored again there
+//     (weight times R; the refracted share is not followed), up to four times. Units: flat
+//     water's reflected flux on a horizontal receiver facing down = 1, so a flat sea gives
+//     max(n . l_r, 0) / |l_r.y| on a surface of normal n, l_r = (sun.x, -sun.y, sun.z).
+//     Casters are opaque to it (it lights their surface, not what lies behind them).
 // Deterministic: each cell's photons come from a hash of (seed, batch, cell); sums are kept in
 // 64-bit fixed point, so the result is bit-identical for any thread count.
 #include <cstdint>
@@ -56,7 +69,12 @@ namespace ocean::reference {
 struct FrameTraceProgress {
   int batch = 0;
   std::uint64_t photons = 0;
-  double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;  // over lit pixels
+  // Over lit pixels, with FrameTraceDesc::reflected also the pixels lit by the flat mirror.
+  double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;
+  // The reflected light's share of those (over the mirror-lit pixels); 0 without it.
+  bool reflected = false;
+  size_t reflectedLitPixels = 0;
+  double reflectedNoiseMedian = 0.0, reflectedNoiseQuantile = 0.0, reflectedNoiseMax = 0.0;
   double seconds = 0.0;
   bool done = false, converged = false;
 };
@@ -111,6 +129,9 @@ struct FrameTraceDesc {
   std::vector<TracedLight> lights;
   glm::dvec3 waterAbsorption{0.0};  // 1/m, per channel: the local lights' photons
   std::uint64_t maxLightPhotonsPerBatch = 4'000'000;
+  // Also trace the sunlight the water reflects up onto the receivers above the level
+  // (FrameTraceResult::reflectedIrradiance); its noise then counts toward convergence.
+  bool reflected = false;
   std::function<void(const FrameTraceProgress&)> progress;  // after every batch
 };
 
@@ -120,7 +141,7 @@ struct FrameTraceResult {
   std::vector<double> flatIrradiance;  // max(n.u, 0) / u.y: flat water, no occluders
   std::vector<double> standardError;   // of irradiance
   std::vector<double> noise;           // standardError / max(irradiance, flatIrradiance)
-  std::vector<double> kernelRadius;    // m
+  std::vector<double> kernelRadius;    // m (above the level too, with reflected light)
   // Light that went through (or off) a caster, per channel, in the units of `irradiance`;
   // empty without casters. Its batch scatter is part of `standardError` and `noise`, which
   // are of the sum irradiance + mean(objectIrradiance).
@@ -141,7 +162,27 @@ struct FrameTraceResult {
   std::vector<std::uint8_t> lit;
   size_t litPixels = 0;
   size_t casterShadowPixels = 0;
-  // Over lit pixels and the casters' shadows.
+  // Reflected light above the water (FrameTraceDesc::reflected), per pixel; empty without it,
+  // 0 where the pixel is no receiver above the level. Units: flat water's reflected flux on a
+  // horizontal receiver facing down = 1.
+  std::vector<double> reflectedIrradiance;
+  std::vector<double> flatReflected;  // max(n . l_r, 0) / |l_r.y|: flat water, no occluders
+  std::vector<double> reflectedStandardError;
+  std::vector<double> reflectedNoise;  // its error / max(reflected, flatReflected, 0.2)
+  // 1 where flat water's mirror light reaches the point: above the level, facing l_r, nothing
+  // on the mirror ray down from it to the level, and the water point there sunlit.
+  std::vector<std::uint8_t> reflectedLit;
+  size_t reflectedLitPixels = 0;
+  double reflectedNoiseMedian = 0.0, reflectedNoiseQuantile = 0.0, reflectedNoiseMax = 0.0;
+  std::uint64_t reflectedPhotonsPerBatch = 0;  // of photonsPerBatch
+  // Photons, over all batches, whose water entry faced away from the sun (the back of a wave:
+  // no light enters or is reflected there), of the refracted and the reflected launch; and
+  // reflected photons whose light went back into the water (mirrored down, or more than four
+  // times between waves, or grazing them too long) and those mirrored by a later wave.
+  std::uint64_t backOfWavePhotons = 0, reflectedBackOfWavePhotons = 0;
+  std::uint64_t reflectedIntoWaterPhotons = 0, reflectedReboundPhotons = 0;
+  // Over lit pixels and the casters' shadows (with reflected light, also its mirror-lit pixels'
+  // reflectedNoise).
   double noiseMedian = 0.0, noiseQuantile = 0.0, noiseMax = 0.0;
   std::uint64_t photons = 0;
   std::uint64_t photonsPerBatch = 0;
