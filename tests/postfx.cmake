@@ -26,7 +26,7 @@ postfx_add_test(postfx_reflected_caustics_tests
   SOURCES gl/postfx_reflected_caustics_test.cpp
   LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy
   GL)
-target_include_directories(postfx_reflected_caustics_tests PRIVATE ${_postfx_private})
+target_include_directories(postfx_reflected_caustics_tests PRIVATE ${_postfx_private} ${CMAKE_CURRENT_SOURCE_DIR})
 
 # The scene fixtures, the CPU ray tracer and the map measurements come from ocean_reference
 # (sample_app/reference), which the report's object-caustics rows use too.

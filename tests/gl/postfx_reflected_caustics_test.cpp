@@ -20,6 +20,7 @@
 #include "core/gl_sizes.h"
 #include "core/memory_estimate.h"
 #include "core/shared_math.h"
+#include "fuzz/fuzz_values.h"
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
 #include "postfx_host_state.h"
@@ -620,6 +621,82 @@ TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous)
     if (sumA > 0.0)
       EXPECT_LT(sumDiff / sumA, 0.01) << "sun step changed the image by " << sumDiff / sumA;
   }
+}
+
+// A deterministic fuzz of what the pass reads: its settings, the sun, the water (level, IOR,
+// texels) and the camera, one or two wild values a case (NaN, infinities, bounds and past them,
+// far magnitudes). Every case is refused with the target untouched, or drawn finite with
+// nothing under the water; no GL error either way.
+TEST_F(PostfxReflectedCausticsTest, FuzzedFramesAreRefusedCleanlyOrDrawnFinite) {
+  using postfxfuzz::wild;
+  using postfxfuzz::wildFloat;
+  using postfxfuzz::wildInt;
+  Receivers s(kLookAtPier, 0.6, 0.02);
+  s.frame.reflectedCaustics.gridResolution = 64;  // fast: the fuzz is about values, not detail
+  auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics | postfx::Feature::Caustics);
+  postfxfuzz::Rng rng(32);
+  const glm::vec4 marker(0.125f, 0.25f, 0.375f, 1.0f);
+  int drawn = 0, refused = 0;
+  for (int n = 0; n < 240; ++n) {
+    postfx::FrameDesc f = s.frame;
+    postfx::ReflectedCausticsSettings& r = f.reflectedCaustics;
+    for (int e = 0, edits = 1 + rng.below(2); e < edits; ++e) {
+      switch (rng.below(12)) {
+        case 0:
+          r.intensity = wildFloat(rng, r.intensity);
+          break;
+        case 1:
+          r.windowSize = wildFloat(rng, r.windowSize);
+          break;
+        case 2:
+          r.gridResolution = wildInt(rng, r.gridResolution);
+          break;
+        case 3:
+          r.heightLayers = wildInt(rng, r.heightLayers);
+          break;
+        case 4:
+          r.maxHeight = wildFloat(rng, r.maxHeight);
+          break;
+        case 5:
+          r.maxIrradiance = wildFloat(rng, r.maxIrradiance);
+          break;
+        case 6:
+          f.sun.direction[rng.below(3)] = wild(rng, f.sun.direction.y);
+          break;
+        case 7:
+          f.water.level = wild(rng, f.water.level);
+          break;
+        case 8:
+          f.water.ior = wildFloat(rng, f.water.ior);
+          break;
+        case 9:
+          f.camera.position[rng.below(3)] = wild(rng, f.camera.position.y);
+          break;
+        case 10:
+          f.water.tileSize[0] = wild(rng, f.water.tileSize[0]);
+          break;
+        default:
+          f.sun.angularDiameterDegrees = wildFloat(rng, f.sun.angularDiameterDegrees);
+      }
+    }
+    glClearTexImage(s.gbuffer.target(), 0, GL_RGBA, GL_FLOAT, &marker[0]);
+    const postfx::Result result = postfx::dispatch(*fx, f);
+    expectNoGlErrors("fuzzed dispatch");
+    const std::vector<glm::vec4> out = readTarget(s.gbuffer);
+    if (result != postfx::Result::Ok) {
+      ++refused;
+      for (const glm::vec4& v : out) ASSERT_EQ(v, marker) << "case " << n << " refused but drew";
+      continue;
+    }
+    ++drawn;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const glm::vec4& v = out[i];
+      ASSERT_TRUE(std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b)) << "case " << n;
+      ASSERT_EQ(v.a, marker.a) << "case " << n << ": alpha written";
+    }
+  }
+  EXPECT_GT(drawn, 40);
+  EXPECT_GT(refused, 40);
 }
 
 TEST(ReflectedCausticsMath, MirrorTurnsTheLandingByTwiceTheSlope) {

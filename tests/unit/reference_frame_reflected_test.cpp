@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "caustic_light_units.h"
 #include "frame_caustics_reference.h"
 #include "reference_reflection_frames.h"
 #include "reference_test_surfaces.h"
@@ -366,6 +367,47 @@ TEST(FrameReferenceReflected, TheRefractedLightIsBitForBitTheSameWithReflectionO
     EXPECT_EQ(on.result.kernelRadius[i], off.result.kernelRadius[i]);
   }
   EXPECT_GT(underwater, 200u);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(FrameReferenceReflected, FlatMirrorLightIsExactlyThePluginsFlatSeaLight) {
+  // The reference's light with E_r = flatReflected must be the plugin's own over a flat sea
+  // (I = 1, visibility 1): albedo E_sun intensity R(sun.y) max(n . l_r, 0), no view extinction
+  // for a camera above the water; without includeMirrorMean, the waves' share only.
+  postfx::FrameDesc frame;
+  frame.sun.direction = glm::normalize(glm::dvec3(0.4, 1.0, -0.3));
+  frame.sun.irradiance = glm::vec3(3.2f, 3.0f, 2.7f);
+  frame.reflectedCaustics.intensity = 1.7f;
+  frame.water.ior = 1.333f;
+  frame.water.absorption = glm::vec3(0.3f, 0.1f, 0.05f);
+  frame.water.level = 0.0;
+  frame.camera.position = glm::dvec3(0.0, 3.0, 0.0);
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(frame.sun.direction));
+  const glm::dvec3 down(sun.x, -sun.y, sun.z);  // l_r
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.5, -1.0, 0.2));
+  const double flat = std::max(glm::dot(n, down), 0.0) / sun.y;
+  const glm::vec3 albedo(0.5f, 0.4f, 0.3f);
+  const double r = fresnelReflectance(sun.y, 1.333);
+  CausticLightUnits units = causticLightUnits(frame);
+  const glm::vec3 light = referenceReflectedLight(units, albedo, -1.5, flat, flat, 12.0);
+  for (int c = 0; c < 3; ++c) {
+    const double expected = double(albedo[c]) * double(frame.sun.irradiance[c]) * 1.7 * r *
+                            std::max(glm::dot(n, down), 0.0);
+    EXPECT_NEAR(double(light[c]), expected, 1e-5 * expected) << "channel " << c;
+    // The waves' modulation only: flat water's own light adds nothing, twice it adds it once.
+    units.includeMirrorMean = false;
+    EXPECT_EQ(referenceReflectedLight(units, albedo, -1.5, flat, flat, 12.0)[c], 0.0f);
+    EXPECT_NEAR(double(referenceReflectedLight(units, albedo, -1.5, 2.0 * flat, flat, 12.0)[c]),
+                expected, 1e-5 * expected);
+    units.includeMirrorMean = true;
+  }
+  // A sun below the horizon mirrors nothing.
+  frame.sun.direction = glm::vec3(0.3f, -0.2f, 0.0f);
+  EXPECT_EQ(referenceReflectedLight(causticLightUnits(frame), albedo, -1.5, 1.0, 1.0, 12.0),
+            glm::vec3(0.0f));
 }
 
 }  // namespace
