@@ -223,8 +223,15 @@ glm::dmat4 Renderer::updateFrameConstants(const FrameInput& input) {
   frame.ambient = glm::vec4(glm::vec3(0.45f, 0.6f, 0.85f) * skyLight, 0.0f);
   frame.absorption = glm::vec4(optics_.absorption.r, optics_.absorption.g, optics_.absorption.b, 0);
   frame.scattering = glm::vec4(optics_.scattering.r, optics_.scattering.g, optics_.scattering.b, 0);
-  frame.waterParams =
-      glm::vec4(float(ior), float(2.0 * settings_.shadowRadius / shadowMap_.size()), 0.0f, 0.0f);
+  // The bend: a point h above the level moves by h (L / L.y - S / S.y) across the beam, S the sun
+  // in air and L under the water (shadow_space.glsl).
+  glm::dvec2 bend(0.0);
+  if (settings_.airShadows && toSun.y > 0.0) {
+    const glm::dvec3 shift = toSunUnderwater / toSunUnderwater.y - toSun / toSun.y;
+    bend = glm::dvec2(shift.x, shift.z);
+  }
+  frame.waterParams = glm::vec4(float(ior), float(2.0 * settings_.shadowRadius / shadowMap_.size()),
+                                float(bend.x), float(bend.y));
   for (int c = 0; c < ocean_->cascadeCount() && c < 4; ++c) {
     const double tile = ocean_->tileSize(c);
     // The camera's place in each tile, reduced in double: float never sees 1e6 m.

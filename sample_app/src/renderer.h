@@ -36,6 +36,13 @@ struct RenderSettings {
   double shadowRadius = 40.0;      // metres around the camera the shadow map covers
   float exposure = 1.0f;
   double windSpeed = 10.0;  // m/s at 10 m height: the sea state (OceanDesc::windSpeed)
+  // The sun's shadow map is drawn along the refracted sun, right for everything under the water
+  // (the plugin masks its caustics with it). On: points above the level are moved along the sun
+  // in air onto it (shaders/sample/shadow_space.glsl), so that structures standing in the water
+  // shade each other, the water and the seabed as the sun does (the harbour; its meshes are
+  // split at the level). Off: above the level too the map is the refracted sun's, as the sea's
+  // presets have always been drawn.
+  bool airShadows = false;
 };
 
 struct FrameInput {

@@ -25,7 +25,9 @@ layout(std140, binding = 0) uniform SampleFrame {
   VEC4 ambient;               // rgb: sky ambient irradiance just below the surface
   VEC4 absorption;            // rgb: 1/m
   VEC4 scattering;            // rgb: 1/m
-  VEC4 waterParams;           // x: IOR; y: shadow texel size (world m); z,w unused
+  VEC4 waterParams;           // x: IOR; y: shadow texel size (world m); zw: the shadow map's
+                              // bend above the level, x and z shift per metre of height
+                              // (shadow_space.glsl; 0 0 without RenderSettings::airShadows)
   VEC4 cascadeTile[4];        // x: tile size (m), y: 1/tile, zw: camera xz offset in tiles
   VEC4 cascadeInfo;           // x: cascade count; y: exposure
 };
