@@ -383,21 +383,23 @@ double launchDensity(const FrameTraceDesc& desc, double radius, double flat) {
 
 // The receivers above the level (reflected light): their kernels into f.mirror, kernel radii
 // and flat mirror light into `result`, and where on the water plane their light comes from.
-// Flat water mirrors the sun to a receiver h metres above the level from the water point
-// h (sun.xz / sun.y) toward the sun. A wave of height eta moves the sun's entry by
-// eta sun.xz / sun.y and the reflected ray's start as much again; a normal tilted by the slope
-// turns the reflected ray by twice its tilt, moving its origin at most maxMirrorDrift per metre
-// of rise (from the lowest trough to the receiver); the kernel disc adds its radius on every
-// path. Each bound is taken 5 % wider (the drift is sampled, not solved).
+// A photon launched at u (the sun ray's crossing of the mean plane) meets the water at height
+// eta at u + s eta (s = sun.xz / sun.y) and rises from there with the drift L per metre of rise
+// of its reflected ray, landing at p (height h_p) when u = p.xz - L (h_p - eta) - s eta. With L
+// within rho of c (mirrorDrift), |eta| <= H and p on the kernel disc of radius r around the
+// receiver q (height h):
+//     |u - (q.xz - c h)| <= rho (h + r + H) + (|c| + |s|) H + r (1 + |c|).
+// Flat water: c = -s, rho = 0, the sun's mirror point h s toward the sun. Taken 5 % wider (the
+// drift is sampled, not solved).
 std::vector<LaunchNeed> planMirrorReceivers(Frame& f, double rpp, FrameTraceResult& result) {
   const FrameReceivers& receivers = f.receivers;
   const FrameTraceDesc& desc = f.desc;
   const size_t count = receivers.size();
   const double maxHeight = f.water.maxHeight();
-  const double slope = f.water.maxSlope() + std::tan(desc.sunAngularRadius);
-  const glm::dvec2 toSun(f.sun.x / f.sun.y, f.sun.z / f.sun.y);
-  const double mirrorDrift = 1.05 * maxMirrorDrift(f.sun, slope);
-  const double heightDrift = 1.05 * 2.0 * glm::length(toSun) * maxHeight;
+  const double s = glm::length(glm::dvec2(f.sun.x, f.sun.z)) / f.sun.y;
+  const MirrorDrift drift =
+      mirrorDrift(f.sun, f.water.maxSlope() + std::tan(desc.sunAngularRadius));
+  const double c = glm::length(drift.centre);
   f.mirror.radiusSquared.assign(count, 0.0);
   std::vector<int> reach(count, 0);
   std::vector<LaunchNeed> needs;
@@ -413,11 +415,11 @@ std::vector<LaunchNeed> planMirrorReceivers(Frame& f, double rpp, FrameTraceResu
     const double height = -receivers.depthBelow(i);
     const glm::dvec3& q = receivers.position[i];
     const glm::dvec2 world(q.x + receivers.camera.x, q.z + receivers.camera.z);
-    const double kernelReach = kernel.radius * (1.0 + glm::length(toSun) + mirrorDrift);
-    needs.push_back(
-        {world + toSun * height,
-         mirrorDrift * (height + kernel.radius + maxHeight) + heightDrift + kernelReach + 1e-3,
-         launchDensity(desc, kernel.radius, result.flatReflected[i])});
+    const double r = kernel.radius;
+    const double extent =
+        drift.radius * (height + r + maxHeight) + (c + s) * maxHeight + r * (1.0 + c);
+    needs.push_back({world - drift.centre * height, 1.05 * extent + 1e-3,
+                     launchDensity(desc, r, result.flatReflected[i])});
   }
   f.mirror.window = searchWindows(reach, receivers.width, receivers.height);
   return needs;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ocean::reference {
 namespace {
@@ -27,19 +28,25 @@ glm::dvec3 flatMirrorDirection(const glm::dvec3& towardSun) {
   return glm::dvec3(towardSun.x, -towardSun.y, towardSun.z);
 }
 
-double maxMirrorDrift(const glm::dvec3& towardSun, double maxSlope) {
-  const glm::dvec2 flat = risingDrift(-flatMirrorDirection(towardSun));
-  double drift = 0.0;
+MirrorDrift mirrorDrift(const glm::dvec3& towardSun, double maxSlope) {
+  std::vector<glm::dvec2> drifts = {risingDrift(-flatMirrorDirection(towardSun))};
   for (int r = 1; r <= 8 && maxSlope > 0.0; ++r) {
     for (int a = 0; a < 64; ++a) {
       const double angle = 2.0 * kPi * a / 64.0, radius = maxSlope * r / 8.0;
       const glm::dvec3 normal =
           glm::normalize(glm::dvec3(-radius * std::cos(angle), 1.0, -radius * std::sin(angle)));
-      const glm::dvec3 ray = glm::reflect(-towardSun, normal);
-      drift = std::max(drift, glm::length(risingDrift(ray) - flat));
+      drifts.push_back(risingDrift(glm::reflect(-towardSun, normal)));
     }
   }
-  return drift;
+  glm::dvec2 lo = drifts.front(), hi = drifts.front();
+  for (const glm::dvec2& d : drifts) {
+    lo = glm::min(lo, d);
+    hi = glm::max(hi, d);
+  }
+  MirrorDrift bounds{0.5 * (lo + hi), 0.0};
+  for (const glm::dvec2& d : drifts)
+    bounds.radius = std::max(bounds.radius, glm::length(d - bounds.centre));
+  return bounds;
 }
 
 bool mayReceiveMirrorLight(const glm::dvec3& normal, const glm::dvec3& towardSun, double maxSlope,

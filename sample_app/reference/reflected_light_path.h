@@ -14,13 +14,20 @@ namespace ocean::reference {
 // rises along -l_r.
 glm::dvec3 flatMirrorDirection(const glm::dvec3& towardSun);
 
-// Largest horizontal drift, per metre of rise, that a water normal tilted by at most maxSlope
-// adds to the flat-water reflected sun ray (sampled densely over such normals: a mirror turns
-// the ray by twice its tilt). Rays rising at less than kMinMirrorElevation are counted as rising
-// at it: the reference leaves out light that reaches a receiver that flatly from farther away
-// (it would widen every receiver's launch disc by tens of metres for the steepest slopes' share).
+// Where, per metre of rise, the light reflected by a water normal tilted by at most maxSlope
+// goes sideways: the horizontal drift ray.xz / ray.y of every such reflected ray lies within
+// `radius` of `centre` (sampled densely over the normals: a mirror turns the ray by twice its
+// tilt). Flat water's ray drifts -sun.xz / sun.y; a low sun's reflections spread mostly along
+// it, so the circle is centred on the spread, not on flat water's ray. Rays rising at less than
+// kMinMirrorElevation are counted as rising at it: the reference leaves out light that reaches a
+// receiver that flatly from farther away (it would widen every receiver's launch disc by tens of
+// metres for the steepest slopes' share).
 inline constexpr double kMinMirrorElevation = 0.1745329251994330;  // 10 degrees
-double maxMirrorDrift(const glm::dvec3& towardSun, double maxSlope);
+struct MirrorDrift {
+  glm::dvec2 centre{0.0};
+  double radius = 0.0;
+};
+MirrorDrift mirrorDrift(const glm::dvec3& towardSun, double maxSlope);
 
 // Whether a surface of unit normal `normal` can be hit from below by light the water reflects
 // (some reflected ray within twice maxSlope, and the sun's angular radius, of flat water's
