@@ -23,11 +23,18 @@ constexpr double kObjectRegionIrradiance = 0.05;
 reference::FrameTraceDesc traceDesc(const Options& options) {
   reference::FrameTraceDesc desc = frameTraceOptions(options);
   desc.progress = [](const reference::FrameTraceProgress& p) {
+    char reflected[160] = "";
+    if (p.reflected)
+      std::snprintf(reflected, sizeof(reflected),
+                    " (of which reflected above the water, %zu mirror-lit pixels: median %.2f %%, "
+                    "p99 %.2f %%, max %.2f %%)",
+                    p.reflectedLitPixels, 100.0 * p.reflectedNoiseMedian,
+                    100.0 * p.reflectedNoiseQuantile, 100.0 * p.reflectedNoiseMax);
     std::printf(
         "reference: batch %d, %.3g photons, lit-pixel noise median %.2f %%, p99 %.2f %%, max "
-        "%.2f %%, %.1f s%s\n",
+        "%.2f %%%s, %.1f s%s\n",
         p.batch, static_cast<double>(p.photons), 100.0 * p.noiseMedian, 100.0 * p.noiseQuantile,
-        100.0 * p.noiseMax, p.seconds,
+        100.0 * p.noiseMax, reflected, p.seconds,
         p.done ? (p.converged ? ", converged" : ", BATCH CAP REACHED (not converged)") : "");
     std::fflush(stdout);
   };
@@ -90,16 +97,26 @@ int runReference(const Options& options) {
   const reference::FrameTraceResult& result = pass->result();
   const std::vector<float> radiance = renderer.readRadiance();
   const size_t n = static_cast<size_t>(options.width) * static_cast<size_t>(options.height);
-  const std::vector<std::string> channels = {"R",
-                                             "G",
-                                             "B",
-                                             "A",
-                                             "caustic.E",
-                                             "caustic.noise",
-                                             "caustic.lit",
-                                             "caustic.objectE",
-                                             "caustic.objectRegion",
-                                             "caustic.localE"};
+  std::vector<std::string> channels = {"R",
+                                       "G",
+                                       "B",
+                                       "A",
+                                       "caustic.E",
+                                       "caustic.noise",
+                                       "caustic.lit",
+                                       "caustic.objectE",
+                                       "caustic.objectRegion",
+                                       "caustic.localE"};
+  // The reflected light above the water, where it was traced (flat sea on a downward face = 1).
+  const bool reflected = !result.reflectedIrradiance.empty();
+  const size_t reflectedChannel = channels.size();
+  if (reflected) {
+    for (const char* name :
+         {"caustic.reflectedE", "caustic.reflectedNoise", "caustic.reflectedLit"})
+      channels.push_back(name);
+  }
+  size_t mirrorPixels = 0;
+  double mirrorSum = 0.0, mirrorPeak = 0.0;  // traced reflected light over the mirror-lit pixels
   size_t regionPixels = 0;
   double regionSum = 0.0, regionPeak = 0.0;  // traced object light over the region
   std::vector<float> pixels(n * channels.size(), 0.0f);
@@ -134,10 +151,21 @@ int runReference(const Options& options) {
         regionPeak = std::max(regionPeak, mean);
       }
     }
+    if (reflected && i < result.reflectedIrradiance.size()) {
+      out[reflectedChannel] = static_cast<float>(result.reflectedIrradiance[i]);
+      out[reflectedChannel + 1] = static_cast<float>(result.reflectedNoise[i]);
+      out[reflectedChannel + 2] = result.reflectedLit[i] ? 1.0f : 0.0f;
+      if (result.reflectedLit[i]) {
+        ++mirrorPixels;
+        mirrorSum += result.reflectedIrradiance[i];
+        mirrorPeak = std::max(mirrorPeak, result.reflectedIrradiance[i]);
+      }
+    }
   }
   const ImageAttributes attributes = {
       {"ocean:caustics", "traced"},
       {"ocean:objectCaustics", options.objectCaustics ? "traced" : "off"},
+      {"ocean:reflectedCaustics", reflected ? "traced" : "off"},
       {"ocean:exposure", exposureAttribute(renderer.settings().exposure)}};
   if (!writeExrChannels(options.out, options.width, options.height, channels, pixels, error,
                         attributes))
@@ -155,6 +183,20 @@ int runReference(const Options& options) {
         "(caustic.objectE, flat water = 1): mean %.4f, peak %.4f\n",
         result.casterShadowPixels, regionPixels,
         regionPixels > 0 ? regionSum / static_cast<double>(regionPixels) : 0.0, regionPeak);
+  if (reflected)
+    std::printf(
+        "reference: reflected light above the water: %zu mirror-lit pixels (caustic.reflectedLit), "
+        "%.3g of the photons per batch, noise median %.2f %% p99 %.2f %% max %.2f %%; traced "
+        "reflected light there (caustic.reflectedE, flat sea on a downward face = 1): mean %.4f, "
+        "peak %.4f; photons at the back of a wave %.3g, mirrored back into the water %.3g, "
+        "mirrored again by a later wave %.3g\n",
+        result.reflectedLitPixels, static_cast<double>(result.reflectedPhotonsPerBatch),
+        100.0 * result.reflectedNoiseMedian, 100.0 * result.reflectedNoiseQuantile,
+        100.0 * result.reflectedNoiseMax,
+        mirrorPixels > 0 ? mirrorSum / static_cast<double>(mirrorPixels) : 0.0, mirrorPeak,
+        static_cast<double>(result.reflectedBackOfWavePhotons),
+        static_cast<double>(result.reflectedIntoWaterPhotons),
+        static_cast<double>(result.reflectedReboundPhotons));
   if (!trace.lights.empty())
     std::printf(
         "reference: %zu local light(s) traced through the casters, %.3g photons per batch "

@@ -21,6 +21,14 @@ reference::FrameTraceDesc frameTraceOptions(const Options& options) {
   return desc;
 }
 
+bool tracesReflectedLight(const postfx::CreateDesc& create, const postfx::FrameDesc& frame,
+                          bool requested) {
+  const postfx::ReflectedCausticsSettings& settings = frame.reflectedCaustics;
+  const bool plugin =
+      postfx::hasFeature(create.features, postfx::Feature::ReflectedCaustics) && settings.enabled;
+  return (plugin || requested) && settings.intensity > 0.0f;
+}
+
 std::unique_ptr<TracedCausticsPass> TracedCausticsPass::create(
     const PluginSetup& plugin, const ocean_scene::Model& scene, const glm::dvec3& cameraPosition,
     const reference::FrameTraceDesc& trace, std::string& error) {
@@ -71,6 +79,7 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   trace.ior = desc.water.ior;
   trace.sunAngularRadius = 0.5 * glm::radians(double(desc.sun.angularDiameterDegrees));
   trace.waterAbsorption = glm::dvec3(desc.water.absorption);
+  trace.reflected = tracesReflectedLight(create, desc, trace_.reflected);
   // Nothing to trace under a sun below the horizon, unless local lights shine through casters.
   result_ = reference::traceFrameCaustics(water, *scene_, receivers_, trace);
 
@@ -82,9 +91,19 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   const reference::CausticLightUnits units = reference::causticLightUnits(desc);
   const bool objects = !result_.objectIrradiance.empty();
   const bool locals = !result_.localIrradiance.empty();
+  const bool mirrored = !result_.reflectedIrradiance.empty();
   for (size_t i = 0; i < n && !result_.irradiance.empty(); ++i) {
-    if (!receivers_.valid[i]) continue;
     const double viewDistance = glm::length(gbuffer.viewPosition[i]);
+    if (mirrored && receivers_.above[i] && result_.reflectedIrradiance[i] != 0.0) {
+      // Flat water's mirror light where it reaches the point: what a host lighting with a
+      // mirrored sun already holds (taken off without includeMirrorMean).
+      const double flat = result_.reflectedLit[i] ? result_.flatReflected[i] : 0.0;
+      const glm::vec3 light =
+          reference::referenceReflectedLight(units, gbuffer.albedo[i], receivers_.depthBelow(i),
+                                             result_.reflectedIrradiance[i], flat, viewDistance);
+      radiance[i] += glm::vec4(light, 0.0f);
+    }
+    if (!receivers_.valid[i]) continue;
     if (result_.irradiance[i] > 0.0) {
       const glm::vec3 light = reference::referenceCausticLight(
           units, gbuffer.albedo[i], receivers_.depthBelow(i), result_.irradiance[i], viewDistance);

@@ -7,7 +7,12 @@
 // irradiance (reference::referenceCausticLight: the same units). The rest of the frame (fog,
 // water surface, tone mapping) then runs unchanged. With casters in the trace
 // (FrameTraceDesc::casters, from sceneCasterMaterials) it also adds the light they pass or
-// reflect, where the plugin's object caustics would add theirs (which must then be off).
+// reflect, where the plugin's object caustics would add theirs (which must then be off). With
+// the plugin's reflected caustics on (Feature::ReflectedCaustics, enabled, intensity > 0) or
+// asked for in the trace (FrameTraceDesc::reflected: the caller turned the plugin's own off), it
+// also traces the light the water reflects up and adds it above the water where the plugin's
+// reflected caustics would (reference::referenceReflectedLight: the same units, and only the
+// waves' modulation without includeMirrorMean).
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,9 +29,16 @@ namespace ocean {
 // --max-batches, --threads), without progress.
 reference::FrameTraceDesc frameTraceOptions(const Options& options);
 
+// Whether the traced pass traces the reflected light: the plugin draws it this frame
+// (Feature::ReflectedCaustics and enabled) or the caller `requested` it, at an intensity above 0
+// (the frame's ReflectedCausticsSettings, whose units it adds the light in).
+bool tracesReflectedLight(const postfx::CreateDesc& create, const postfx::FrameDesc& frame,
+                          bool requested);
+
 class TracedCausticsPass {
  public:
-  // `trace` without sun and IOR (taken from the frame); its casters, if any, one per mesh of
+  // `trace` without sun and IOR (taken from the frame; `reflected` asks for the reflected light
+  // with the plugin's own off, see tracesReflectedLight); its casters, if any, one per mesh of
   // sceneTriangles(scene). Builds the Embree scene of `scene` around `cameraPosition` (the
   // frame's camera).
   static std::unique_ptr<TracedCausticsPass> create(const PluginSetup& plugin,

@@ -21,6 +21,13 @@ CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame) {
   if (frame.viewExtinction == postfx::ViewExtinction::Plugin)
     units.viewExtinction = frame.water.absorption + frame.water.scattering;
   units.levelRelative = static_cast<float>(frame.water.level - frame.camera.position.y);
+  units.mirrorY = std::max(sun.y, 0.0);
+  if (sun.y > 0.0) {
+    units.reflectedLightScale =
+        frame.sun.irradiance * frame.reflectedCaustics.intensity *
+        static_cast<float>(fresnelReflectance(sun.y, double(frame.water.ior)));
+  }
+  units.includeMirrorMean = frame.reflectedCaustics.includeMirrorMean;
   return units;
 }
 
@@ -53,6 +60,16 @@ glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm:
   return postfx::shared::sanitizeAlbedo(albedo) * units.objectLightScale *
          postfx::shared::causticTransmittance(units.absorptionPerDepth, depth) * bracket *
          viewTransmittance(units, depth, viewDistance);
+}
+
+glm::vec3 referenceReflectedLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                  double depthBelow, double tracedReflected, double flatMirrorLight,
+                                  double viewDistance) {
+  const double relative =
+      units.includeMirrorMean ? tracedReflected : tracedReflected - flatMirrorLight;
+  const float bracket = static_cast<float>(relative * units.mirrorY);
+  return postfx::shared::sanitizeAlbedo(albedo) * units.reflectedLightScale * bracket *
+         viewTransmittance(units, static_cast<float>(depthBelow), viewDistance);
 }
 
 glm::vec3 referenceLocalCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,

@@ -25,6 +25,17 @@ namespace ocean::reference {
 // adds, for the sun, albedo * E_sun * objectIntensity * exp(-absorption d / u.y) * [caustic *
 // (n.u)] * (the same view extinction), no surface fade, caustic the map's irradiance relative to
 // the sun's across the refracted beam: [caustic (n.u)] is again E u.y for traced irradiance E.
+//
+// The reflected caustics above the water (postfx/reflected_caustics.h) add
+//     albedo * E_sun * intensity * R(sun.y) * [I * max(n . l_r, 0) * visibility] * (view
+//     extinction)
+// l_r = (sun.x, -sun.y, sun.z), R flat water's unpolarised Fresnel reflectance at the sun's
+// incidence, I the reflected light relative to flat water's mirror light (1 over a flat sea).
+// The trace's reflected irradiance E_r (flat water's reflected flux on a horizontal receiver
+// facing down = 1, so a flat sea gives max(n . l_r, 0) / |l_r.y|) takes the bracket's place as
+// [I max(n . l_r, 0) vis] = E_r |l_r.y|, occlusion traced. Without includeMirrorMean the plugin
+// adds only the waves' modulation, (I - 1) in place of I: E_r - (flat water's mirror light
+// there) in place of E_r.
 struct CausticLightUnits {
   glm::vec3 lightScale{1.0f};          // E_sun * intensity
   glm::vec3 objectLightScale{1.0f};    // E_sun * ObjectCausticsSettings::intensity
@@ -34,6 +45,10 @@ struct CausticLightUnits {
   double upY = 1.0;                    // u.y
   glm::vec3 viewExtinction{0.0f};      // sigma_t with ViewExtinction::Plugin, else 0 (1/m)
   float levelRelative = 0.0f;          // water level - camera height (m)
+  // E_sun * ReflectedCausticsSettings::intensity * R(sun.y); 0 without a sun above the horizon
+  glm::vec3 reflectedLightScale{0.0f};
+  double mirrorY = 1.0;           // |l_r.y| = sun.y
+  bool includeMirrorMean = true;  // ReflectedCausticsSettings::includeMirrorMean
 };
 
 CausticLightUnits causticLightUnits(const postfx::FrameDesc& frame);
@@ -48,6 +63,14 @@ glm::vec3 referenceCausticLight(const CausticLightUnits& units, const glm::vec3&
 glm::vec3 referenceObjectCausticLight(const CausticLightUnits& units, const glm::vec3& albedo,
                                       double depthBelow, const glm::dvec3& tracedIrradiance,
                                       double viewDistance);
+
+// What the plugin's reflected caustics would add to a receiver `depthBelow` (< 0: above) the
+// level with their light field replaced by the traced reflected irradiance `tracedReflected`.
+// `flatMirrorLight`: flat water's traced-unit mirror light there (FrameTraceResult::flatReflected
+// where the flat mirror reaches the point, else 0), taken off without includeMirrorMean.
+glm::vec3 referenceReflectedLight(const CausticLightUnits& units, const glm::vec3& albedo,
+                                  double depthBelow, double tracedReflected, double flatMirrorLight,
+                                  double viewDistance);
 
 // The same for a local light's object caustics: the composite adds albedo * intensity *
 // objectIntensity * [caustic (n.l)] * (view extinction), the water's absorption along the path

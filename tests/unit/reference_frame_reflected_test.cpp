@@ -369,10 +369,6 @@ TEST(FrameReferenceReflected, TheRefractedLightIsBitForBitTheSameWithReflectionO
   EXPECT_GT(underwater, 200u);
 }
 
-}  // namespace
-
-namespace {
-
 TEST(FrameReferenceReflected, FlatMirrorLightIsExactlyThePluginsFlatSeaLight) {
   // The reference's light with E_r = flatReflected must be the plugin's own over a flat sea
   // (I = 1, visibility 1): albedo E_sun intensity R(sun.y) max(n . l_r, 0), no view extinction
