@@ -56,6 +56,14 @@ postfx_add_test(reference_reflected_tests
   SOURCES unit/reference_frame_reflected_test.cpp
   LIBS ocean_reference)
 
+# The traced frame reference's reflected light against the plugin's reflected caustics over a
+# flat sea (same units).
+postfx_add_test(reference_reflected_units_tests GL
+  SOURCES gl/reference_reflected_units_test.cpp
+  LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy)
+target_include_directories(reference_reflected_units_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
+  ${POSTFX_SHADER_ROOT})
+
 # The traced frame reference's light against the plugin's own added light (same units).
 postfx_add_test(reference_frame_units_tests GL
   SOURCES gl/reference_frame_units_test.cpp

@@ -95,6 +95,9 @@ struct Kernels {
   std::vector<double> radiusSquared;  // per pixel, 0 = gathers none of it
   // Per pixel: how many pixels around a photon projected there can hold it in their kernel.
   std::vector<int> window;
+  // Per pixel, 1 / the share of the kernel's weight on the part of its disc where this light can
+  // land (kernelShareAboveLevel); empty: all of it everywhere.
+  std::vector<double> scale;
 };
 
 struct Frame {
@@ -137,7 +140,8 @@ void splat(const Frame& f, const Kernels& kernels, const glm::dvec3& x, const gl
       const glm::dvec3 d = x - r.position[i];
       const double d2 = glm::dot(d, d);
       if (!(d2 < r2) || glm::dot(normal, r.normal[i]) < kMinNormalAgreement) continue;
-      const double k = (2.0 / (kPi * r2)) * (1.0 - d2 / r2);
+      double k = (2.0 / (kPi * r2)) * (1.0 - d2 / r2);
+      if (!kernels.scale.empty()) k *= kernels.scale[i];
       for (int c = 0; c < Channels; ++c)
         sums[i * Channels + static_cast<size_t>(c)] += std::llround(weight[c] * k * kSumScale);
     }
@@ -381,6 +385,22 @@ double launchDensity(const FrameTraceDesc& desc, double radius, double flat) {
   return density;
 }
 
+// The share of an Epanechnikov kernel's weight (radius r, on the plane of normal n through a
+// point `height` above the level) that lies above the level, where the water's reflected light
+// lands: a wall's or a hull's kernel at the waterline would otherwise count the part of its
+// disc under the water as dark. The plane meets the level along a line d = height / |n x y|
+// from the centre; the kernel's marginal across that line is (8 / 3 pi) (1 - x^2)^(3/2) for
+// x = t / r, whose integral from -d / r to 1 is
+//     1/2 + (8 / 3 pi) [x (1 - x^2)^(3/2) / 4 + 3 x sqrt(1 - x^2) / 8 + 3 asin(x) / 8] at x = d/r.
+double kernelShareAboveLevel(const glm::dvec3& n, double height, double r) {
+  const double slant = std::sqrt(std::max(1.0 - n.y * n.y, 0.0));
+  if (!(height < r * slant)) return 1.0;  // the disc stays above the level
+  const double x = std::clamp(height / (r * slant), 0.0, 1.0);
+  const double root = std::sqrt(1.0 - x * x);
+  return 0.5 + 8.0 / (3.0 * kPi) *
+                   (x * root * root * root / 4.0 + 3.0 * x * root / 8.0 + 3.0 * std::asin(x) / 8.0);
+}
+
 // The receivers above the level (reflected light): their kernels into f.mirror, kernel radii
 // and flat mirror light into `result`, and where on the water plane their light comes from.
 // A photon launched at u (the sun ray's crossing of the mean plane) meets the water at height
@@ -401,6 +421,7 @@ std::vector<LaunchNeed> planMirrorReceivers(Frame& f, double rpp, FrameTraceResu
       mirrorDrift(f.sun, f.water.maxSlope() + std::tan(desc.sunAngularRadius));
   const double c = glm::length(drift.centre);
   f.mirror.radiusSquared.assign(count, 0.0);
+  f.mirror.scale.assign(count, 1.0);
   std::vector<int> reach(count, 0);
   std::vector<LaunchNeed> needs;
   for (size_t i = 0; i < count; ++i) {
@@ -411,6 +432,7 @@ std::vector<LaunchNeed> planMirrorReceivers(Frame& f, double rpp, FrameTraceResu
     reach[i] = kernel.reach;
     const glm::dvec3& n = receivers.normal[i];
     result.flatReflected[i] = std::max(glm::dot(n, f.mirrorDown), 0.0) / -f.mirrorDown.y;
+    f.mirror.scale[i] = 1.0 / kernelShareAboveLevel(n, -receivers.depthBelow(i), kernel.radius);
     if (!mayReceiveMirrorLight(n, f.sun, f.water.maxSlope(), desc.sunAngularRadius)) continue;
     const double height = -receivers.depthBelow(i);
     const glm::dvec3& q = receivers.position[i];

@@ -50,6 +50,8 @@
 //     (weight times R; the refracted share is not followed), up to four times. Units: flat
 //     water's reflected flux on a horizontal receiver facing down = 1, so a flat sea gives
 //     max(n . l_r, 0) / |l_r.y| on a surface of normal n, l_r = (sun.x, -sun.y, sun.z).
+//     A kernel whose disc reaches under the level (a wall or hull at the waterline) is divided
+//     by its weight's share above it, where alone the reflected light lands.
 //     Casters are opaque to it (it lights their surface, not what lies behind them).
 // Deterministic: each cell's photons come from a hash of (seed, batch, cell); sums are kept in
 // 64-bit fixed point, so the result is bit-identical for any thread count.

@@ -137,6 +137,50 @@ TEST(FrameReferenceReflected, FlatSeaLightsAWallFacingTheSunAsTheMirrorDoes) {
   EXPECT_NEAR(a.mean / expected, 1.0, 2e-3);
 }
 
+TEST(FrameReferenceReflected, AWallsKernelsAtTheWaterlineCountOnlyTheirPartAboveIt) {
+  // The same wall seen from 0.3 m above the water with kernels four pixels wide, so that the
+  // lower rows' discs reach under the level, where no reflected light lands. Each kernel is
+  // normalised by its weight above the level: those rows get flat water's 0.6 too, not the
+  // 10-30 % less an uncorrected disc would give.
+  const FlatSurface water;
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.6, 1.0, 0.0));
+  View view;
+  view.eye = {3.0, 0.3, 0.0};
+  view.forward = {-1.0, 0.0, 0.0};
+  view.up = {0.0, 1.0, 0.0};
+  view.fovY = 0.8;
+  FrameTraceDesc desc = reflectedDesc(sun);
+  desc.kernelScale = 4.0;
+  const TracedView t = traceView(
+      water, {quad({0, -2, -4}, {0, 4, -4}, {0, 4, 4}, {0, -2, 4}, {1, 0, 0})}, view, desc);
+  const FrameTraceResult& r = t.result;
+  const double expected = sun.x / sun.y;
+  std::vector<double> values, errors;
+  double uncorrected = 0.0;  // the mean share of their kernels above the level
+  for (size_t i = 0; i < t.receivers.size(); ++i) {
+    const double height = -t.receivers.depthBelow(i), radius = r.kernelRadius[i];
+    if (!t.receivers.above[i] || height > 0.8 * radius) continue;
+    ASSERT_TRUE(r.reflectedLit[i]);
+    values.push_back(r.reflectedIrradiance[i] / expected);
+    errors.push_back(r.reflectedStandardError[i] / expected);
+    // The Epanechnikov kernel's weight above a chord d = height from its centre.
+    const double x = height / radius, root = std::sqrt(1.0 - x * x);
+    uncorrected +=
+        0.5 + 8.0 / (3.0 * referencetest::kPi) *
+                  (x * root * root * root / 4.0 + 3.0 * x * root / 8.0 + 3.0 * std::asin(x) / 8.0);
+  }
+  ASSERT_GT(values.size(), 40u);
+  uncorrected /= static_cast<double>(values.size());
+  const PixelMean m = pixelMean(values, errors);
+  std::printf(
+      "waterline: %zu pixels whose kernels reach under the level: %.4f +- %.4f of flat water's "
+      "mirror light (an uncorrected kernel would give %.3f)\n",
+      values.size(), m.mean, m.error, uncorrected);
+  EXPECT_LT(uncorrected, 1.0 - 5.0 * m.error) << "the correction must matter, or the test proves "
+                                                 "nothing";
+  EXPECT_NEAR(m.mean, 1.0, 3.0 * m.error);
+}
+
 // A wave with crests along z, the sun at 45 degrees across them.
 const glm::dvec3 kWaveSun = glm::normalize(glm::dvec3(1.0, 1.0, 0.0));
 constexpr double kWavelength = 2.0, kWaveSlope = 0.12;
