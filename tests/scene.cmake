@@ -2,7 +2,8 @@
 # robustness. The generated assets come from the ocean_assets target via ocean_asset_dir.
 if(TARGET ocean_scene)
   postfx_add_test(scene_unit_tests
-    SOURCES unit/scene_procedural_test.cpp unit/scene_gltf_roundtrip_test.cpp
+    SOURCES unit/scene_procedural_test.cpp unit/scene_harbour_test.cpp
+            unit/scene_gltf_roundtrip_test.cpp
             unit/scene_gltf_errors_test.cpp
             unit/scene_gltf_hostile_test.cpp unit/scene_gltf_features_test.cpp
             unit/scene_gltf_fuzz_test.cpp unit/scene_gltf_draco_test.cpp

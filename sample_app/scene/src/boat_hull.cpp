@@ -19,15 +19,16 @@ constexpr int kStations = 28;  // cross-sections from the transom to the stem
 struct Row {
   double height, width;
 };
-constexpr std::array<Row, 8> kRows = {{{-1.0, 0.0},
+constexpr std::array<Row, 9> kRows = {{{-1.0, 0.0},
                                        {-0.8, 0.55},
                                        {-0.55, 0.8},
                                        {-0.3, 0.93},
                                        {0.0, 0.943},
                                        {0.35, 0.965},
                                        {0.7, 0.985},
+                                       {0.85, 0.993},
                                        {1.0, 1.0}}};
-constexpr std::size_t kWaterline = 4;
+constexpr std::size_t kWaterline = 4, kStrake = 7;
 
 double shareAlong(const BoatHullShape& shape, double x) {
   return std::clamp(x / shape.length, 0.0, 1.0);
@@ -124,8 +125,9 @@ BoatHull buildBoatHull(const BoatHullShape& shape) {
   BoatHull hull;
   hull.bottom = sideStrips(shape, 0, kWaterline, "boat_bottom");
   addTransom(hull.bottom, shape, 0, kWaterline);
-  hull.topsides = sideStrips(shape, kWaterline, kRows.size() - 1, "boat_topsides");
+  hull.topsides = sideStrips(shape, kWaterline, kStrake, "boat_topsides");
   addTransom(hull.topsides, shape, kWaterline, kRows.size() - 1);
+  hull.strake = sideStrips(shape, kStrake, kRows.size() - 1, "boat_strake");
 
   // The deck: the gunwales joined across, station by station, facing up.
   Mesh& deck = hull.deck;

@@ -55,7 +55,7 @@ Material matte(const char* name, glm::vec3 albedo, float pitch = 0.0f, float joi
   return m;
 }
 
-enum HarbourMaterial : std::uint32_t { kStone, kWood, kWhitePaint, kAntifouling };
+enum HarbourMaterial : std::uint32_t { kStone, kWood, kWhitePaint, kAntifouling, kVarnish };
 
 }  // namespace
 
@@ -66,7 +66,8 @@ Model buildHarbourScene(const HarbourSceneParams& in) {
   p.quayDepth = std::clamp(p.quayDepth, 5.0, 100.0);
   p.pierWidth = std::clamp(p.pierWidth, 1.0, 30.0);
   p.pierLength = std::clamp(p.pierLength, 1.0, 30.0);
-  p.deckThickness = std::clamp(p.deckThickness, 0.05, std::min(0.5, 0.5 * p.quayHeight));
+  p.deckHeight = std::clamp(p.deckHeight, std::min(0.3, p.quayHeight), p.quayHeight);
+  p.deckThickness = std::clamp(p.deckThickness, 0.05, std::min(0.5, 0.5 * p.deckHeight));
   p.pileRadius = std::clamp(p.pileRadius, 0.05, std::min(0.5, 0.2 * p.pierWidth));
   p.pileSpacing = std::clamp(p.pileSpacing, 1.0, 10.0);
   p.boatLength = std::clamp(p.boatLength, 2.0, 20.0);
@@ -78,12 +79,14 @@ Model buildHarbourScene(const HarbourSceneParams& in) {
                            std::max(0.5 * p.pierWidth + 0.5, p.quayHalfLength - p.boatLength));
 
   Model model;
-  // Linear albedos, light as the receivers of a harbour are: limestone ashlar in 0.5 m courses,
-  // silvered oak, a white hull with dark red antifouling below the waterline.
-  model.materials = {matte("harbour_stone", {0.60f, 0.57f, 0.51f}, 0.5f, 0.015f),
+  // Linear albedos, light as the receivers of a harbour are: limestone ashlar in 0.6 m courses,
+  // silvered oak, a white hull with dark red antifouling below the waterline and a varnished
+  // strake below the gunwale.
+  model.materials = {matte("harbour_stone", {0.60f, 0.57f, 0.51f}, 0.6f, 0.01f),
                      matte("harbour_wood", {0.52f, 0.48f, 0.42f}),
                      matte("harbour_white_paint", {0.78f, 0.78f, 0.74f}),
-                     matte("harbour_antifouling", {0.32f, 0.08f, 0.06f})};
+                     matte("harbour_antifouling", {0.32f, 0.08f, 0.06f}),
+                     matte("harbour_varnish", {0.30f, 0.16f, 0.07f})};
   const glm::mat4 place =
       glm::translate(glm::mat4(1.0f), glm::vec3(float(p.origin.x), 0.0f, float(p.origin.y)));
   auto add = [&](Mesh mesh, HarbourMaterial material, const char* name,
@@ -100,12 +103,12 @@ Model buildHarbourScene(const HarbourSceneParams& in) {
   addBox(quay, {-halfLength, footing, -float(p.quayDepth)}, {halfLength, quayTop, 0.0f});
   add(std::move(quay), kStone, kHarbourQuayName);
 
-  // The pier: its deck level with the quay, cross beams under it at each row of piles, the
+  // The pier: its deck against the quay's face, cross beams under it at each row of piles, the
   // last row just inside its end.
   const float halfWidth = float(0.5 * p.pierWidth), length = float(p.pierLength);
-  const float underside = quayTop - float(p.deckThickness);
+  const float deckTop = float(p.deckHeight), underside = deckTop - float(p.deckThickness);
   Mesh deck;
-  addBox(deck, {-halfWidth, underside, 0.0f}, {halfWidth, quayTop, length});
+  addBox(deck, {-halfWidth, underside, 0.0f}, {halfWidth, deckTop, length});
   add(std::move(deck), kWood, kHarbourDeckName);
   constexpr float kBeamDepth = 0.2f, kBeamHalfWidth = 0.12f, kPileInset = 0.35f;
   Mesh beams, piles;
@@ -130,6 +133,7 @@ Model buildHarbourScene(const HarbourSceneParams& in) {
       glm::mat4(1.0f), glm::vec3(float(p.boatStern), 0.0f, float(p.boatGap + 0.5 * p.boatBeam)));
   add(std::move(hull.topsides), kWhitePaint, kHarbourHullName, boat);
   add(std::move(hull.bottom), kAntifouling, kHarbourBottomName, boat);
+  add(std::move(hull.strake), kVarnish, kHarbourStrakeName, boat);
   add(std::move(hull.deck), kWood, kHarbourBoatDeckName, boat);
   // A small cabin a little ahead of amidships, sunk into the deck.
   const double cabinStart = 0.28 * p.boatLength, cabinEnd = 0.55 * p.boatLength;

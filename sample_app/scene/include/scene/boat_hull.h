@@ -13,12 +13,13 @@ struct BoatHullShape {
   double freeboard = 0.75;  // m from the waterline to the gunwale, amidships
 };
 
-// The hull as three meshes (material 0, outward normals, counter-clockwise seen from outside),
+// The hull as four meshes (material 0, outward normals, counter-clockwise seen from outside),
 // split at the waterline so that no triangle crosses it: below it (keel, bilges and the
-// transom's lower part), above it (topsides and the transom's upper part), and the deck closing
-// the gunwales. The sides' normals are smooth, the transom's and deck's flat.
+// transom's lower part), above it (topsides and the transom's upper part), the sheer strake
+// (the band below the gunwale, 15 % of the freeboard, for a colour of its own) and the deck
+// closing the gunwales. The sides' normals are smooth, the transom's and deck's flat.
 struct BoatHull {
-  Mesh bottom, topsides, deck;
+  Mesh bottom, topsides, strake, deck;
 };
 
 // Deterministic; the shape's values must be positive and finite (the caller clamps them).

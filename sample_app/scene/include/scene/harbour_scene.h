@@ -24,16 +24,18 @@ struct HarbourSceneParams {
   // the sea scene's landmarks near the world's origin and its sandbank, and more than the
   // shadow map's 40 m from their presets' cameras.
   glm::dvec2 origin{60.0, -60.0};
-  // The quay: its top above the level (m), (0, 5]; its face's half-length along x and how far
+  // The quay: its top above the level (m), [0.1, 5]; its face's half-length along x and how far
   // the paved land behind it reaches (m), each in [5, 100].
-  double quayHeight = 1.6;
+  double quayHeight = 2.4;
   double quayHalfLength = 30.0;
   double quayDepth = 20.0;
   // The pier: width along x, length out from the face along z (m), each in [1, 30]; its deck's
-  // top is the quay's, `deckThickness` (m, [0.05, 0.5]) thick, on rows of two round piles of
-  // `pileRadius` (m, [0.05, 0.5]) every `pileSpacing` (m, [1, 10]) under cross beams.
+  // top `deckHeight` above the level (m, [0.3, quayHeight], a landing stage below the quay's top
+  // as harbours have them), `deckThickness` (m, [0.05, 0.5]) thick, on rows of two round piles
+  // of `pileRadius` (m, [0.05, 0.5]) every `pileSpacing` (m, [1, 10]) under cross beams.
   double pierWidth = 3.0;
   double pierLength = 9.0;
+  double deckHeight = 1.45;
   double deckThickness = 0.18;
   double pileRadius = 0.16;
   double pileSpacing = 2.4;
@@ -46,7 +48,7 @@ struct HarbourSceneParams {
   double boatDraft = 0.55;
   double boatFreeboard = 0.75;
   double boatGap = 0.6;
-  double boatStern = 3.6;
+  double boatStern = 2.9;
 };
 
 // Instance names, for tests and tools that look a part up.
@@ -56,6 +58,7 @@ inline constexpr const char* kHarbourBeamsName = "harbour_pier_beams";
 inline constexpr const char* kHarbourPilesName = "harbour_pier_piles";
 inline constexpr const char* kHarbourHullName = "harbour_boat_hull";
 inline constexpr const char* kHarbourBottomName = "harbour_boat_bottom";
+inline constexpr const char* kHarbourStrakeName = "harbour_boat_strake";
 inline constexpr const char* kHarbourBoatDeckName = "harbour_boat_deck";
 inline constexpr const char* kHarbourCabinName = "harbour_boat_cabin";
 
@@ -65,7 +68,7 @@ inline constexpr double kHarbourFootingY = -14.0;
 
 // Deterministic. Params outside their ranges are clamped into them. Materials are matte and
 // opaque (none is a caustic caster): weathered wood, light limestone, white and antifouling
-// paint.
+// paint, varnish.
 Model buildHarbourScene(const HarbourSceneParams& params = {});
 
 }  // namespace ocean_scene
