@@ -58,6 +58,19 @@ struct Preset {
   // The world it is shown in: the sea (every preset but one) or the pool on land, whose water
   // is a ripple simulation handed to the plugin as a local water region.
   SceneKind scene = SceneKind::Sea;
+  // The plugin's reflected caustics above the water (Feature::ReflectedCaustics), on where the
+  // view has receivers above the level facing the water (--reflected-caustics and
+  // --no-reflected-caustics win); their water grid cells per side (--reflected-grid wins) and
+  // the height of their highest layer (m above the level), each 0 for the plugin's default
+  // (ReflectedCausticsSettings::gridResolution, maxHeight).
+  bool reflectedCaustics = false;
+  int reflectedGrid = 0;
+  double reflectedMaxHeight = 0.0;
+  // The sun's shadows above the level cast along the sun in air (RenderSettings::airShadows):
+  // the harbour's, whose structures stand in the water. The others keep the refracted sun's map
+  // as they were drawn (their frames unchanged), though the pool's deck and the wake's ball
+  // stand above the level too.
+  bool airShadows = false;
 };
 
 // Returns false when the name is unknown; `known` lists the valid names for the message.

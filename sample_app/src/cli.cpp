@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
 
 #include "option_values.h"
 #include "options.h"
@@ -27,6 +28,10 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--no-god-rays",
                                               "--no-object-caustics",
                                               "--flat-local-water",
+                                              "--reflected-caustics",
+                                              "--no-reflected-caustics",
+                                              "--flat-water",
+                                              "--reflected-grid",
                                               "--local-water-grid",
                                               "--tau",
                                               "--caustics-model",
@@ -53,10 +58,18 @@ seabed), sunward (underwater, looking up toward the sun), above (above the water
 down), waterline (camera 3 cm above the water), torch (underwater at night, a diver's torch
 shining through the glass sphere onto the sand), pool (a tiled pool on land after webgl-water:
 a ripple simulation with drops and a ball, the plugin's local water; click the water in view to
-drop), wake (a ball towed across a calm sea, its wake simulated and added to the sea).
+drop), wake (a ball towed across a calm sea, its wake simulated and added to the sea),
+harbour (a calm harbour in a low sun: the waves' reflected light on a pier's underside, a quay
+wall and a moored boat's side, the plugin's reflected caustics).
 --camera-position and --camera-look-at replace the preset's camera (either alone keeps the
 other from the preset); the look-at point is centred in the image and must not be straight
 above or below the camera. --sun-azimuth/--sun-elevation replace the preset's sun.
+
+--reflected-caustics and --no-reflected-caustics turn the plugin's reflected caustics above the
+water (the waves' mirrored sunlight on what faces the water from above it) on or off over the
+preset's choice: on in harbour, off in the others. --flat-water hands the plugin a flat sea
+(zero slopes and heights) instead of the ocean's waves, the sample's own water unchanged: flat
+water's frame for compare --flat.
 
 --light point:X,Y,Z:I[:RANGE] or spot:X,Y,Z:DX,DY,DZ:I:CONE[:SOFTNESS[:RANGE]] adds a light to
 the preset's (at most 4 in all): position in metres, the spot's axis (any length), intensity I
@@ -95,6 +108,10 @@ Each file is held to a work budget, checked from its own counts before anything 
 nodes and 1 GiB once expanded (buffers, meshes, instances). A file over it is refused naming
 each limit with its count; --model-limits triangles=N,instances=N,nodes=N,bytes=N (any of
 them, N up to 2^40, k/M/G suffixes) raises them.)";
+
+// Flags that say opposite things: given both, the one applied last would win unseen.
+constexpr std::pair<std::string_view, std::string_view> kContradictingFlags[] = {
+    {"--reflected-caustics", "--no-reflected-caustics"}};
 
 struct CommandSpec {
   std::string_view name;
@@ -356,6 +373,15 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
   for (const FlagOption& option : flagOptions()) {
     const auto found = given.flags.find(option.flag);
     if (found != given.flags.end() && found->second) option.apply(options);
+  }
+  const auto set = [&](std::string_view flag) {
+    const auto found = given.flags.find(flag);
+    return found != given.flags.end() && found->second;
+  };
+  for (const auto& [one, other] : kContradictingFlags) {
+    if (set(one) && set(other))
+      return failure("options " + std::string(one) + " and " + std::string(other) +
+                     " contradict each other (give one)");
   }
   // After the values: in "--width --model x" the news is that --width got "--model".
   const std::string help = " (try ocean_sample " + std::string(spec.name) + " --help)";

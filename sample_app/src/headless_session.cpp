@@ -29,6 +29,7 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
   settings.waterResolution = options.waterResolution;
   settings.exposure = float(std::exp2(session.preset.exposureStops));
   settings.windSpeed = session.preset.windSpeed;
+  settings.airShadows = session.preset.airShadows;
   session.renderer = Renderer::create(settings, scene, error);
   if (!session.renderer) return false;
   session.renderer->setLights(session.preset.lights);

@@ -224,6 +224,13 @@ const std::array kValueOptions{
                 [](std::string_view text, Options& o, std::string& error) {
                   return intIn(text, 16, 2048, o.localWaterGrid, "--local-water-grid", error);
                 }},
+    ValueOption{"--reflected-grid", "N",
+                "reflected caustics' water grid cells per side, 64..1024 (default: the "
+                "preset's, harbour 1024, else the plugin's 512)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return intIn(text, 64, 1024, o.reflectedGrid, "--reflected-grid", error);
+                }},
     ValueOption{"--caustics-lookup", "RES",
                 "tile model's lookups at full or half (default) resolution", false,
                 [](std::string_view text, Options& o, std::string& error) {
@@ -427,6 +434,14 @@ const std::array kFlagOptions{
     FlagOption{"--flat-local-water",
                "give the plugin the pool's or wake's regions flat (compare --flat's frame)",
                [](Options& o) { o.flatLocalWater = true; }},
+    FlagOption{"--reflected-caustics",
+               "the plugin's reflected caustics above the water on (the harbour's default)",
+               [](Options& o) { o.reflectedCaustics = true; }},
+    FlagOption{"--no-reflected-caustics", "leave the plugin's reflected caustics out",
+               [](Options& o) { o.reflectedCaustics = false; }},
+    FlagOption{"--flat-water",
+               "give the plugin a flat sea instead of the ocean's waves (compare --flat's frame)",
+               [](Options& o) { o.flatWater = true; }},
     FlagOption{"--triplanar-walls", "steep surfaces blend world-axis projections of the water",
                [](Options& o) { o.triplanarWalls = true; }},
     FlagOption{"--freeze-time", "render/view --frames: time stays at --time",

@@ -57,6 +57,20 @@ struct Options {
   // The local water regions' grid cells per side (LocalWater::gridResolution); 0 keeps the
   // scene's. The report's error-against-time rows of the pool sweep it.
   int localWaterGrid = 0;
+  // The plugin's reflected caustics above the water: --reflected-caustics or
+  // --no-reflected-caustics, over the preset's choice (unset: Preset::reflectedCaustics, which
+  // withPresetCaustics fills in).
+  std::optional<bool> reflectedCaustics;
+  // --reflected-grid: their water grid cells per side (ReflectedCausticsSettings::
+  // gridResolution); 0 keeps the preset's (Preset::reflectedGrid), else the plugin's default.
+  int reflectedGrid = 0;
+  // Their highest layer's height (ReflectedCausticsSettings::maxHeight, m); 0 keeps the plugin's
+  // default. No flag: the preset's (Preset::reflectedMaxHeight).
+  double reflectedMaxHeight = 0.0;
+  // The plugin is given a flat sea (zero slopes and heights in every cascade) instead of the
+  // ocean's texture, the sample's own drawing unchanged: flat water's frame of the reflected
+  // caustics for compare --flat (the seabed's has --caustics-model ray-deviation --tau 0).
+  bool flatWater = false;
   double tau = -1.0;  // caustics tightening; < 0 keeps the plugin's default
   // Caustics model: the tile irradiance (the plugin's default) unless one of these is set:
   // the wavefront area-ratio irradiance window (Feature::WavefrontAreaRatio, with this

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 namespace ocean {
 
@@ -52,6 +53,15 @@ bool lightsAReceiver(const CasterInstance& c, const HostFrame& frame) {
 
 }  // namespace
 
+float PluginSetup::reflectedIntensity(const HostFrame& frame) const {
+  // Sun::irradiance is the beam below the surface, (1 - F) of the sun above it (sun_light.h);
+  // the sea mirrors the sun above. With the sun at or below the horizon there is neither.
+  const float transmission = sunTransmission(frame.input.sun, frame.optics.ior);
+  if (!(transmission > 0.0f)) return 0.0f;
+  // Within the plugin's range at a grazing sun, where 1 - F tends to 0 (so does the light).
+  return std::min(reflectedCaustics_.intensity / transmission, postfx::kIntensityRange.max);
+}
+
 std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Options& options,
                                                  bool benchmarkFloor, std::string& error) {
   std::unique_ptr<PluginSetup> setup(new PluginSetup());
@@ -73,6 +83,10 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   if (options.triplanarWalls) desc.features = desc.features | postfx::Feature::TriplanarWalls;
   // Only a scene with local water (the pool, a wake) asks for it: off, no shader reads it.
   if (renderer.localWater() != nullptr) desc.features = desc.features | postfx::Feature::LocalWater;
+  // Reflected caustics only where the run wants them (the harbour preset, --reflected-caustics):
+  // off, none of their passes or resources exist.
+  const bool reflected = options.reflectedCaustics.value_or(false);
+  if (reflected) desc.features = desc.features | postfx::Feature::ReflectedCaustics;
   if (postfx::create(desc, setup->context_) != postfx::Result::Ok) {
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return nullptr;
@@ -85,6 +99,17 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     glTextureStorage2D(setup->flatSurface_, 1, GL_RG32F, 1, 1);
     const float zero[2] = {0.0f, 0.0f};
     glTextureSubImage2D(setup->flatSurface_, 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, zero);
+  }
+  setup->flatWater_ = options.flatWater;
+  if (options.flatWater) {
+    // One zero texel per cascade: zero slopes and height, wrapped over every tile (a texture
+    // without B and A reads height 0 and Jacobian 1, flat water's).
+    const int layers = desc.maxWaterCascades;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &setup->flatWaterTexture_);
+    glTextureStorage3D(setup->flatWaterTexture_, 1, GL_RG32F, 1, 1, layers);
+    const std::vector<float> zero(size_t(2 * layers), 0.0f);
+    glTextureSubImage3D(setup->flatWaterTexture_, 0, 0, 0, 0, 1, 1, layers, GL_RG, GL_FLOAT,
+                        zero.data());
   }
   setup->caustics_.enabled = options.caustics;
   // The plugin's caustics are the sample's underwater sun (lighting.frag lights none below the
@@ -118,6 +143,17 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
     setup->caustics_.depthLayers = options.causticsLayers;
   }
   if (options.rayDeviationCaustics) setup->caustics_.model = postfx::CausticsModel::RayDeviation;
+  // The reflected light as the Lambertian light of the sun the sea mirrors, like the caustics
+  // (1/pi; describe() turns the plugin's sun, the beam below the surface, back into the sun
+  // above it). The whole mirror light, its flat-water mean too: the sample lights nothing with
+  // light the sea reflects (lighting.frag: the sun, the lights and the sky), so nothing counts
+  // it twice.
+  setup->reflectedCaustics_.enabled = reflected;
+  setup->reflectedCaustics_.intensity = kLambertian;
+  setup->reflectedCaustics_.includeMirrorMean = true;
+  if (options.reflectedGrid > 0) setup->reflectedCaustics_.gridResolution = options.reflectedGrid;
+  if (options.reflectedMaxHeight > 0.0)
+    setup->reflectedCaustics_.maxHeight = float(options.reflectedMaxHeight);
   PluginSetup* self = setup.get();
   renderer.setPluginPass([self](const HostFrame& frame, std::string& message) {
     return self->dispatch(frame, message);
@@ -129,6 +165,7 @@ PluginSetup::~PluginSetup() {
   for (postfx::View* view : views_) postfx::destroyView(*context_, view);
   postfx::destroy(context_);
   if (flatSurface_ != 0) glDeleteTextures(1, &flatSurface_);
+  if (flatWaterTexture_ != 0) glDeleteTextures(1, &flatWaterTexture_);
 }
 
 bool PluginSetup::dispatch(const HostFrame& frame, std::string& error) {
@@ -199,6 +236,15 @@ postfx::FrameDesc PluginSetup::describe(const HostFrame& frame) {
     desc.water.rmsLaplacian[c] = ocean.waveStats(c).rmsLaplacian;
     desc.water.longestWavelength[c] = ocean.waveStats(c).longestWavelength;
   }
+  if (flatWater_) {
+    // --flat-water: a sea without waves. Its statistics are unknown (0), not the ocean's, so
+    // that no cascade is left out for waves it does not have.
+    desc.water.texture = {flatWaterTexture_, GL_RG32F};
+    for (int c = 0; c < desc.water.cascadeCount; ++c) {
+      desc.water.rmsLaplacian[c] = 0.0;
+      desc.water.longestWavelength[c] = 0.0;
+    }
+  }
   desc.water.ior = float(frame.optics.ior);
   const float spread = float(frame.optics.iorSpread);
   desc.water.iorRgb =
@@ -224,6 +270,8 @@ postfx::FrameDesc PluginSetup::describe(const HostFrame& frame) {
   desc.shadow.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
   desc.caustics = caustics_;
   desc.godRays = godRays_;
+  desc.reflectedCaustics = reflectedCaustics_;
+  desc.reflectedCaustics.intensity = reflectedIntensity(frame);
   // Object caustics: the host's own buffers, and the shadow map drawn without the casters as
   // the receivers. The casters stay in the host's shadow map, which removes the light they
   // block; the plugin adds back what passes through or reflects off them.

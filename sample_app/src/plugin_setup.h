@@ -26,6 +26,9 @@ class PluginSetup {
   postfx::CausticsSettings& caustics() { return caustics_; }
   postfx::GodRaySettings& godRays() { return godRays_; }
   postfx::ObjectCausticsSettings& objectCaustics() { return objectCaustics_; }
+  // intensity is the physical 1/pi over the sun above the water; each frame hands the plugin
+  // the factor that makes its sun (the beam below the surface) that sun (reflectedIntensity).
+  postfx::ReflectedCausticsSettings& reflectedCaustics() { return reflectedCaustics_; }
   const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
   // Several views in one dispatch (split-screen, a cube-map probe): the first frame gives what
   // they share (sun, water, casters, the receiver maps), each frame its camera, G-buffer, target
@@ -44,6 +47,9 @@ class PluginSetup {
   bool dispatch(const HostFrame& frame, std::string& error);
   // The plugin's frame for `frame` (the casters' and lights' arrays live in this object).
   postfx::FrameDesc describe(const HostFrame& frame);
+  // The reflected caustics' intensity for the plugin this frame: reflectedCaustics_.intensity
+  // over the surface's transmission of the frame's sun, 0 without a sun.
+  float reflectedIntensity(const HostFrame& frame) const;
 
   postfx::Context* context_ = nullptr;
   postfx::CreateDesc createDesc_;
@@ -51,6 +57,7 @@ class PluginSetup {
   postfx::CausticsSettings caustics_;
   postfx::GodRaySettings godRays_;
   postfx::ObjectCausticsSettings objectCaustics_;
+  postfx::ReflectedCausticsSettings reflectedCaustics_;
   std::vector<postfx::CasterMesh> casters_;  // rebuilt each frame, kept for its capacity
   std::vector<postfx::LocalLight> lights_;   // likewise
   std::vector<postfx::View*> views_;         // dispatchViews', freed with the context
@@ -59,6 +66,9 @@ class PluginSetup {
   bool flatLocalWater_ = false;
   int localWaterGrid_ = 0;  // --local-water-grid (0: the scene's)
   GLuint flatSurface_ = 0;
+  // --flat-water: the sea given flat (one zero texel per cascade layer, RG32F array).
+  bool flatWater_ = false;
+  GLuint flatWaterTexture_ = 0;
   std::vector<postfx::LocalWater> regions_;  // the scene's, changed by those two options
 };
 

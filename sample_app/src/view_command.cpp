@@ -242,6 +242,7 @@ int runView(const Options& options) {
     // The start preset's sea: switching presets with the keys keeps it (the FFT ocean is made
     // once per window).
     settings.windSpeed = state.preset.windSpeed;
+    settings.airShadows = state.preset.airShadows;
     auto renderer = Renderer::create(settings, scene, error);
     // The start preset's lights (with --light) stay when keys switch presets.
     if (renderer) renderer->setLights(state.preset.lights);

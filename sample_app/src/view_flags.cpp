@@ -20,6 +20,9 @@ Options withPresetCaustics(Options options, const Preset& preset) {
   if (options.maxReceiverDepth <= 0.0) options.maxReceiverDepth = preset.maxReceiverDepth;
   if (options.tileResolution <= 0) options.tileResolution = preset.tileResolution;
   if (options.causticsLookup <= 0) options.causticsLookup = preset.causticsLookup;
+  if (!options.reflectedCaustics) options.reflectedCaustics = preset.reflectedCaustics;
+  if (options.reflectedGrid <= 0) options.reflectedGrid = preset.reflectedGrid;
+  if (options.reflectedMaxHeight <= 0.0) options.reflectedMaxHeight = preset.reflectedMaxHeight;
   return options;
 }
 

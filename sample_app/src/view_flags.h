@@ -15,7 +15,8 @@ namespace ocean {
 bool resolveView(const Options& options, Preset& preset, std::string& error);
 
 // `options` with the preset's caustic settings (Preset::maxReceiverDepth, tileResolution,
-// causticsLookup) where the command line left the plugin's default.
+// causticsLookup, reflectedCaustics, reflectedGrid, reflectedMaxHeight) where the command line
+// left the plugin's default.
 Options withPresetCaustics(Options options, const Preset& preset);
 
 // The same on settings already live (`view` switching presets): the preset's caustic settings,
