@@ -58,6 +58,14 @@ postfx_add_test(sample_pool_cli_tests
 target_compile_definitions(sample_pool_cli_tests PRIVATE
   OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
 add_dependencies(sample_pool_cli_tests ocean_sample)
+# The harbour preset: its receivers, window and scene (CPU, with the command line's flags), and
+# what the plugin is handed and how the sample draws it (GL).
+postfx_add_test(sample_harbour_tests
+  SOURCES unit/sample_harbour_test.cpp
+  LIBS ocean_host ocean_lab)
+postfx_add_test(sample_harbour_render_tests GL
+  SOURCES gl/sample_harbour_render_test.cpp
+  LIBS ocean_host)
 # The pool against its traced reference at 640x360, the pattern alone (about 2 minutes).
 postfx_add_test(sample_pool_reference_tests
   SOURCES unit/sample_pool_reference_test.cpp)

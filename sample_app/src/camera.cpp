@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include <scene/harbour_scene.h>
 #include <scene/scene_features.h>
 #include <scene/seabed.h>
 
@@ -151,6 +152,47 @@ Preset wakePreset() {
   return preset;
 }
 
+// A calm harbour in the low sun of a late afternoon, seen from a dinghy 0.65 m above the water:
+// the waves' reflected light on the pier's underside (which nothing else lights), on the quay's
+// wall in the pier's shade and in the sun, and on the moored boat's side, a network moving
+// upward and away from the sun. The sun is behind the camera and to its right (azimuth 215
+// degrees, 20 up: R = 0.13 of it mirrored), so the wall and the hull's side face it and the
+// pier's sunward side is toward the camera; the water that lights the underside (3.5 m sunward
+// of it) lies beside the pier and under its sunward half, outside its shade. Every point in
+// view of the underside, the boat's side and the wall between them is lit from water within 8 m
+// of the camera along x and z, inside the plugin's 24 m window short of its outer eighth, where
+// the pattern fades (farther along the quay the wall takes the flat mean).
+Preset harbourPreset() {
+  Preset preset = makePreset("harbour",
+                             "a calm harbour in a low sun: the waves' reflected light on the "
+                             "underside of a pier, a quay wall and a moored boat's side",
+                             glm::dvec3(0.0), 0.0, 0.0, 20.0, 215.0);
+  preset.scene = SceneKind::Harbour;
+  const ocean_scene::HarbourSceneParams harbour;
+  const glm::dvec3 origin(harbour.origin.x, 0.0, harbour.origin.y);
+  preset.camera.position = origin + glm::dvec3(5.0, 0.65, 8.0);
+  preset.camera.fovY = glm::radians(58.0);
+  // Toward the pier's root at the quay, level with its deck: its underside on the left, the
+  // wall ahead, the boat on the right.
+  const glm::dvec3 target = origin + glm::dvec3(0.0, 1.45, 0.0);
+  const glm::dvec3 view = glm::normalize(target - preset.camera.position);
+  preset.camera.pitch = std::asin(view.y);
+  preset.camera.yaw = std::atan2(-view.x, -view.z);
+  // A light air (3 m/s): a calm harbour, whose reflected network stays legible a metre or two
+  // up instead of spreading into the mean.
+  preset.windSpeed = 3.0;
+  preset.reflectedCaustics = true;
+  // A mirror deviates light by twice the slope: the network a metre up is drawn by ripples a
+  // few centimetres long, which the plugin's default grid (512 over 24 m, 4.7 cm) low-passes
+  // away; 1024 (2.3 cm) keeps them.
+  preset.reflectedGrid = 1024;
+  // The highest receiver facing the water is the quay's wall, to 2.4 m: the layers up to 2.5 m.
+  preset.reflectedMaxHeight = 2.5;
+  // The pier shades the water beside it, the boat the wall, along the sun in air.
+  preset.airShadows = true;
+  return preset;
+}
+
 Preset exposed(Preset preset, double stops) {
   preset.exposureStops = stops;
   return preset;
@@ -159,8 +201,8 @@ Preset exposed(Preset preset, double stops) {
 // Exposures chosen by eye at 1280x720 for each view's light: the seabed at 10 m gets ~1/4 of
 // the sun above it (absorption, 1 - Fresnel, Lambert's 1/pi at an oblique sun), looking up
 // meets Snell's window, and from above the sky dominates.
-const std::array<Preset, 8>& presets() {
-  static const std::array<Preset, 8> all = {
+const std::array<Preset, 9>& presets() {
+  static const std::array<Preset, 9> all = {
       exposed(makePreset("seabed", "underwater, looking down at the seabed, pillar and arch",
                          {2.0, -4.5, 14.0}, 8.0, -22.0, 62.0, 200.0),
               1.5),
@@ -177,6 +219,7 @@ const std::array<Preset, 8>& presets() {
       exposed(shallowPreset(), 0.5),
       exposed(poolPreset(), 0.0),
       exposed(wakePreset(), 0.5),
+      exposed(harbourPreset(), 0.25),
   };
   return all;
 }

@@ -11,6 +11,7 @@
 
 #include <scene/default_scene.h>
 #include <scene/gltf_loader.h>
+#include <scene/harbour_scene.h>
 #include <scene/pool_scene.h>
 #include <scene/seabed.h>
 #include <scene/wake_ball.h>
@@ -86,6 +87,9 @@ bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& sc
   }
   // The wake's ball: 0.5 m (wake_water.h, WakeDesc::ballRadius); moved every frame.
   if (kind == SceneKind::Wake) ocean_scene::addWakeBall(scene, 0.5);
+  // The harbour's quay, pier and boat: in the model the renderer draws and the reference
+  // traces (sceneTriangles), like every other part of the scene.
+  if (kind == SceneKind::Harbour) ocean_scene::appendModel(scene, ocean_scene::buildHarbourScene());
   admitCasters(scene, warnings);
   for (const std::string& warning : warnings) {
     std::fprintf(stderr, "ocean_sample: warning: %s\n", warning.c_str());

@@ -17,7 +17,7 @@ namespace ocean {
 // casters left out of the object caustics are printed to stderr as warnings; the first error
 // returns false with a one-line message. SceneKind::Pool builds the pool (scene/pool_scene.h)
 // with its default dimensions, and takes no user models (their placement rests them on the
-// sand).
+// sand); SceneKind::Harbour adds the harbour (scene/harbour_scene.h) to the sea's scene.
 bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
                 std::string& error, const ocean_scene::GltfLimits& limits = {},
                 SceneKind kind = SceneKind::Sea);
