@@ -27,7 +27,7 @@ render_all() {
     echo "[$n] $name" >&2
     "$sample" render "${size[@]}" --out "$dir/$name.exr" "$@" >/dev/null
   }
-  for preset in shallow seabed sunward above waterline torch pool wake; do
+  for preset in shallow seabed sunward above waterline torch pool wake harbour; do
     run "preset_$preset" --preset "$preset"
   done
   for model in ray-deviation wavefront-area-ratio; do
