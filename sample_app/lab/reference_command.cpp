@@ -1,6 +1,7 @@
 // ocean_sample reference: the frame `render` draws, with the plugin's seabed caustic light
 // replaced by traced caustic light in the same units (see TracedCausticsPass and --help): the
-// seabed's, and with object caustics on (the default) the light of the glass and metal casters.
+// seabed's, with object caustics on (the default) the light of the glass and metal casters, and
+// with reflected caustics on (the harbour) the sunlight the waves reflect above the water.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -62,6 +63,14 @@ int runReference(const Options& options) {
   Renderer& renderer = *session.renderer;
   const FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
   reference::FrameTraceDesc trace = traceDesc(options);
+  // Reflected caustics where the run has them (the preset's choice or the flag): the plugin's
+  // own pass off, its settings kept (their intensity is the traced light's unit), and the trace
+  // reflects its photons too.
+  if (postfx::hasFeature(session.plugin->createDesc().features,
+                         postfx::Feature::ReflectedCaustics)) {
+    session.plugin->reflectedCaustics().enabled = false;
+    trace.reflected = true;
+  }
   if (options.objectCaustics) {
     trace.casters = sceneCasterMaterials(session.scene);
     for (const HostLight& host : renderer.lights()) {
