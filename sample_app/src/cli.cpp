@@ -177,7 +177,9 @@ const std::vector<CommandSpec>& commands() {
        "DIR/error_vs_time.csv, .md and .png (default DIR: report). The size is the report's "
        "own (320x180, --quick 160x90). Also the temporal stability of every pass against its "
        "reference's (DIR/temporal_stability.csv and .md, 160x90; --quick leaves the "
-       "references out); --only stability writes that table alone.",
+       "references out); --only stability writes that table alone, --only local-water the "
+       "pool's grid sweep against its trace (DIR/local_water.*), --only reflected the "
+       "harbour's reflected caustics against its trace (DIR/reflected.*).",
        {"--out", "--quick", "--only"},
        true,
        "report",

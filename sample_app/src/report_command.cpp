@@ -20,6 +20,7 @@
 #include "commands.h"
 #include "headless_session.h"
 #include "local_water_rows.h"
+#include "reflected_rows.h"
 
 namespace ocean {
 namespace {
@@ -83,15 +84,19 @@ int runReport(const Options& given) {
   // Small enough for the CPU references to converge in minutes; --quick for a smoke run.
   options.width = given.quick ? 160 : 320;
   options.height = given.quick ? 90 : 180;
-  // --only stability: the temporal-stability table alone; --only local-water: the local water
-  // rows alone, into local_water.{csv,md,png} (the error rows take far longer).
-  const bool onlyStability =
-      !given.only.empty() && std::string("stability").rfind(given.only, 0) == 0;
-  const bool onlyLocalWater =
-      !given.only.empty() && std::string("local-water").rfind(given.only, 0) == 0;
-  if (!given.only.empty() && !onlyStability && !onlyLocalWater)
-    return commandFailed("report --only knows two sections, 'stability' and 'local-water'; got '" +
-                         given.only + "'");
+  // --only stability: the temporal-stability table alone; --only local-water / --only
+  // reflected: the local water or reflected caustics rows alone, into local_water.{csv,md,png}
+  // or reflected.{csv,md,png} (the error rows take far longer).
+  auto only = [&given](const char* section) {
+    return !given.only.empty() && std::string(section).rfind(given.only, 0) == 0;
+  };
+  const bool onlyStability = only("stability");
+  const bool onlyLocalWater = only("local-water");
+  const bool onlyReflected = only("reflected");
+  if (!given.only.empty() && !onlyStability && !onlyLocalWater && !onlyReflected)
+    return commandFailed(
+        "report --only knows three sections, 'stability', 'local-water' and 'reflected'; got '" +
+        given.only + "'");
   std::error_code fsError;
   std::filesystem::create_directories(options.out, fsError);
   if (fsError) return commandFailed("cannot create '" + options.out + "': " + fsError.message());
@@ -116,17 +121,37 @@ int runReport(const Options& given) {
   }
   const std::string dir = options.out + "/";
   std::vector<report::Row> rows;
+  // One sweep's rows alone into <name>.{csv,md,png}.
+  auto writeSection = [&](const char* name, const std::string& title) {
+    const std::string stem = dir + name;
+    if (!report::writeCsv(stem + ".csv", info, rows, error) ||
+        !report::writeErrorPlot(stem + ".png", title + ", " + info.device, rows, error) ||
+        !report::writeMarkdown(stem + ".md", info, rows, std::string(name) + ".png", error))
+      return false;
+    std::fprintf(stderr, "report: wrote %s.{csv,md,png} (%zu rows)\n", stem.c_str(), rows.size());
+    return true;
+  };
   if (onlyLocalWater) {
     info.width = localWater.width;
     info.height = localWater.height;
     if (!measureLocalWaterRows(given, localWater, rows, info.referenceNote, error) ||
-        !report::writeCsv(dir + "local_water.csv", info, rows, error) ||
-        !report::writeErrorPlot(dir + "local_water.png", "local water, " + info.device, rows,
-                                error) ||
-        !report::writeMarkdown(dir + "local_water.md", info, rows, "local_water.png", error))
+        !writeSection("local_water", "local water"))
       return commandFailed(error);
-    std::fprintf(stderr, "report: wrote %slocal_water.{csv,md,png} (%zu rows)\n", dir.c_str(),
-                 rows.size());
+    return 0;
+  }
+  if (onlyReflected) {
+    ReflectedReportSettings reflected;
+    if (given.quick) {
+      reflected.width = 320;
+      reflected.height = 180;
+      reflected.grids = {128, 512};
+      reflected.timedFrames = 6;
+    }
+    info.width = reflected.width;
+    info.height = reflected.height;
+    if (!measureReflectedRows(given, reflected, rows, info.referenceNote, error) ||
+        !writeSection("reflected", "reflected caustics"))
+      return commandFailed(error);
     return 0;
   }
   if (!onlyStability) {
