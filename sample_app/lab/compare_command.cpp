@@ -87,14 +87,15 @@ glm::vec3 toneMap(const glm::vec3& x) {
   return {srgbEncode(a.r), srgbEncode(a.g), srgbEncode(a.b)};
 }
 
-// The pattern-only agreement (reference::comparePatterns), a few lines.
-void printPattern(const reference::PatternComparison& p) {
+// The pattern-only agreement (reference::comparePatterns), a few lines; `what` names the light
+// ("pattern", "reflected pattern").
+void printPattern(const char* what, const reference::PatternComparison& p) {
   std::printf(
-      "compare: pattern (added light / flat water's, %zu pixels with flat light >= 1/4 of its "
+      "compare: %s (added light / flat water's, %zu pixels with flat light >= 1/4 of its "
       "median): correlation %.4f, relative RMSE %.4f; contrast (std/mean) plugin %.3f, "
       "reference %.3f; p99 plugin %.3f, reference %.3f; mean plugin %.4f, reference %.4f\n",
-      p.pixels, p.correlation, p.relativeRmse, p.methodContrast, p.referenceContrast, p.methodP99,
-      p.referenceP99, p.methodMean, p.referenceMean);
+      what, p.pixels, p.correlation, p.relativeRmse, p.methodContrast, p.referenceContrast,
+      p.methodP99, p.referenceP99, p.methodMean, p.referenceMean);
   const reference::PatternSpectrum& s = p.spectrum;
   if (s.patchSize == 0) {
     std::printf("compare: sharpness: no patch of 32x32 compared pixels\n");
@@ -175,18 +176,28 @@ int runCompare(const Options& options) {
   const int regionChannel = traced.channel("caustic.objectRegion");
   std::vector<std::uint8_t> region(regionChannel >= 0 ? n : 0);
   size_t regionPixels = 0;
+  // The pixels above the water flat water's mirror light reaches, when the reference traced the
+  // reflected light.
+  const int mirrorChannel = traced.channel("caustic.reflectedLit");
+  std::vector<std::uint8_t> mirror(mirrorChannel >= 0 ? n : 0);
+  size_t mirrorPixels = 0;
   for (size_t i = 0; i < n; ++i) {
     lit[i] = traced.pixels[i * size_t(traced.channels) + size_t(litChannel)] > 0.5f ? 1 : 0;
     if (regionChannel >= 0) {
       region[i] = traced.pixels[i * size_t(traced.channels) + size_t(regionChannel)] > 0.5f ? 1 : 0;
       regionPixels += region[i];
     }
+    if (mirrorChannel >= 0) {
+      mirror[i] = traced.pixels[i * size_t(traced.channels) + size_t(mirrorChannel)] > 0.5f ? 1 : 0;
+      mirrorPixels += mirror[i];
+    }
     methodLight[i] = luminance(rgb(plugin, i) - rgb(base, i));
     referenceLight[i] = luminance(rgb(traced, i) - rgb(base, i));
     if (withPattern) flatLight[i] = luminance(rgb(flat, i) - rgb(base, i));
     const bool finite = std::isfinite(methodLight[i]) && std::isfinite(referenceLight[i]) &&
                         (!withPattern || std::isfinite(flatLight[i]));
-    if ((lit[i] || (regionChannel >= 0 && region[i])) && !finite)
+    if ((lit[i] || (regionChannel >= 0 && region[i]) || (mirrorChannel >= 0 && mirror[i])) &&
+        !finite)
       return commandFailed("a lit pixel of the inputs is NaN or infinite (pixel " +
                            std::to_string(i % size_t(width)) + ", " +
                            std::to_string(i / size_t(width)) + " from the top)");
@@ -194,10 +205,11 @@ int runCompare(const Options& options) {
   const reference::CausticComparison c =
       reference::compareAddedLight(methodLight, referenceLight, lit);
   // A night scene (the sun below the horizon) has only its lights' object caustics to compare.
-  if (c.pixels == 0 && regionPixels == 0)
-    return commandFailed("no lit underwater pixel and no object caustics to compare");
-  reference::PatternComparison pattern;
-  if (withPattern) {
+  if (c.pixels == 0 && regionPixels == 0 && mirrorPixels == 0)
+    return commandFailed(
+        "no lit underwater pixel, no object caustics and no mirror-lit pixel to compare");
+  reference::PatternComparison pattern, mirrorPattern;
+  if (withPattern && c.pixels > 0) {
     pattern =
         reference::comparePatterns(methodLight, referenceLight, flatLight, lit, width, height);
     if (pattern.pixels == 0)
@@ -206,15 +218,25 @@ int runCompare(const Options& options) {
                            "' (render it with --caustics-model ray-deviation "
                            "--tau 0 and the same scene options)");
   }
+  if (withPattern && mirrorPixels > 0) {
+    mirrorPattern =
+        reference::comparePatterns(methodLight, referenceLight, flatLight, mirror, width, height);
+    if (mirrorPattern.pixels == 0)
+      return commandFailed("no mirror-lit pixel has flat-water light in --flat '" +
+                           options.flatImage + "' (render it with --flat-water)");
+  }
+  // The pattern panels show the light under the water, or above it where there is none.
+  const reference::PatternComparison& shown = pattern.pixels > 0 ? pattern : mirrorPattern;
 
   // One scale for every added-light panel: the reference's 99th percentile over lit pixels.
   std::vector<double> litReference;
   for (size_t i = 0; i < n; ++i)
-    if (c.pixels > 0 ? lit[i] != 0 : region[i] != 0) litReference.push_back(referenceLight[i]);
+    if (c.pixels > 0 ? lit[i] != 0 : (regionPixels > 0 ? region[i] != 0 : mirror[i] != 0))
+      litReference.push_back(referenceLight[i]);
   const size_t k = (litReference.size() - 1) * 99 / 100;
   std::nth_element(litReference.begin(), litReference.begin() + long(k), litReference.end());
   const double scale = std::max(litReference[k], 1e-12);
-  const double patternScale = std::max(pattern.referenceP99, 1e-12);
+  const double patternScale = std::max(shown.referenceP99, 1e-12);
 
   // 3 x 2 panels (3 x 3 with the pattern), written bottom row first (GL order) as writeImage
   // expects.
@@ -243,8 +265,9 @@ int runCompare(const Options& options) {
       put(1, 1, x, y, grey(referenceLight[i], scale));
       put(2, 1, x, y, signedColour(methodLight[i] - referenceLight[i], scale));
       if (!withPattern) continue;
-      const bool compared = pattern.compared[i] != 0;
-      const double pm = pattern.methodPattern[i], pr = pattern.referencePattern[i];
+      const bool compared = !shown.compared.empty() && shown.compared[i] != 0;
+      const double pm = compared ? shown.methodPattern[i] : 0.0;
+      const double pr = compared ? shown.referencePattern[i] : 0.0;
       put(0, 2, x, y, compared ? grey(pm, patternScale) : glm::vec3(0.0f));
       put(1, 2, x, y, compared ? grey(pr, patternScale) : glm::vec3(0.0f));
       put(2, 2, x, y, compared ? signedColour(pm - pr, patternScale) : glm::vec3(0.0f));
@@ -258,9 +281,19 @@ int runCompare(const Options& options) {
         "luminance; mean plugin %.4g, reference %.4g)\n",
         c.pixels, c.relativeRmse, c.correlation, c.methodMean, c.referenceMean);
   } else {
-    std::printf("compare: no sunlit underwater pixel (the sun is below the horizon)\n");
+    std::printf("compare: no sunlit underwater pixel\n");
   }
-  if (withPattern) printPattern(pattern);
+  if (withPattern && pattern.pixels > 0) printPattern("pattern", pattern);
+  if (mirrorPixels > 0) {
+    const reference::CausticComparison m =
+        reference::compareAddedLight(methodLight, referenceLight, mirror);
+    std::printf(
+        "compare: above the water (%zu pixels flat water's mirror light reaches): reflected light "
+        "correlation %.4f, relative RMSE %.4f, flux plugin / reference %.3f\n",
+        m.pixels, m.correlation, m.relativeRmse,
+        m.referenceMean != 0.0 ? m.methodMean / m.referenceMean : 0.0);
+    if (withPattern) printPattern("reflected pattern", mirrorPattern);
+  }
   if (regionPixels > 0) {
     const reference::CausticComparison o =
         reference::compareAddedLight(methodLight, referenceLight, region);

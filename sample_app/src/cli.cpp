@@ -179,8 +179,9 @@ const std::vector<CommandSpec>& commands() {
        "reference's (DIR/temporal_stability.csv and .md, 160x90; --quick leaves the "
        "references out); --only stability writes that table alone, --only local-water the "
        "pool's grid sweep against its trace (DIR/local_water.*), --only reflected the "
-       "harbour's reflected caustics against its trace (DIR/reflected.*).",
-       {"--out", "--quick", "--only"},
+       "harbour's reflected caustics against its trace (DIR/reflected.*); --max-batches B caps "
+       "their traces' batches.",
+       {"--out", "--quick", "--only", "--max-batches"},
        true,
        "report",
        60,
@@ -197,7 +198,10 @@ const std::vector<CommandSpec>& commands() {
        "the 99th percentile of the lit pixels' noise is below N, at most B. Deterministic for a "
        "seed on any thread count. Writes linear radiance to OUT.exr with channels caustic.E, "
        "caustic.noise, caustic.lit, caustic.objectE (light through the casters, flat water = 1) "
-       "and caustic.objectRegion (the casters' shadows and where that light falls).",
+       "and caustic.objectRegion (the casters' shadows and where that light falls); with the "
+       "reflected light (the harbour, --reflected-caustics) caustic.reflectedE (flat water's "
+       "mirror light on a horizontal receiver = 1), caustic.reflectedNoise and "
+       "caustic.reflectedLit (the pixels flat water's mirror light reaches).",
        {"--out", "--seed", "--noise", "--kernel", "--min-kernel", "--max-batches", "--threads"},
        true,
        "reference.exr",
@@ -220,7 +224,10 @@ const std::vector<CommandSpec>& commands() {
        "the pattern alone: each added light divided by F - B where F - B is at least a quarter "
        "of its median (what both share, albedo, N.L, shadow, absorption, divides out), and "
        "the patterns' power per octave of period over one square patch (too soft, too sharp, "
-       "or a narrow peak: rings the trace lacks); a third row shows the two patterns.",
+       "or a narrow peak: rings the trace lacks); a third row shows the two patterns. Where R "
+       "traced the light the water reflects up (caustic.reflectedLit: the harbour, "
+       "--reflected-caustics), the same over the pixels above the water flat water's mirror "
+       "light reaches (B: --no-reflected-caustics; F: --flat-water).",
        {"--plugin", "--reference", "--base", "--flat", "--out"},
        false,
        "compare.png",
