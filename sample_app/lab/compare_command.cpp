@@ -212,7 +212,8 @@ int runCompare(const Options& options) {
   if (withPattern && c.pixels > 0) {
     pattern =
         reference::comparePatterns(methodLight, referenceLight, flatLight, lit, width, height);
-    if (pattern.pixels == 0)
+    // Above the water alone (the seabed's caustics off in every frame): no underwater pattern.
+    if (pattern.pixels == 0 && mirrorPixels == 0)
       return commandFailed("no lit underwater pixel has flat-water light in --flat '" +
                            options.flatImage +
                            "' (render it with --caustics-model ray-deviation "
@@ -225,8 +226,9 @@ int runCompare(const Options& options) {
       return commandFailed("no mirror-lit pixel has flat-water light in --flat '" +
                            options.flatImage + "' (render it with --flat-water)");
   }
-  // The pattern panels show the light under the water, or above it where there is none.
-  const reference::PatternComparison& shown = pattern.pixels > 0 ? pattern : mirrorPattern;
+  // The pattern panels show the light under the water or above it, whichever covers more pixels.
+  const reference::PatternComparison& shown =
+      pattern.pixels >= mirrorPattern.pixels ? pattern : mirrorPattern;
 
   // One scale for every added-light panel: the reference's 99th percentile over lit pixels.
   std::vector<double> litReference;
