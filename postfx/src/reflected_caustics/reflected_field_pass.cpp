@@ -10,6 +10,7 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/grid_layer_draw.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
@@ -92,11 +93,8 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
   glProgramUniform4f(compute, 7, saturatedFloat(flatR > 0.0 ? 1.0 / flatR : 0.0),
                      static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
   glProgramUniform1i(compute, 9, pointsPerSide);
-  for (GLuint program : {triangles_.id(), points_.id()}) {
-    glProgramUniform1f(program, 8, frame.reflectedCaustics.maxIrradiance);
-    glProgramUniform1i(program, 9, pointsPerSide);
-    glProgramUniform2f(program, 10, static_cast<float>(l.resolution), pointRatio);
-  }
+  setGridDrawUniforms(triangles_.id(), points_.id(), frame.reflectedCaustics.maxIrradiance,
+                      pointsPerSide, l.resolution, pointRatio);
 
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(l.resolution),
@@ -109,14 +107,7 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
   const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
   for (int k = 0; k < l.layers; ++k) {
     glm::vec4 cascades[kMaxCascades];
-    for (int c = 0; c < water.cascadeCount; ++c) {
-      const double tile = water.tileSize[c];
-      const glm::dvec2 fromOrigin = l.gridOrigin[k] - water.origin;
-      // The mip level whose texel matches the grid spacing: finer ripples cannot be carried.
-      const double lod = std::max(0.0, std::log2(l.cell * texelsPerSide / tile));
-      cascades[c] = glm::vec4(tileFraction(fromOrigin.x, tile), tileFraction(fromOrigin.y, tile),
-                              l.cell / tile, lod);
-    }
+    cascadeGridUniforms(water, l.gridOrigin[k], l.cell, texelsPerSide, cascades);
     glProgramUniform4fv(compute, 0, water.cascadeCount, &cascades[0].x);
     const glm::dvec2 gridLocal = l.gridOrigin[k] - l.windowOrigin;
     glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
@@ -126,12 +117,8 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
-    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
-    glUseProgram(triangles_.id());
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);
-    glUseProgram(points_.id());
-    glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
+    drawGridLayer(framebuffer_.id(), texture_.id(), k, triangles_.id(), points_.id(),
+                  clampCount_.id(), pointsPerSide);
   }
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
   if (l.spread) {

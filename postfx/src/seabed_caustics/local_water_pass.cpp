@@ -10,6 +10,7 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/grid_layer_draw.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
 namespace postfx::detail {
@@ -140,14 +141,10 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
   // and must stay rasterised with their exact ratio of 1 (at half a texel, rounding sent some of
   // them to the points).
   const float pointRatio = 0.5f / 0.35f;
-  for (GLuint program : {triangles_.id(), points_.id()}) {
-    glProgramUniform1f(program, 8, frame.caustics.maxIrradiance);
-    glProgramUniform1i(program, 9, l.pointsPerSide);
-    glProgramUniform2f(program, 10, float(l.texels), pointRatio);
-  }
+  setGridDrawUniforms(triangles_.id(), points_.id(), frame.caustics.maxIrradiance, l.pointsPerSide,
+                      l.texels, pointRatio);
   glViewportIndexedf(0, 0.0f, 0.0f, float(l.texels), float(l.texels));
   const GLuint groups = static_cast<GLuint>((l.pointsPerSide + 15) / 16);
-  const int cells = l.pointsPerSide - 1;
   for (int field = 0; field < (l.add ? 2 : 1); ++field) {
     // Field 0: the region's surface (with the cascades in Add mode); field 1: the cascades alone.
     glProgramUniform2i(compute, 8, cascades, field == 0 ? 1 : 0);
@@ -161,13 +158,8 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
       glDispatchCompute(groups, groups, 1);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
-      glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0,
-                                     firstLayer + field * l.layers + k);
-      glUseProgram(triangles_.id());
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * l.pointsPerSide, cells);
-      glUseProgram(points_.id());
-      glDrawArrays(GL_POINTS, 0, 2 * cells * cells);
+      drawGridLayer(framebuffer_.id(), texture_.id(), firstLayer + field * l.layers + k,
+                    triangles_.id(), points_.id(), clampCount_.id(), l.pointsPerSide);
     }
   }
 }

@@ -11,6 +11,7 @@
 #include "core/shader_library.h"
 #include "core/shared_math.h"
 #include "seabed_caustics/caustics_constants.h"
+#include "seabed_caustics/grid_layer_draw.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
@@ -137,11 +138,8 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
   glProgramUniform4f(compute, 7, saturatedFloat(flatT > 0.0 ? 1.0 / flatT : 0.0),
                      static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
   glProgramUniform1i(compute, 9, pointsPerSide);
-  for (GLuint program : {triangles_.id(), points_.id()}) {
-    glProgramUniform1f(program, 8, frame.caustics.maxIrradiance);
-    glProgramUniform1i(program, 9, pointsPerSide);
-    glProgramUniform2f(program, 10, static_cast<float>(l.resolution), pointRatio);
-  }
+  setGridDrawUniforms(triangles_.id(), points_.id(), frame.caustics.maxIrradiance, pointsPerSide,
+                      l.resolution, pointRatio);
 
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(l.resolution),
@@ -153,15 +151,7 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
   const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
   for (int k = 0; k < l.layers; ++k) {
     glm::vec4 cascades[kMaxCascades];
-    for (int c = 0; c < water.cascadeCount; ++c) {
-      const double tile = water.tileSize[c];
-      const glm::dvec2 fromOrigin = l.gridOrigin[k] - water.origin;
-      // Mip level whose texel matches the grid spacing: finer ripples cannot be carried by
-      // the grid and would alias into false caustics.
-      const double lod = std::max(0.0, std::log2(l.cell * texelsPerSide / tile));
-      cascades[c] = glm::vec4(tileFraction(fromOrigin.x, tile), tileFraction(fromOrigin.y, tile),
-                              l.cell / tile, lod);
-    }
+    cascadeGridUniforms(water, l.gridOrigin[k], l.cell, texelsPerSide, cascades);
     glProgramUniform4fv(compute, 0, water.cascadeCount, &cascades[0].x);
     const glm::dvec2 gridLocal = l.gridOrigin[k] - l.windowOrigin;
     glProgramUniform4f(compute, 5, static_cast<float>(gridLocal.x), static_cast<float>(gridLocal.y),
@@ -171,12 +161,8 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, slot.buffer.id());
-    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
-    glUseProgram(triangles_.id());
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, l.cells);
-    glUseProgram(points_.id());
-    glDrawArrays(GL_POINTS, 0, 2 * l.cells * l.cells);
+    drawGridLayer(framebuffer_.id(), texture_.id(), k, triangles_.id(), points_.id(),
+                  slot.buffer.id(), pointsPerSide);
   }
   // The spread before the last layer is detached: dispatched after the detach, llvmpipe's
   // GL_TIME_ELAPSED query around the next pass (the tile field's, compute only) read 11,000 s

@@ -1,0 +1,42 @@
+#include "seabed_caustics/grid_layer_draw.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/frame_geometry.h"
+#include "core/shared_math.h"
+
+namespace postfx::detail {
+
+void setGridDrawUniforms(GLuint triangles, GLuint points, float maxIrradiance, int pointsPerSide,
+                         int texels, float pointRatio) {
+  for (GLuint program : {triangles, points}) {
+    glProgramUniform1f(program, 8, maxIrradiance);
+    glProgramUniform1i(program, 9, pointsPerSide);
+    glProgramUniform2f(program, 10, static_cast<float>(texels), pointRatio);
+  }
+}
+
+void drawGridLayer(GLuint framebuffer, GLuint texture, int layer, GLuint triangles, GLuint points,
+                   GLuint clampCount, int pointsPerSide) {
+  const int cells = pointsPerSide - 1;
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount);
+  glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0, texture, 0, layer);
+  glUseProgram(triangles);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, cells);
+  glUseProgram(points);
+  glDrawArrays(GL_POINTS, 0, 2 * cells * cells);
+}
+
+void cascadeGridUniforms(const WaterSurface& water, const glm::dvec2& gridOrigin, double cell,
+                         int texelsPerSide, glm::vec4 (&out)[kMaxCascades]) {
+  for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
+    const double tile = water.tileSize[c];
+    const glm::dvec2 fromOrigin = gridOrigin - water.origin;
+    const double lod = std::max(0.0, std::log2(cell * texelsPerSide / tile));
+    out[c] = glm::vec4(tileFraction(fromOrigin.x, tile), tileFraction(fromOrigin.y, tile),
+                       cell / tile, lod);
+  }
+}
+
+}  // namespace postfx::detail
