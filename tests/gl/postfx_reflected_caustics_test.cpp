@@ -605,9 +605,13 @@ TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous)
         for (const glm::vec4* v : {&a[i], &b[i]}) {
           ASSERT_TRUE(std::isfinite(v->r) && std::isfinite(v->g) && std::isfinite(v->b))
               << x << "," << y;
-          if (s.frame.reflectedCaustics.includeMirrorMean) ASSERT_GE(v->r, 0.0f);
+          if (s.frame.reflectedCaustics.includeMirrorMean) {
+            ASSERT_GE(v->r, 0.0f);
+          }
           ASSERT_LE(std::abs(v->r), bound) << x << "," << y;
-          if (p.surface < 0 || p.position.y + s.cameraY <= 0.0) ASSERT_EQ(*v, glm::vec4(0.0f));
+          if (p.surface < 0 || p.position.y + s.cameraY <= 0.0) {
+            ASSERT_EQ(*v, glm::vec4(0.0f));
+          }
         }
         // The flat mirror light here: the scale the change is measured against.
         const glm::dvec3 lr(sun.x, -sun.y, sun.z);
@@ -618,8 +622,9 @@ TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous)
     // The flat mean alone moves by dR/de ~ 1e-4 relative; the network moves by a 1e-4 rad turn
     // of every ray (under a millimetre at these heights, a texel is 9 cm): a per-mille change of
     // the mirror light.
-    if (sumA > 0.0)
+    if (sumA > 0.0) {
       EXPECT_LT(sumDiff / sumA, 0.01) << "sun step changed the image by " << sumDiff / sumA;
+    }
   }
 }
 

@@ -180,9 +180,8 @@ TEST(SampleHarbour, SceneHoldsTheSeaAndTheHarbourAndTheTraceSeesThem) {
 }
 
 // The command line as main sees it.
-ocean::ParsedCommandLine parse(std::vector<std::string> words) {
-  words.insert(words.begin(), "ocean_sample");
-  std::vector<const char*> argv;
+ocean::ParsedCommandLine parse(const std::vector<std::string>& words) {
+  std::vector<const char*> argv{"ocean_sample"};
   for (const std::string& w : words) argv.push_back(w.c_str());
   return ocean::parseCommandLine(int(argv.size()), argv.data());
 }
