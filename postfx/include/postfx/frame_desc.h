@@ -189,7 +189,7 @@ struct FrameDesc {
   WaterSurface water;
   SunShadowMap shadow;
   CausticsSettings caustics;
-  GodRaySettings godRays;                                  // read only with Feature::GodRays
+  GodRaySettings godRays;  // read only with Feature::GodRays
   // Read only with Feature::ReflectedCaustics (postfx/reflected_caustics.h).
   ReflectedCausticsSettings reflectedCaustics;
   ObjectCausticsFrame objectCaustics;                      // read only with Feature::ObjectCaustics

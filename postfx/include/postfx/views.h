@@ -80,9 +80,9 @@ Result dispatch(Context& context, const FrameDesc& frame, const ViewDesc* views,
                 int viewCount) noexcept;
 
 // The view's own passes (Pass::WavefrontAreaRatio, Floor, Caustics, GodRays, ReflectedCaustics;
-// the others read present = false), updated by each dispatch that carries the view. The shared passes
-// (Pass::TileIrradiance, Pass::ObjectCaustics with every view's composite, the local lights) are
-// timed once per frame in stats(context), with clampedFluxFraction.
+// the others read present = false), updated by each dispatch that carries the view. The shared
+// passes (Pass::TileIrradiance, Pass::ObjectCaustics with every view's composite, the local lights)
+// are timed once per frame in stats(context), with clampedFluxFraction.
 const FrameStats& stats(const View& view) noexcept;
 
 }  // namespace postfx

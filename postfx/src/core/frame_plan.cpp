@@ -85,7 +85,8 @@ FramePlan planFrame(const Context& context, const FrameDesc& frame) {
     }
   }
   plan.floor = hasFeature(context.desc.features, testing::BenchmarkFloor);
-  plan.fullScreen = plan.caustics || plan.godRays || plan.reflected || (plan.objectMaps() && plan.floor);
+  plan.fullScreen =
+      plan.caustics || plan.godRays || plan.reflected || (plan.objectMaps() && plan.floor);
   return plan;
 }
 

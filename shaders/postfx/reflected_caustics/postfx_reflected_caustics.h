@@ -3,8 +3,8 @@
 // exactly what the shaders do. Heights are metres above the mean level.
 #ifndef POSTFX_SHARED_REFLECTED_CAUSTICS_H
 #define POSTFX_SHARED_REFLECTED_CAUSTICS_H
-#include "shared/common.h"
 #include "postfx/seabed_caustics/postfx_wavefront_area_ratio.h"
+#include "shared/common.h"
 
 SHARED_BEGIN
 
