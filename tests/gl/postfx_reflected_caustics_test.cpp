@@ -785,3 +785,79 @@ TEST(ReflectedCausticsMath, MirrorTurnsTheLandingByTwiceTheSlope) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ReflectedCausticsMath, ReceiverLightIsWhatItsRaysDeliver) {
+  using namespace postfx::shared;
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.3f, 0.35f, 0.9f));
+  const glm::vec3 toWater(sun.x, -sun.y, sun.z);  // l_r
+  const glm::vec2 rise = -glm::vec2(sun.x, sun.z) / sun.y;
+  // An underside, a face tilted down toward the water, a wall leaning back a little: each faces
+  // the mirrored sun (the pass lights no other).
+  const glm::vec3 normals[] = {{0, -1, 0},
+                               glm::normalize(glm::vec3(-0.2f, -0.3f, 0.9f)),
+                               glm::normalize(glm::vec3(0.4f, 0.1f, 0.8f))};
+  for (const glm::vec3& n : normals) {
+    ASSERT_GT(glm::dot(n, toWater), 0.0f);
+    // Flat water (D = I rise): I times flat water's n . l_r, whatever the face.
+    for (float i : {1.0f, 0.3f, 2.5f}) {
+      const glm::vec3 field(i, i * rise.x, i * rise.y);
+      EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 1.0f, 32.0f),
+                  i * std::max(glm::dot(n, toWater), 0.0f), 1e-5f);
+      EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 0.0f, 32.0f),
+                  (i - 1.0f) * glm::dot(n, toWater), 1e-5f);
+    }
+    // Two bundles of rays, each of horizontal flux f and drift d, deliver f (-n.y - n.xz . d)
+    // per unit area each (a ray's flux times its cosine on the face over its own on the
+    // horizontal), summed.
+    const glm::vec2 d1(0.1f, -1.2f), d2(-0.5f, -3.0f);
+    const float f1 = 0.7f, f2 = 0.4f;
+    auto onFace = [&](float f, glm::vec2 d) {
+      const glm::vec3 ray = glm::normalize(glm::vec3(d.x, 1.0f, d.y));
+      return f * std::max(-glm::dot(n, ray), 0.0f) / ray.y;
+    };
+    const glm::vec3 field(f1 + f2, f1 * d1.x + f2 * d2.x, f1 * d1.y + f2 * d2.y);
+    ASSERT_GT(onFace(1.0f, d1), 0.0f);  // both bundles meet the face from the front
+    ASSERT_GT(onFace(1.0f, d2), 0.0f);
+    EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 1.0f, 32.0f) / sun.y,
+                onFace(f1, d1) + onFace(f2, d2), 1e-4f);
+  }
+  // An underside weights every ray alike; a wall facing the sea the low ones more.
+  const glm::vec3 low(1.0f, 1.0f * rise.x * 2.0f, 1.0f * rise.y * 2.0f);
+  const glm::vec3 flat(1.0f, rise.x, rise.y);
+  const glm::vec3 underside(0, -1, 0), wall = glm::normalize(glm::vec3(sun.x, 0.0f, sun.z));
+  EXPECT_FLOAT_EQ(reflectedReceiverLight(underside, low, sun.y, rise, 1.0f, 32.0f),
+                  reflectedReceiverLight(underside, flat, sun.y, rise, 1.0f, 32.0f));
+  EXPECT_NEAR(reflectedReceiverLight(wall, low, sun.y, rise, 1.0f, 32.0f),
+              2.0f * reflectedReceiverLight(wall, flat, sun.y, rise, 1.0f, 32.0f), 1e-5f);
+  // Rays from behind a face: nothing, never negative light.
+  EXPECT_EQ(reflectedReceiverLight(-wall, flat, sun.y, rise, 1.0f, 32.0f), 0.0f);
+  // The clamp bounds what a face gathers (from low rays more than the horizontal carries), and
+  // the modulation is that light less flat water's.
+  const glm::vec3 grazing(1.0f, 40.0f * rise.x, 40.0f * rise.y);
+  EXPECT_FLOAT_EQ(reflectedReceiverLight(wall, grazing, sun.y, rise, 1.0f, 5.0f), 5.0f);
+  EXPECT_FLOAT_EQ(reflectedReceiverLight(wall, grazing, sun.y, rise, 0.0f, 5.0f),
+                  5.0f - reflectedReceiverLight(wall, flat, sun.y, rise, 1.0f, 5.0f));
+}
+
+TEST(ReflectedCausticsMath, MeanDriftAndEscapeHaveTheirLimits) {
+  using namespace postfx::shared;
+  const glm::vec2 rise(0.4f, -2.5f);
+  // The mean drift where light arrives; flat water's where almost none does (noise).
+  EXPECT_NEAR(reflectedMeanDrift(glm::vec3(2.0f, 1.0f, -3.0f), rise).x, 0.5f, 1e-6f);
+  EXPECT_NEAR(reflectedMeanDrift(glm::vec3(2.0f, 1.0f, -3.0f), rise).y, -1.5f, 1e-6f);
+  EXPECT_EQ(reflectedMeanDrift(glm::vec3(0.0f, 0.0f, 0.0f), rise), rise);
+  EXPECT_EQ(reflectedMeanDrift(glm::vec3(1e-3f, 5.0f, 5.0f), rise), rise);
+  // Masking: flat water and steep rays escape whole; grazing rays do not; never above 1.
+  for (float e : {5.0f, 20.0f, 60.0f, 89.0f}) {
+    const float s = std::sin(glm::radians(e));
+    EXPECT_FLOAT_EQ(reflectedEscape(1.0f, s, s), 1.0f) << e;
+  }
+  EXPECT_FLOAT_EQ(reflectedEscape(0.98f, 0.6f, 0.8f), 1.0f);
+  EXPECT_NEAR(reflectedEscape(0.98f, 0.02f, 0.3f), 2.0f * 0.98f * 0.02f / 0.3f, 1e-6f);
+  EXPECT_EQ(reflectedEscape(0.98f, 0.0f, 0.3f), 0.0f);
+  EXPECT_TRUE(std::isfinite(reflectedEscape(1.0f, 0.5f, 0.0f)));
+}
+
+}  // namespace

@@ -1,15 +1,19 @@
 #pragma once
 // Reflected caustics above the water (Feature::ReflectedCaustics): the sunlight the waves mirror
 // upward, the moving bright network on a hull, the underside of a pier, a harbour wall or a cliff.
-// Per view (like WavefrontAreaRatio's window, it follows the view's camera), a grid over the
-// water around the camera reflects the sun (law of reflection through the waves' own normals and
-// heights, Fresnel reflectance per grid point) onto heightLayers horizontal layers above the level,
-// folds summed as the wavefront area ratio sums them under the water. A pixel above the level then
-// receives
-//     albedo * E_sun * intensity * R(theta_sun) * I * max(n . l_r, 0) * visibility,
+// Per view (like WavefrontAreaRatio's window, it follows the view's camera, centred a quarter of
+// its side ahead of it along the view), a grid over the water there reflects the sun (law of reflection through the waves' own normals and
+// heights, Fresnel reflectance per grid point, less the light the next crest catches) onto
+// heightLayers horizontal layers above the level, folds summed as the wavefront area ratio sums
+// them under the water; each layer holds the light crossing it (I) and that light times its
+// rays' drift (D). A pixel above the level then receives
+//     albedo * E_sun * intensity * R(theta_sun) * sun.y * max(-n.y I - n.x D.x - n.z D.z, 0)
+//     * visibility,
+// what the rays arriving at it deliver to its normal n: over a flat sea, I * max(n . l_r, 0),
 // l_r the flat-water reflected sun reversed (from the receiver down toward the water), R the
 // unpolarised Fresnel reflectance of flat water at the sun's incidence and I the field's
-// irradiance relative to flat water's mirror light (1 over a flat sea, its mean over any sea).
+// irradiance relative to flat water's mirror light (1 over a flat sea). Between layers the
+// field is looked up along the mean ray arriving at the pixel.
 // Surfaces facing up, under the water, on the sky or facing away from the water get none.
 // visibility: with Feature::ShadowMask, the host's sun shadow map at the point of the water
 // the receiver's light was reflected from (flat water's), so water in the shade of a pier or
@@ -36,9 +40,10 @@ struct ReflectedCausticsSettings {
   // the sun mirrored by a flat sea (a planar-reflection light, a baked water bounce): adding
   // the mean again would count the mirrored sun twice.
   bool includeMirrorMean = true;
-  // Side of the square window around the camera the pattern is computed over (m),
-  // kWindowSizeRange; snapped to whole texels in world space. Beyond it, across the outer
-  // eighth, the pattern fades to the flat mean (the mirror light stays).
+  // Side of the square window the pattern is computed over (m), kWindowSizeRange: centred a
+  // quarter of it ahead of the camera along the view (most receivers stand across the water
+  // from it), snapped to whole texels in world space. Beyond it, across the outer eighth, the
+  // pattern fades to the flat mean (the mirror light stays).
   float windowSize = 24.0f;
   // Water grid cells and irradiance texels per side of the window, kGridResolutionRange. A
   // mirror deviates light by twice the slope (refraction by a quarter of it), so reflected lines
@@ -48,7 +53,9 @@ struct ReflectedCausticsSettings {
   int gridResolution = 512;
   // Horizontal receiver layers above the level, kReflectedLayersRange: layer k at
   // maxHeight * ((k + 1) / heightLayers)^2 (the pattern changes fastest near the water, where
-  // short waves focus). A receiver between two layers interpolates them along the mirror ray.
+  // short waves focus). A receiver between two layers interpolates them along its mean ray: the
+  // pattern between layers is approximated, so more layers (or one at a receiver's height) follow
+  // it better (docs/measurements.md, "Reflected caustics").
   int heightLayers = 6;
   // Height of the highest layer above the level (m), kReflectedHeightRange. Above it the
   // pattern fades to its mean over a further half of it: up there the waves' deviations have

@@ -62,6 +62,7 @@ void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures
                      static_cast<float>(sun.z), s.maxHeight);
   glProgramUniform4f(program, 4, scale.x, scale.y, scale.z, s.includeMirrorMean ? 1.0f : 0.0f);
   glProgramUniform2f(program, 5, static_cast<float>(l.rise.x), static_cast<float>(l.rise.y));
+  glProgramUniform1f(program, 6, s.maxIrradiance);
 
   // Back to the view's rectangle and the seabed state's full-screen vertex array.
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());

@@ -17,7 +17,8 @@ namespace postfx::detail {
 
 Result ReflectedFieldPass::init(const std::string& defines, std::string& error) {
   // The triangle and point draws are the wavefront area ratio's own: they read grid points in
-  // texels, whatever placed them.
+  // texels, whatever placed them; compiled to also write the light times its rays' drift.
+  constexpr std::string_view drift = "#define POSTFX_GRID_DRIFT 1\n";
   Result r = buildPrograms(
       defines,
       {{vertices_,
@@ -26,16 +27,21 @@ Result ReflectedFieldPass::init(const std::string& defines, std::string& error) 
        {triangles_,
         "postfx.reflected_caustics.triangles",
         {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.vert"},
-         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.frag"}}},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio.frag"}},
+        drift},
        {points_,
         "postfx.reflected_caustics.points",
         {{GL_VERTEX_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.vert"},
-         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}}}},
+         {GL_FRAGMENT_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_points.frag"}},
+        drift}},
       error);
   if (r != Result::Ok) return r;
   r = spread_.init(defines, "postfx.reflected_caustics", error);
   if (r != Result::Ok) return r;
   framebuffer_ = glkit::createFramebuffer("postfx.reflected_caustics.framebuffer");
+  const GLenum buffers[kReflectedChannels] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                              GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(framebuffer_.id(), kReflectedChannels, buffers);
   vertexArray_ = glkit::createVertexArray("postfx.reflected_caustics.vao");
   clampCount_ = glkit::createBuffer(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT,
                                     "postfx.reflected_caustics.clamp_count");
@@ -46,12 +52,23 @@ Result ReflectedFieldPass::reserve(const FrameDesc& frame, std::string& error) {
   layout_ = reflectedLayout(frame);
   const int resolution = layout_.resolution, layers = layout_.layers;
   if (!(texture_ && textureResolution_ == resolution && textureLayers_ == layers)) {
+    for (glkit::Texture& v : channelViews_) v.reset();
     texture_.reset();  // the old size goes first: never two allocated at once
     spread_.ensure(false, 0, 0);
     texture_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, "postfx.reflected_caustics.irradiance");
     // R32F with mips, as the refracted window's: exact additive sums, footprint-filtered lookups.
-    glTextureStorage3D(texture_.id(), wavefrontAreaRatioMipLevels(resolution), GL_R32F, resolution,
-                       resolution, layers);
+    // Three channels of `layers` layers each: the light, then its drift-weighted x and z sums.
+    const int levels = wavefrontAreaRatioMipLevels(resolution);
+    glTextureStorage3D(texture_.id(), levels, GL_R32F, resolution, resolution,
+                       kReflectedChannels * layers);
+    // One view per channel: the landing spread blurs `layers` layers of one texture.
+    for (int c = 0; c < kReflectedChannels; ++c) {
+      GLuint view = 0;
+      glGenTextures(1, &view);
+      glTextureView(view, GL_TEXTURE_2D_ARRAY, texture_.id(), GL_R32F, 0, GLuint(levels),
+                    GLuint(c * layers), GLuint(layers));
+      channelViews_[c] = glkit::Texture(view);
+    }
     textureResolution_ = resolution;
     textureLayers_ = layers;
   }
@@ -73,7 +90,7 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
   layout_ = reflectedLayout(frame);
   const ReflectedLayout& l = layout_;
   const float zero = 0.0f;
-  glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+  glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);  // every channel's layers
   const GLuint zeros[2] = {0, 0};  // never read, kept from wrapping around
   glNamedBufferSubData(clampCount_.id(), 0, sizeof(zeros), zeros);
 
@@ -101,6 +118,12 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
                      static_cast<float>(l.resolution));
   glBindVertexArray(vertexArray_.id());
   glEnable(GL_PROGRAM_POINT_SIZE);
+  // The drift channels add up as the light does (the caller set buffer 0's blend; the guard
+  // restores every buffer's).
+  for (GLuint b = 1; b < GLuint(kReflectedChannels); ++b) {
+    glEnablei(GL_BLEND, b);
+    glBlendFuncSeparatei(b, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  }
   glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPoints_.view());
   glBindSampler(POSTFX_UNIT_GRID_POINTS, 0);
   const int texelsPerSide = std::max(textures.water.width, textures.water.height);
@@ -118,22 +141,27 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     drawGridLayer(framebuffer_.id(), texture_.id(), k, triangles_.id(), points_.id(),
-                  clampCount_.id(), pointsPerSide);
+                  clampCount_.id(), pointsPerSide, l.layers);
   }
-  glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  for (GLuint b = 1; b < GLuint(kReflectedChannels); ++b) glDisablei(GL_BLEND, b);
+  for (int c = 0; c < kReflectedChannels; ++c)
+    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0 + GLenum(c), 0, 0, 0);
   if (l.spread) {
+    // Every channel alike: the drift sums stay the light's own rays' (their ratio the mean).
     float heights[kMaxReflectedLayers] = {};
     for (int k = 0; k < l.layers; ++k) heights[k] = static_cast<float>(l.height[k]);
-    spread_.draw(frame, textures,
-                 {texture_.id(), l.resolution, l.layers, heights, l.cell, l.windowSize,
-                  reflectedLandingJacobian(sun),
-                  reflectedSunDiscCovariance(
-                      sun, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees)))});
+    for (const glkit::Texture& view : channelViews_)
+      spread_.draw(frame, textures,
+                   {view.id(), l.resolution, l.layers, heights, l.cell, l.windowSize,
+                    reflectedLandingJacobian(sun),
+                    reflectedSunDiscCovariance(
+                        sun, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees)))});
   }
   glGenerateTextureMipmap(texture_.id());
 }
 
 void ReflectedFieldPass::release() {
+  for (glkit::Texture& v : channelViews_) v.reset();
   texture_.reset();
   spread_.ensure(false, 0, 0);
   textureResolution_ = textureLayers_ = 0;

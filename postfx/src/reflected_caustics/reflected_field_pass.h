@@ -3,12 +3,14 @@
 // mirrors every water grid point's sun ray onto the layer (reflected_light_vertices.comp), and
 // the wavefront area ratio's own triangle and point draws add up the beam area over the landing
 // area, folds summed, into a layer of a plugin-owned GL_R32F 2D array with mips (footprint-
-// filtered lookups). Drawn per view: its window follows the view's camera, as the refracted
-// window's does.
-// Why a grid mesh and not the periodic tile field the seabed uses: a mirror deviates light by
-// twice the slope (refraction by a quarter of it), so reflected light is sharp and focused within
-// metres of the water, and the tile field's product of per-cascade fields (each cascade alone)
-// is far from the light their summed slopes mirror.
+// filtered lookups); with it, that light times its rays' drift per metre of rise (x and z), in
+// layers of their own, so that a receiver of any orientation and height between the layers gets
+// what its rays deliver (postfx_reflected_caustics.h). Layer c * layers + k holds channel c
+// (light, drift x, drift z) of height layer k. Drawn per view: its window follows the view's
+// camera, as the refracted window's does. Why a grid mesh and not the periodic tile field the
+// seabed uses: a mirror deviates light by twice the slope (refraction by a quarter of it), so
+// reflected light is sharp and focused within metres of the water, and the tile field's product of
+// per-cascade fields (each cascade alone) is far from the light their summed slopes mirror.
 #include <epoxy/gl.h>
 
 #include <cstdint>
@@ -50,6 +52,7 @@ class ReflectedFieldPass {
   glkit::Framebuffer framebuffer_;
   glkit::VertexArray vertexArray_;
   glkit::Texture texture_;
+  glkit::Texture channelViews_[kReflectedChannels];  // texture_'s layers of one channel each
   glkit::Buffer clampCount_;  // the draws count what the clamp removes; nobody reads it here
   int textureResolution_ = 0, textureLayers_ = 0;
   GridPointBuffer gridPoints_;

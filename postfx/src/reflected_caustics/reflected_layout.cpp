@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/frame_geometry.h"
 #include "core/shared_math.h"
+#include "seabed_caustics/layer_spread.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
@@ -21,11 +23,20 @@ ReflectedLayout reflectedLayout(const FrameDesc& frame) {
   l.layers = std::clamp(s.heightLayers, 1, kMaxReflectedLayers);
   l.windowSize = s.windowSize;
   l.texel = l.windowSize / l.resolution;
-  const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
+  // Centred ahead of the camera, where what it sees lies: the receivers of reflected light
+  // face the water and stand across it (a wall, a hull, a pier), mostly farther than the water
+  // the view also shows. A quarter of the window stays behind the camera for what the view's
+  // sides reach; looking straight down or up it centres on the camera.
+  const glm::dvec3 forward = viewToWorldRotation(frame.camera.view) * glm::dvec3(0.0, 0.0, -1.0);
+  const glm::dvec2 ahead =
+      glm::dvec2(forward.x, forward.z) * (kReflectedWindowAhead * double(s.windowSize));
+  const glm::dvec2 centre =
+      glm::dvec2(frame.camera.position.x, frame.camera.position.z) +
+      (std::isfinite(ahead.x) && std::isfinite(ahead.y) ? ahead : glm::dvec2(0.0));
   // Snapped as the wavefront area ratio's window: every filtered level keeps its texels on one
   // world grid while the camera moves.
   const double snap = l.texel * double(1 << shared::IRRADIANCE_MIP_LEVELS);
-  l.windowOrigin = glm::floor((camera - 0.5 * l.windowSize) / snap) * snap;
+  l.windowOrigin = glm::floor((centre - 0.5 * l.windowSize) / snap) * snap;
   // A mirror turns light by twice the slope: the grid reaches the margin beyond the window that
   // the refracted grid does (light mirrored from outside it lands in the fade band).
   const double gridSpan = l.windowSize * (1.0 + 2.0 * kGridMargin);
@@ -46,7 +57,15 @@ ReflectedLayout reflectedLayout(const FrameDesc& frame) {
 }
 
 std::uint64_t reflectedFieldBytes(int gridResolution, int layers, bool spread) {
-  return wavefrontAreaRatioBytes(gridResolution, layers, spread);
+  // The refracted window's bytes for one channel's layers, and the two drift channels' texels.
+  const std::uint64_t oneChannel = wavefrontAreaRatioBytes(gridResolution, layers, false);
+  std::uint64_t texels = 0;
+  for (int level = 0; level < wavefrontAreaRatioMipLevels(gridResolution); ++level) {
+    const std::uint64_t side = std::max(gridResolution >> level, 1);
+    texels += side * side;
+  }
+  return oneChannel + texels * std::uint64_t(layers) * (kReflectedChannels - 1) * 4 +
+         (spread ? layerSpreadBytes(gridResolution, layers) : 0);
 }
 
 namespace {

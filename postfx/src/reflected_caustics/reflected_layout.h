@@ -1,7 +1,7 @@
 #pragma once
 // Where the reflected light field lies this frame, computed in double from the FrameDesc: the
-// receiver window (camera-centred, snapped to whole texels of its coarsest filtered level so the
-// pattern does not swim), each height layer's water grid (snapped to whole cells, moved against
+// receiver window (ahead of the camera, snapped to whole texels of its coarsest filtered level so
+// the pattern does not swim), each height layer's water grid (snapped to whole cells, moved against
 // the mirror ray's drift so its light lands in the window) and the layers' heights.
 #include <cstdint>
 
@@ -12,6 +12,11 @@
 namespace postfx::detail {
 
 inline constexpr int kMaxReflectedLayers = 8;
+// How far ahead of the camera the window's centre lies, along the view's horizontal direction,
+// in window sides (a quarter of the window stays behind the camera).
+inline constexpr double kReflectedWindowAhead = 0.25;
+// The field's channels per height layer: the light, and its drift-weighted x and z sums.
+inline constexpr int kReflectedChannels = 3;
 
 struct ReflectedLayout {
   int resolution = 0;  // texels and grid cells' nominal count per side
@@ -45,10 +50,10 @@ double reflectedLayerHeight(int k, int layers, double maxHeight);
 // Requires validated settings and a sun above the horizon.
 ReflectedLayout reflectedLayout(const FrameDesc& frame);
 
-// GPU memory the field allocates for `gridResolution` and `layers`: the R32F layers with their
-// mip levels and the grid points (two vec4 per point); with `spread`, the blur's copy of level 0
-// and the slope statistics. The memory estimate and ReflectedFieldPass::allocatedBytes() must
-// agree (a test checks).
+// GPU memory the field allocates for `gridResolution` and `layers`: the R32F layers of its three
+// channels with their mip levels and the grid points (two vec4 per point); with `spread`, the
+// blur's copy of one channel's level 0 and the slope statistics. The memory estimate and
+// ReflectedFieldPass::allocatedBytes() must agree (a test checks).
 std::uint64_t reflectedFieldBytes(int gridResolution, int layers, bool spread);
 
 }  // namespace postfx::detail

@@ -18,10 +18,16 @@ void setGridDrawUniforms(GLuint triangles, GLuint points, float maxIrradiance, i
 }
 
 void drawGridLayer(GLuint framebuffer, GLuint texture, int layer, GLuint triangles, GLuint points,
-                   GLuint clampCount, int pointsPerSide) {
+                   GLuint clampCount, int pointsPerSide, int channelStride) {
   const int cells = pointsPerSide - 1;
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount);
   glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0, texture, 0, layer);
+  if (channelStride > 0) {
+    glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT1, texture, 0,
+                                   layer + channelStride);
+    glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT2, texture, 0,
+                                   layer + 2 * channelStride);
+  }
   glUseProgram(triangles);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * pointsPerSide, cells);
   glUseProgram(points);

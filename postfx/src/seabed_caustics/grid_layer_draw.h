@@ -19,9 +19,12 @@ void setGridDrawUniforms(GLuint triangles, GLuint points, float maxIrradiance, i
 
 // Draws the grid (`pointsPerSide`^2 points, computed) into `layer` of `texture` through
 // `framebuffer`, counting the clamp's removed flux in `clampCount`. Expects the grid points'
-// view on POSTFX_UNIT_GRID_POINTS, blend ONE, ONE, the viewport and vertex array set.
+// view on POSTFX_UNIT_GRID_POINTS, blend ONE, ONE, the viewport and vertex array set. With
+// `channelStride` > 0 the programs write two more channels (POSTFX_GRID_DRIFT), into layers
+// layer + channelStride and layer + 2 channelStride on attachments 1 and 2 (the framebuffer's
+// draw buffers set to all three).
 void drawGridLayer(GLuint framebuffer, GLuint texture, int layer, GLuint triangles, GLuint points,
-                   GLuint clampCount, int pointsPerSide);
+                   GLuint clampCount, int pointsPerSide, int channelStride = 0);
 
 // Per cascade of `water`: the uv of the grid point at world `gridOrigin` (reduced modulo the tile
 // in double), the uv per grid `cell`, and the mip level whose texel matches the cell (finer

@@ -20,6 +20,17 @@ SHARED_FN float fresnelReflectance(float cosIncident, float ior) {
   return 1.0f - fresnelTransmittance(cosIncident, ior);
 }
 
+// The share of the light a facet (normal's height component ny) mirrors into a ray rising at
+// sine ry that leaves the waves instead of meeting the next one: microfacet theory's V-cavity
+// masking, min(1, 2 ny ry / cos(incidence)) (the mirrored ray makes the incidence angle with the
+// normal). 1 for flat water and any ray well above the horizon, falling to 0 as it grazes. A
+// wall weights the low rays by their drift (reflectedReceiverLight), so without it the light
+// the next crest catches lit the walls near the water far too brightly (docs/measurements.md,
+// "Reflected caustics").
+SHARED_FN float reflectedEscape(float ny, float ry, float cosIncident) {
+  return min(1.0f, 2.0f * ny * ry / max(cosIncident, 1e-6f));
+}
+
 // Where the sun ray mirrored by the surface point (local, h) meets a horizontal layer `height`
 // metres above the mean level (xy), and its Fresnel reflectance relative to flat water's (z).
 // A ray that cannot rise (the back of a wave, or mirrored downward by a steep face) carries no
@@ -33,7 +44,43 @@ SHARED_FN vec3 reflectToLayer(vec2 local, vec3 surface, vec3 towardSun, float io
   if (!(cosIncident > 0.0f) || !(r.y > 1e-4f)) return vec3(local, 0.0f);
   float path = max((height - h) / r.y, 0.0f);
   float weight = fresnelReflectance(cosIncident, ior) * invFlatReflectance;
+  weight *= reflectedEscape(n.y, r.y, cosIncident);
   return vec3(local + vec2(r.x, r.z) * path, weight);
+}
+
+// The mirrored ray's horizontal drift per metre of rise, ray.xz / ray.y, at the surface point
+// (slopes, height): what the field carries besides the light, so that a receiver of any
+// orientation gets what the rays arriving at it deliver (reflectedReceiverLight). Rays that
+// cannot rise carry no light; they get `flatRise` so that nothing in them is undefined.
+SHARED_FN vec2 mirroredDrift(vec3 surface, vec3 towardSun, vec2 flatRise) {
+  vec3 r = reflect(-towardSun, waterNormalFromSlopes(vec2(surface.x, surface.y)));
+  if (!(r.y > 1e-4f)) return flatRise;
+  return vec2(r.x, r.z) / r.y;
+}
+
+// The light a receiver of unit normal n gets from the field (I, Dx, Dz): I the flux crossing a
+// horizontal plane relative to flat water's, D the sum of that flux times each ray's drift d =
+// ray.xz / ray.y. A ray of horizontal flux f meets a face of normal n with f (-n.y - n.xz . d)
+// per unit area, linear in d, so the sum over every ray crossing there is exactly
+// -n.y I - n.xz . D: a wall facing the sea weights the low rays (large d) as much more as they
+// deserve, an underside weights all alike. Scaled by sun.y to flat water's n . l_r (flat: D =
+// I rise, rise = -sun.xz / sun.y), never negative (rays from behind the face) nor above
+// `maxLight` (the clamp, in flat water's light on a face turned to the mirrored sun: a face
+// can gather more than the horizontal clamp lets through, from low rays). `mean` 1 gives that
+// light, 0 only its difference from flat water's (the waves' modulation, signed).
+SHARED_FN float reflectedReceiverLight(vec3 n, vec3 field, float sunY, vec2 rise, float mean,
+                                       float maxLight) {
+  float light = sunY * (-n.y * field.x - n.x * field.y - n.z * field.z);
+  float flatLight = sunY * (-n.y - n.x * rise.x - n.z * rise.y);
+  return clamp(light, 0.0f, maxLight) - (1.0f - mean) * flatLight;
+}
+
+// The mean drift per metre of rise of the rays in a field sample (light, drift sums): D / I where
+// enough light arrives to say, flat water's `rise` where almost none does (its ratio is then
+// noise).
+SHARED_FN vec2 reflectedMeanDrift(vec3 field, vec2 rise) {
+  float trust = smoothstep(0.02f, 0.1f, field.x);
+  return rise + (vec2(field.y, field.z) / max(field.x, 1e-6f) - rise) * trust;
 }
 
 // Where a layer `layerHeight` above the level is looked up for a receiver at xz, `height` above

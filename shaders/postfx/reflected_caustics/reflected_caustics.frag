@@ -1,7 +1,8 @@
 #version 450 core
 // Reflected caustics added into the host's HDR target above the water (postfx/reflected_caustics.h):
-// albedo * E * intensity * R_flat * I * max(n . l_r, 0) * visibility, I the reflected light field
-// (reflected_field_pass.h) interpolated between its height layers along the flat mirror ray.
+// albedo * E * intensity * R_flat * (the field's light on a face of normal n, flat water's
+// n . l_r; reflectedReceiverLight) * visibility, the field (reflected_field_pass.h) interpolated
+// between its height layers along the rays arriving at the receiver.
 // Reads the seabed pass's block and G-buffer units (CausticsPass::bindState); compiled without
 // the raw output (its framebuffer has the host's target only).
 #include "postfx/seabed_caustics/caustics_io.glsl"
@@ -14,7 +15,8 @@
 
 layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray reflectedIrradiance;
 
-// xy: camera-relative world xz of the window's centre (m); z: 1 / its side (1/m); w: layers
+// xy: camera-relative world xz of the window's centre (m); z: 1 / its side (1/m); w: height
+// layers (channel c of layer k is texture layer c * layers + k)
 layout(location = 0) uniform vec4 window;
 layout(location = 1) uniform vec4 heights[2];  // layers 0-3 and 4-7 (m above the level)
 // xyz: l_r, the flat mirror ray reversed (receiver -> water); w: maxHeight (m)
@@ -22,6 +24,7 @@ layout(location = 3) uniform vec4 towardWater;
 // rgb: E_sun * intensity * R(theta_sun); w: 1 with the mirror mean, 0 for its modulation only
 layout(location = 4) uniform vec4 mirrorLight;
 layout(location = 5) uniform vec2 rise;  // -towardSun.xz / towardSun.y
+layout(location = 6) uniform float maxLight;  // ReflectedCausticsSettings::maxIrradiance
 
 float smoothLevelZero(vec2 uv, float layer, float texels) {
   BSplineTaps t = bsplineTaps(uv, texels);
@@ -32,22 +35,46 @@ float smoothLevelZero(vec2 uv, float layer, float texels) {
   return bsplineSum(t, e00, e10, e01, e11);
 }
 
-// Layer k's light for a receiver at camera-relative xz, `height` above the level: looked up where
-// the flat mirror ray through it crosses the layer, filtered over the pixel's footprint (lod),
-// faded to the flat mean 1 toward the window's edge (the window snaps in steps of its coarsest
-// filtered texel; the fade follows the camera and stays inside).
-float layerLight(vec2 xz, float height, int k, float lod, float texels) {
-  float layerHeight = packedLayerDepth(heights[0], heights[1], k);
-  vec2 uv = (reflectedLayerSamplePoint(xz, height, layerHeight, rise) - window.xy) * window.z + 0.5;
-  float margin = float(1 << IRRADIANCE_MIP_LEVELS) / texels;
-  float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)) - margin;
-  float weight = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge);
-  if (!(weight > 0.0)) return 1.0;
-  float layer = float(k);
+// Channel layer `layer` at uv, filtered over the pixel's footprint (lod).
+float channelAt(vec2 uv, float layer, float lod, float texels) {
   float filtered = textureLod(reflectedIrradiance, vec3(uv, layer), lod).r;
   float smoothing = clamp(-lod, 0.0, 1.0);
   if (smoothing > 0.0) filtered = mix(filtered, smoothLevelZero(uv, layer, texels), smoothing);
-  return mix(1.0, filtered, weight);
+  return filtered;
+}
+
+// Layer k's field (light, drift sums) at camera-relative xz `point`, faded to flat water's
+// (1, rise) toward the window's edge (the window snaps in steps of its coarsest filtered texel;
+// the fade follows the camera and stays inside). `axis`: the pixel's footprint's long half-axis
+// in the layer (m), averaged over by up to four taps along it.
+vec3 layerField(vec2 point, int k, int layers, float lod, float texels, vec2 axis) {
+  vec2 uv = (point - window.xy) * window.z + 0.5;
+  float margin = float(1 << IRRADIANCE_MIP_LEVELS) / texels;
+  float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)) - margin;
+  float weight = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge);
+  vec3 flatField = vec3(1.0, rise);
+  if (!(weight > 0.0)) return flatField;
+  vec2 axisUv = axis * window.z;
+  int taps = clamp(int(ceil(2.0 * length(axisUv) * texels * exp2(-max(lod, 0.0)))), 1, 4);
+  vec3 f = vec3(0.0);
+  for (int i = 0; i < 4; ++i) {
+    if (i >= taps) break;
+    vec2 at = uv + axisUv * ((2.0 * float(i) + 1.0) / float(taps) - 1.0);
+    f += vec3(channelAt(at, float(k), lod, texels), channelAt(at, float(layers + k), lod, texels),
+              channelAt(at, float(2 * layers + k), lod, texels));
+  }
+  return mix(flatField, f / float(taps), weight);
+}
+
+// Layer k's field for a receiver at xz, `height` above the level: where the rays arriving there
+// crossed the layer. First where the flat mirror ray crosses it, then where the mean ray found
+// there does: between layers the pattern travels with its rays, which low waves tilt far from
+// the flat ray (a blend of two layers along it smeared the lines between them).
+vec3 layerLight(vec2 xz, float height, int k, int layers, float lod, float texels, vec2 axis) {
+  float layerHeight = packedLayerDepth(heights[0], heights[1], k);
+  vec2 first = reflectedLayerSamplePoint(xz, height, layerHeight, rise);
+  vec2 drift = reflectedMeanDrift(layerField(first, k, layers, lod, texels, axis), rise);
+  return layerField(xz + drift * (layerHeight - height), k, layers, lod, texels, axis);
 }
 
 void main() {
@@ -84,13 +111,28 @@ void main() {
 #endif
   float distance = length(viewPos);
   float texels = float(textureSize(reflectedIrradiance, 0).x);
-  float lod = surfaceLogFootprint(n, p, distance) + log2(texels * window.z);
+  // The pixel's footprint as the layers see it: carried along the mirror ray onto a horizontal
+  // plane, a step up a wall moves the lookup by `rise` (2.7 m per metre for a sun 20 degrees
+  // up), so a wall's footprint stretches that much along it: the wall's pattern is the layer's
+  // squeezed, and a lookup filtered for the footprint alone aliased into speckle. Filtered for
+  // the footprint across, averaged along (anisotropically, as the trace's kernel on the wall).
+  float footprint = surfaceLogFootprint(n, p, distance);
+  float lod = footprint + log2(texels * window.z);
+  vec3 slope = vec3(0.0, 1.0, 0.0) - n * n.y;  // up the face
+  float slopeLength = length(slope);
+  vec2 axis = vec2(0.0);
+  float halfFootprint = 0.5 * exp2(footprint);
+  if (slopeLength > 1e-3) axis = (slope.xz - rise * slope.y) * (halfFootprint / slopeLength);
   int layers = int(window.w);
   vec3 blend = layerBlend(height, heights[0], heights[1], layers);
-  float lower = blend.x < 0.0 ? 1.0 : layerLight(p.xz, height, int(blend.x), lod, texels);
-  float upper = layerLight(p.xz, height, int(blend.y), lod, texels);
-  float irradiance = mix(1.0, mix(lower, upper, blend.z), reflectedTopWeight(height, towardWater.w));
-  float light = (irradiance - (1.0 - mirrorLight.w)) * nDotL * visibility;
+  vec3 flatField = vec3(1.0, rise);
+  vec3 lower = flatField;
+  if (!(blend.x < 0.0)) lower = layerLight(p.xz, height, int(blend.x), layers, lod, texels, axis);
+  vec3 upper = layerLight(p.xz, height, int(blend.y), layers, lod, texels, axis);
+  float keep = reflectedTopWeight(height, towardWater.w);
+  vec3 field = mix(flatField, mix(lower, upper, blend.z), keep);
+  float light =
+      reflectedReceiverLight(n, field, -towardWater.y, rise, mirrorLight.w, maxLight) * visibility;
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   // ViewExtinction::Plugin: the part of the view ray under the water, from a camera under the
   // level looking up at a hull (the ray is straight: the ratio of the heights); none from above.

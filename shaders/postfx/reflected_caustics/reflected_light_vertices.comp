@@ -2,8 +2,9 @@
 // Reflected caustics, step 1 of 3: every water grid point's mirrored sun ray onto one height layer
 // above the level, into the buffer the wavefront area ratio's triangle and point draws read
 // (the same two vec4s per point: (landing xy, beam xy) in irradiance texels from the window
-// corner, then (Fresnel reflectance relative to flat water's, 0, 0, 0)). The draws then add the
-// beam area over the landing area, folds summed, exactly as under the water.
+// corner, then (Fresnel reflectance relative to flat water's, the ray's drift per metre of rise
+// xy, 0)). The draws then add the beam area over the landing area, folds summed, exactly as
+// under the water, and (compiled with POSTFX_GRID_DRIFT) that light times the drift.
 // Compile-time switch: POSTFX_WATER_SINGLE_2D.
 #include "shared/common.h"
 #include "postfx/common/postfx_bindings.h"
@@ -52,5 +53,6 @@ void main() {
   vec2 beam = beamPosition(local, surface.z, towardSun.xz / towardSun.y);
   int i = 2 * (index.y * pointsPerSide + index.x);
   gridPoints[i] = vec4(hit.xy, beam) * scales.y;
-  gridPoints[i + 1] = vec4(hit.z, 0.0, 0.0, 0.0);
+  vec2 drift = mirroredDrift(surface, towardSun.xyz, -towardSun.xz / towardSun.y);
+  gridPoints[i + 1] = vec4(hit.z, drift, 0.0);
 }

@@ -14,6 +14,12 @@ noperspective in vec2 beamTexels;
 noperspective in float transmit;
 
 layout(location = 0) out float outIrradiance;
+#if defined(POSTFX_GRID_DRIFT)
+// The same light times its rays' drift (x, z), into the layers of the two drift channels.
+noperspective in vec2 drift;
+layout(location = 1) out float outDriftX;
+layout(location = 2) out float outDriftZ;
+#endif
 
 void main() {
   vec2 dx = dFdx(beamTexels), dy = dFdy(beamTexels);
@@ -23,4 +29,8 @@ void main() {
   float kept = min(e, maxIrradiance);
   countRemoved(e - kept);
   outIrradiance = kept;
+#if defined(POSTFX_GRID_DRIFT)
+  outDriftX = kept * drift.x;
+  outDriftZ = kept * drift.y;
+#endif
 }

@@ -16,6 +16,14 @@ void gridPoint(ivec2 index, out vec4 positions, out float transmit) {
   transmit = texelFetch(gridPoints, i + 1).x;
 }
 
+#if defined(POSTFX_GRID_DRIFT)
+// The ray's horizontal drift per metre of rise of grid point `index` (the reflected light's
+// grid points carry it: reflected_light_vertices.comp).
+vec2 gridPointDrift(ivec2 index) {
+  return texelFetch(gridPoints, 2 * (index.y * pointsPerSide + index.x) + 1).yz;
+}
+#endif
+
 vec4 receiverClip(vec2 texels) {
   // z = 0.5 lies inside both clip-control depth ranges.
   return vec4(texels * (2.0 / raster.x) - 1.0, 0.5, 1.0);

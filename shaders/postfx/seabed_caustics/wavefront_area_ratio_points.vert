@@ -11,6 +11,9 @@
 flat out float keptFlux;     // texel-areas of flat-water flux this point adds
 flat out float removedFlux;  // what the clamp took from it
 flat out vec2 landing;      // where it lands, in texels (window coordinates)
+#if defined(POSTFX_GRID_DRIFT)
+flat out vec2 keptDrift;  // keptFlux times its rays' mean drift per metre of rise
+#endif
 
 float cross2(vec2 a, vec2 b) {
   return a.x * b.y - a.y * b.x;
@@ -35,6 +38,9 @@ void main() {
   keptFlux = 0.0;
   removedFlux = 0.0;
   landing = vec2(0.0);
+#if defined(POSTFX_GRID_DRIFT)
+  keptDrift = vec2(0.0);
+#endif
   // Rasterised by the triangle draw (ratio <= raster.y, written as its complement so the
   // rounding of both sides agrees as far as it can): this point is culled.
   if (!(beamArea > raster.y * receiverArea) || !(flux > 0.0) || !(flux < 3.0e38)) {
@@ -45,6 +51,9 @@ void main() {
   keptFlux = min(flux, maxIrradiance * receiverArea);
   removedFlux = flux - keptFlux;
   landing = (p0.xy + p1.xy + p2.xy) * (1.0 / 3.0);
+#if defined(POSTFX_GRID_DRIFT)
+  keptDrift = keptFlux * (gridPointDrift(a) + gridPointDrift(b) + gridPointDrift(d)) * (1.0 / 3.0);
+#endif
   gl_Position = receiverClip(landing);
   // Covers exactly the texel centres within one texel of the landing on both axes: the four
   // bilinear neighbours (the others the fragment stage weighs 0).
