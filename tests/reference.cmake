@@ -87,3 +87,11 @@ postfx_add_test(postfx_shadow_bias_tests GL
 postfx_add_test(postfx_object_caustics_lights_accuracy_tests GL
   SOURCES gl/postfx_object_caustics_lights_accuracy_test.cpp
   LIBS ocean_validation ocean_reference glm::glm postfx::epoxy)
+
+# The traced frame reference's reflected light against the plugin's reflected caustics over
+# waves: their patterns on an underside and a wall.
+postfx_add_test(reference_reflected_pattern_tests GL
+  SOURCES gl/reference_reflected_pattern_test.cpp
+  LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy)
+target_include_directories(reference_reflected_pattern_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
+  ${POSTFX_SHADER_ROOT})
