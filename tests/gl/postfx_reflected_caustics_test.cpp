@@ -397,8 +397,9 @@ TEST_F(PostfxReflectedCausticsTest, BadSettingsAreRefusedWithNothingDrawn) {
 
 TEST_F(PostfxReflectedCausticsTest, WaterInTheShadeMirrorsNothing) {
   // A sun shadow map whose left half (light-space x < 0) is occluded: a pier's shade on the
-  // water. A receiver whose flat mirror ray comes from shaded water gets nothing; one lit from
-  // sunlit water gets exactly what it gets without the mask.
+  // water. A receiver whose flat mirror ray comes from shaded water gets nothing (the field
+  // holds the shade: its grid points read the map); one lit from sunlit water gets exactly what
+  // it gets without the mask.
   Receivers s(kLookAtPier, 0.6, 0.0);
   const int side = 256;
   GLuint map = 0;
@@ -439,12 +440,19 @@ TEST_F(PostfxReflectedCausticsTest, WaterInTheShadeMirrorsNothing) {
       const glm::dvec3 water = world + lr * (world.y / -lr.y);
       const glm::dvec4 clip = lightClip * glm::dvec4(water, 1.0);
       const double u = 0.5 * (clip.x / clip.w) + 0.5;
-      if (u < 0.5 - 4.0 / side) {
+      if (u < 0.5 - 16.0 / side) {
         ASSERT_EQ(masked[i], zero) << x << "," << y;
         ++shaded;
-      } else if (u > 0.5 + 4.0 / side) {
+      } else if (u < 0.5 - 4.0 / side) {
+        // Within 4 m of the shade's edge the field's lookup, filtered over the pixel's
+        // footprint, may reach a little past it (measured: under 0.1 %).
+        ASSERT_LE(masked[i].r, 0.01f * unmasked[i].r) << x << "," << y;
+        ++shaded;
+      } else if (u > 0.5 + 16.0 / side) {
         ASSERT_NEAR(masked[i].r, unmasked[i].r, 1e-6f * unmasked[i].r) << x << "," << y;
         ++sunlit;
+      } else if (u > 0.5 + 4.0 / side) {
+        ASSERT_NEAR(masked[i].r, unmasked[i].r, 0.01f * unmasked[i].r) << x << "," << y;
       }
     }
   EXPECT_GT(shaded, 100);
@@ -803,9 +811,9 @@ TEST(ReflectedCausticsMath, ReceiverLightIsWhatItsRaysDeliver) {
     // Flat water (D = I rise): I times flat water's n . l_r, whatever the face.
     for (float i : {1.0f, 0.3f, 2.5f}) {
       const glm::vec3 field(i, i * rise.x, i * rise.y);
-      EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 1.0f, 32.0f),
-                  i * std::max(glm::dot(n, toWater), 0.0f), 1e-5f);
       EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 0.0f, 32.0f),
+                  i * std::max(glm::dot(n, toWater), 0.0f), 1e-5f);
+      EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 1.0f, 32.0f),
                   (i - 1.0f) * glm::dot(n, toWater), 1e-5f);
     }
     // Two bundles of rays, each of horizontal flux f and drift d, deliver f (-n.y - n.xz . d)
@@ -820,25 +828,25 @@ TEST(ReflectedCausticsMath, ReceiverLightIsWhatItsRaysDeliver) {
     const glm::vec3 field(f1 + f2, f1 * d1.x + f2 * d2.x, f1 * d1.y + f2 * d2.y);
     ASSERT_GT(onFace(1.0f, d1), 0.0f);  // both bundles meet the face from the front
     ASSERT_GT(onFace(1.0f, d2), 0.0f);
-    EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 1.0f, 32.0f) / sun.y,
+    EXPECT_NEAR(reflectedReceiverLight(n, field, sun.y, rise, 0.0f, 32.0f) / sun.y,
                 onFace(f1, d1) + onFace(f2, d2), 1e-4f);
   }
   // An underside weights every ray alike; a wall facing the sea the low ones more.
   const glm::vec3 low(1.0f, 1.0f * rise.x * 2.0f, 1.0f * rise.y * 2.0f);
   const glm::vec3 flat(1.0f, rise.x, rise.y);
   const glm::vec3 underside(0, -1, 0), wall = glm::normalize(glm::vec3(sun.x, 0.0f, sun.z));
-  EXPECT_FLOAT_EQ(reflectedReceiverLight(underside, low, sun.y, rise, 1.0f, 32.0f),
-                  reflectedReceiverLight(underside, flat, sun.y, rise, 1.0f, 32.0f));
-  EXPECT_NEAR(reflectedReceiverLight(wall, low, sun.y, rise, 1.0f, 32.0f),
-              2.0f * reflectedReceiverLight(wall, flat, sun.y, rise, 1.0f, 32.0f), 1e-5f);
+  EXPECT_FLOAT_EQ(reflectedReceiverLight(underside, low, sun.y, rise, 0.0f, 32.0f),
+                  reflectedReceiverLight(underside, flat, sun.y, rise, 0.0f, 32.0f));
+  EXPECT_NEAR(reflectedReceiverLight(wall, low, sun.y, rise, 0.0f, 32.0f),
+              2.0f * reflectedReceiverLight(wall, flat, sun.y, rise, 0.0f, 32.0f), 1e-5f);
   // Rays from behind a face: nothing, never negative light.
-  EXPECT_EQ(reflectedReceiverLight(-wall, flat, sun.y, rise, 1.0f, 32.0f), 0.0f);
+  EXPECT_EQ(reflectedReceiverLight(-wall, flat, sun.y, rise, 0.0f, 32.0f), 0.0f);
   // The clamp bounds what a face gathers (from low rays more than the horizontal carries), and
   // the modulation is that light less flat water's.
   const glm::vec3 grazing(1.0f, 40.0f * rise.x, 40.0f * rise.y);
-  EXPECT_FLOAT_EQ(reflectedReceiverLight(wall, grazing, sun.y, rise, 1.0f, 5.0f), 5.0f);
-  EXPECT_FLOAT_EQ(reflectedReceiverLight(wall, grazing, sun.y, rise, 0.0f, 5.0f),
-                  5.0f - reflectedReceiverLight(wall, flat, sun.y, rise, 1.0f, 5.0f));
+  EXPECT_FLOAT_EQ(reflectedReceiverLight(wall, grazing, sun.y, rise, 0.0f, 5.0f), 5.0f);
+  EXPECT_FLOAT_EQ(reflectedReceiverLight(wall, grazing, sun.y, rise, 1.0f, 5.0f),
+                  5.0f - reflectedReceiverLight(wall, flat, sun.y, rise, 0.0f, 5.0f));
 }
 
 TEST(ReflectedCausticsMath, MeanDriftAndEscapeHaveTheirLimits) {

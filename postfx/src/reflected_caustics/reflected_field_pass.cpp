@@ -110,6 +110,11 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
   glProgramUniform4f(compute, 7, saturatedFloat(flatR > 0.0 ? 1.0 / flatR : 0.0),
                      static_cast<float>(texelsPerMetre), 0.0f, 0.0f);
   glProgramUniform1i(compute, 9, pointsPerSide);
+  const glm::dvec2 corner =
+      l.windowOrigin - glm::dvec2(frame.camera.position.x, frame.camera.position.z);
+  glProgramUniform3f(compute, 10, static_cast<float>(corner.x),
+                     static_cast<float>(water.level - frame.camera.position.y),
+                     static_cast<float>(corner.y));
   setGridDrawUniforms(triangles_.id(), points_.id(), frame.reflectedCaustics.maxIrradiance,
                       pointsPerSide, l.resolution, pointRatio);
 

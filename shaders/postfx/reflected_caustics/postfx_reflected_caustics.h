@@ -66,13 +66,14 @@ SHARED_FN vec2 mirroredDrift(vec3 surface, vec3 towardSun, vec2 flatRise) {
 // deserve, an underside weights all alike. Scaled by sun.y to flat water's n . l_r (flat: D =
 // I rise, rise = -sun.xz / sun.y), never negative (rays from behind the face) nor above
 // `maxLight` (the clamp, in flat water's light on a face turned to the mirrored sun: a face
-// can gather more than the horizontal clamp lets through, from low rays). `mean` 1 gives that
-// light, 0 only its difference from flat water's (the waves' modulation, signed).
-SHARED_FN float reflectedReceiverLight(vec3 n, vec3 field, float sunY, vec2 rise, float mean,
+// can gather more than the horizontal clamp lets through, from low rays), less `subtract` times
+// flat water's light (0: the whole light; 1: the waves' modulation alone, signed; a host's own
+// flat mirror light in the shade is 0, so is then what is subtracted).
+SHARED_FN float reflectedReceiverLight(vec3 n, vec3 field, float sunY, vec2 rise, float subtract,
                                        float maxLight) {
   float light = sunY * (-n.y * field.x - n.x * field.y - n.z * field.z);
   float flatLight = sunY * (-n.y - n.x * rise.x - n.z * rise.y);
-  return clamp(light, 0.0f, maxLight) - (1.0f - mean) * flatLight;
+  return clamp(light, 0.0f, maxLight) - subtract * flatLight;
 }
 
 // The mean drift per metre of rise of the rays in a field sample (light, drift sums): D / I where

@@ -1,8 +1,8 @@
 #version 450 core
 // Reflected caustics added into the host's HDR target above the water (postfx/reflected_caustics.h):
 // albedo * E * intensity * R_flat * (the field's light on a face of normal n, flat water's
-// n . l_r; reflectedReceiverLight) * visibility, the field (reflected_field_pass.h) interpolated
-// between its height layers along the rays arriving at the receiver.
+// n . l_r; reflectedReceiverLight), the field (reflected_field_pass.h: the sun's shadows on the
+// water in it) interpolated between its height layers along the rays arriving at the receiver.
 // Reads the seabed pass's block and G-buffer units (CausticsPass::bindState); compiled without
 // the raw output (its framebuffer has the host's target only).
 #include "postfx/seabed_caustics/caustics_io.glsl"
@@ -43,17 +43,21 @@ float channelAt(vec2 uv, float layer, float lod, float texels) {
   return filtered;
 }
 
-// Layer k's field (light, drift sums) at camera-relative xz `point`, faded to flat water's
-// (1, rise) toward the window's edge (the window snaps in steps of its coarsest filtered texel;
+// Layer k's field (light, drift sums) at camera-relative xz `point`, faded to meanField toward
+// the window's edge (the window snaps in steps of its coarsest filtered texel;
 // the fade follows the camera and stays inside). `axis`: the pixel's footprint's long half-axis
 // in the layer (m), averaged over by up to four taps along it.
+// Flat water's field (1, rise) at this pixel, times the sun at its flat mirror point (with the
+// shadow mask): what the pattern fades to beyond the window, below the lowest layer and above
+// the highest, where the field's own shadows are not looked up.
+vec3 meanField;
+
 vec3 layerField(vec2 point, int k, int layers, float lod, float texels, vec2 axis) {
   vec2 uv = (point - window.xy) * window.z + 0.5;
   float margin = float(1 << IRRADIANCE_MIP_LEVELS) / texels;
   float edge = min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)) - margin;
   float weight = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge);
-  vec3 flatField = vec3(1.0, rise);
-  if (!(weight > 0.0)) return flatField;
+  if (!(weight > 0.0)) return meanField;
   vec2 axisUv = axis * window.z;
   int taps = clamp(int(ceil(2.0 * length(axisUv) * texels * exp2(-max(lod, 0.0)))), 1, 4);
   vec3 f = vec3(0.0);
@@ -63,7 +67,7 @@ vec3 layerField(vec2 point, int k, int layers, float lod, float texels, vec2 axi
     f += vec3(channelAt(at, float(k), lod, texels), channelAt(at, float(layers + k), lod, texels),
               channelAt(at, float(2 * layers + k), lod, texels));
   }
-  return mix(flatField, f / float(taps), weight);
+  return mix(meanField, f / float(taps), weight);
 }
 
 // Layer k's field for a receiver at xz, `height` above the level: where the rays arriving there
@@ -98,17 +102,6 @@ void main() {
     emitNothing();
     return;
   }
-  float visibility = 1.0;
-#if POSTFX_SHADOW_MASK
-  // The sun at the water this receiver's light was mirrored by (flat water's point): none
-  // reaches the water in the shade of a pier or hull, which then mirrors nothing.
-  vec3 water = p + towardWater.xyz * (height / max(-towardWater.y, 1e-6));
-  visibility = sunVisibility(water, vec3(0.0, 1.0, 0.0));
-  if (!(visibility > 0.0)) {
-    emitNothing();
-    return;
-  }
-#endif
   float distance = length(viewPos);
   float texels = float(textureSize(reflectedIrradiance, 0).x);
   // The pixel's footprint as the layers see it: carried along the mirror ray onto a horizontal
@@ -125,14 +118,21 @@ void main() {
   if (slopeLength > 1e-3) axis = (slope.xz - rise * slope.y) * (halfFootprint / slopeLength);
   int layers = int(window.w);
   vec3 blend = layerBlend(height, heights[0], heights[1], layers);
-  vec3 flatField = vec3(1.0, rise);
-  vec3 lower = flatField;
+  float flatVisibility = 1.0;
+#if POSTFX_SHADOW_MASK
+  vec3 water = p + towardWater.xyz * (height / max(-towardWater.y, 1e-6));
+  flatVisibility = sunVisibility(water, vec3(0.0, 1.0, 0.0));
+#endif
+  meanField = vec3(1.0, rise) * flatVisibility;
+  vec3 lower = meanField;
   if (!(blend.x < 0.0)) lower = layerLight(p.xz, height, int(blend.x), layers, lod, texels, axis);
   vec3 upper = layerLight(p.xz, height, int(blend.y), layers, lod, texels, axis);
   float keep = reflectedTopWeight(height, towardWater.w);
-  vec3 field = mix(flatField, mix(lower, upper, blend.z), keep);
-  float light =
-      reflectedReceiverLight(n, field, -towardWater.y, rise, mirrorLight.w, maxLight) * visibility;
+  vec3 field = mix(meanField, mix(lower, upper, blend.z), keep);
+  // Without the mirror mean the host's own flat mirror light is taken off: where the sun is
+  // shaded at flat water's mirror point, the host's light holds none of it.
+  float subtract = (1.0 - mirrorLight.w) * flatVisibility;
+  float light = reflectedReceiverLight(n, field, -towardWater.y, rise, subtract, maxLight);
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   // ViewExtinction::Plugin: the part of the view ray under the water, from a camera under the
   // level looking up at a hull (the ray is straight: the ratio of the heights); none from above.

@@ -34,6 +34,15 @@ layout(location = 6) uniform vec4 towardSun;  // xyz: unit vector to the sun; w:
 // x: 1 / flat-water reflectance; y: texels per metre
 layout(location = 7) uniform vec4 scales;
 layout(location = 9) uniform int pointsPerSide;
+// xz: the window's corner relative to the camera (m); y: the level relative to the camera (m)
+layout(location = 10) uniform vec3 cornerFromCamera;
+
+#if POSTFX_SHADOW_MASK
+// The host's sun shadow map at each grid point: water in the shade of a pier or hull mirrors
+// nothing, and the receivers it would have lit get what the sunlit water around it sends.
+layout(binding = POSTFX_UNIT_SHADOW) uniform sampler2DShadow sunShadowMap;
+#include "postfx/seabed_caustics/sun_visibility.glsl"
+#endif
 
 layout(std430, binding = POSTFX_STORAGE_GRID_POINTS) writeonly buffer GridPoints {
   vec4 gridPoints[];
@@ -54,5 +63,12 @@ void main() {
   int i = 2 * (index.y * pointsPerSide + index.x);
   gridPoints[i] = vec4(hit.xy, beam) * scales.y;
   vec2 drift = mirroredDrift(surface, towardSun.xyz, -towardSun.xz / towardSun.y);
+#if POSTFX_SHADOW_MASK
+  if (hit.z > 0.0) {
+    vec3 water = vec3(local.x + cornerFromCamera.x, cornerFromCamera.y + sanitizeHeight(surface.z),
+                      local.y + cornerFromCamera.z);
+    hit.z *= sunVisibility(water, waterNormalFromSlopes(surface.xy));
+  }
+#endif
   gridPoints[i + 1] = vec4(hit.z, drift, 0.0);
 }
