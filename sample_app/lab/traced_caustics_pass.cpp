@@ -68,12 +68,7 @@ bool TracedCausticsPass::addTo(GLuint target, std::string& error) {
   if (!local.read(desc.water, sea, error)) return false;
   const reference::Surface& water =
       local.regionCount() > 0 ? static_cast<const reference::Surface&>(local) : sea;
-  const glm::dmat3 worldToView(glm::mat3(desc.camera.view));
-  const glm::dvec4 projection(desc.camera.projection[0][0], desc.camera.projection[1][1],
-                              desc.camera.projection[2][0], desc.camera.projection[2][1]);
-  receivers_ = reference::makeFrameReceivers(gbuffer.width, gbuffer.height, desc.camera.position,
-                                             worldToView, projection, desc.water.level,
-                                             gbuffer.viewPosition, gbuffer.normal, gbuffer.sky);
+  receivers_ = reference::receiversOf(desc, gbuffer);
   reference::FrameTraceDesc trace = trace_;
   trace.towardSun = glm::normalize(desc.sun.direction);
   trace.ior = desc.water.ior;

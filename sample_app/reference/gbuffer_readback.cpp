@@ -80,4 +80,12 @@ bool readGBuffer(const postfx::CreateDesc& create, const postfx::FrameDesc& fram
   return true;
 }
 
+FrameReceivers receiversOf(const postfx::FrameDesc& frame, const GBufferCopy& gbuffer) {
+  const glm::dvec4 projection(frame.camera.projection[0][0], frame.camera.projection[1][1],
+                              frame.camera.projection[2][0], frame.camera.projection[2][1]);
+  return makeFrameReceivers(gbuffer.width, gbuffer.height, frame.camera.position,
+                            glm::dmat3(glm::mat3(frame.camera.view)), projection, frame.water.level,
+                            gbuffer.viewPosition, gbuffer.normal, gbuffer.sky);
+}
+
 }  // namespace ocean::reference

@@ -9,6 +9,8 @@
 #include <postfx/postfx.h>
 #include <glm/glm.hpp>
 
+#include "frame_receivers.h"
+
 namespace ocean::reference {
 
 struct GBufferCopy {
@@ -22,5 +24,8 @@ struct GBufferCopy {
 // Needs a current GL context and the textures of `frame`; false with a message otherwise.
 bool readGBuffer(const postfx::CreateDesc& create, const postfx::FrameDesc& frame, GBufferCopy& out,
                  std::string& error);
+
+// The receivers of `frame` read back into `gbuffer`: its camera, projection and water level.
+FrameReceivers receiversOf(const postfx::FrameDesc& frame, const GBufferCopy& gbuffer);
 
 }  // namespace ocean::reference

@@ -56,19 +56,6 @@ glm::dvec3 mirrorReversed() {  // l_r: from a receiver down toward the water
 // Which surface of receiverScene() a pixel shows (SyntheticScene::surfaces order).
 enum SurfaceIndex { kCeiling = 0, kDeck = 1, kSeabed = 2, kWall = 3, kSideWall = 4 };
 
-glm::dmat4 reverseZProjection(double fovYDegrees) {
-  const double fov = glm::radians(fovYDegrees), aspect = double(kWidth) / kHeight, n = 0.05,
-               f = 200.0;
-  glm::dmat4 p(0.0);
-  const double t = 1.0 / std::tan(fov * 0.5);
-  p[0][0] = t / aspect;
-  p[1][1] = t;
-  p[2][2] = n / (f - n);
-  p[2][3] = -1.0;
-  p[3][2] = f * n / (f - n);
-  return p;
-}
-
 // A camera `cameraY` above the level (world y 0) at the origin, looking along `look`: the
 // underside of a pier deck 2 m up (facing down) from z = 0 to -7, its top 2.2 m up (facing up),
 // a quay wall at z = -9 facing +z (toward the sun) from below the seabed up to 5 m, the seabed
@@ -80,7 +67,7 @@ SyntheticScene receiverScene(const glm::dvec3& look, double cameraY) {
   s.height = kHeight;
   s.view =
       glm::dmat4(glm::lookAt(glm::dvec3(0.0), glm::normalize(look), glm::dvec3(0.0, 1.0, 0.0)));
-  s.projection = reverseZProjection(70.0);
+  s.projection = postfxtest::reverseZPerspective(70.0, double(kWidth) / kHeight, 0.05, 200.0);
   s.albedoFormat = GL_RGBA16F;
   s.targetFormat = GL_RGBA32F;
   s.maxDistance = 199.0;
@@ -107,26 +94,6 @@ SyntheticScene receiverScene(const glm::dvec3& look, double cameraY) {
   side.albedo = glm::vec3(kAlbedo);
   s.surfaces = {ceiling, deck, seabed, wall, side};
   return s;
-}
-
-// h = sum of A sin(k . x + phase) over a few waves with whole periods per `tile` (seamless):
-// slopes, height (m) per texel of a size^2 single-cascade texture.
-GLuint makeWaves(int size, double tile, double amplitude) {
-  std::vector<glm::vec4> texels(static_cast<std::size_t>(size) * size);
-  const double waves[][4] = {{4, 1, 1.0, 0.0}, {-2, 5, 0.6, 1.3}, {7, -3, 0.35, 2.1}};
-  const double twoPi = 6.283185307179586;
-  for (int j = 0; j < size; ++j)
-    for (int i = 0; i < size; ++i) {
-      const glm::dvec2 x = (glm::dvec2(i, j) + 0.5) * (tile / size);
-      glm::dvec3 h(0.0);
-      for (const auto& w : waves) {
-        const glm::dvec2 k = twoPi / tile * glm::dvec2(w[0], w[1]);
-        const double a = amplitude * w[2], phase = glm::dot(k, x) + w[3];
-        h += glm::dvec3(a * k.x * std::cos(phase), a * k.y * std::cos(phase), a * std::sin(phase));
-      }
-      texels[static_cast<std::size_t>(j) * size + i] = glm::vec4(glm::vec3(h), 1.0f);
-    }
-  return postfxtest::makeWaterTextureFromTexels(size, texels);
 }
 
 class OwnedTexture {
@@ -182,7 +149,7 @@ struct Receivers {
       : cameraY(y),
         scene(receiverScene(look, y)),
         gbuffer(scene),
-        water(makeWaves(256, 8.0, amplitude)),
+        water(postfxtest::makeCrossingWaves(256, 8.0, amplitude)),
         frame(frameFor(gbuffer, scene, y, water, 8.0)) {}
 };
 

@@ -15,14 +15,7 @@ glm::dmat4 projectionFor(const SceneSpec& s) {
   const double n = s.nearPlane, f = s.farPlane;
   if (s.depthConvention == 1) return glm::perspectiveRH_ZO(fov, aspect, n, f);
   if (s.depthConvention == 2) return glm::perspectiveRH_NO(fov, aspect, n, f);
-  glm::dmat4 p(0.0);  // reverse-Z: near -> 1, far -> 0
-  const double t = 1.0 / std::tan(fov * 0.5);
-  p[0][0] = t / aspect;
-  p[1][1] = t;
-  p[2][2] = n / (f - n);
-  p[2][3] = -1.0;
-  p[3][2] = f * n / (f - n);
-  return p;
+  return reverseZPerspective(s.fovYDegrees, aspect, n, f);
 }
 
 glm::mat4 viewFor(const SceneSpec& s) {
@@ -189,6 +182,37 @@ std::vector<glm::vec4> readRgba(GLuint texture, int width, int height) {
   glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(out.size() * 16),
                     out.data());
   return out;
+}
+
+glm::dmat4 reverseZPerspective(double fovYDegrees, double aspect, double nearPlane,
+                               double farPlane) {
+  const double fov = glm::radians(fovYDegrees), n = nearPlane, f = farPlane;
+  glm::dmat4 p(0.0);
+  const double t = 1.0 / std::tan(fov * 0.5);
+  p[0][0] = t / aspect;
+  p[1][1] = t;
+  p[2][2] = n / (f - n);
+  p[2][3] = -1.0;
+  p[3][2] = f * n / (f - n);
+  return p;
+}
+
+GLuint makeCrossingWaves(int size, double tile, double amplitude) {
+  std::vector<glm::vec4> texels(static_cast<std::size_t>(size) * size);
+  const double waves[][4] = {{4, 1, 1.0, 0.0}, {-2, 5, 0.6, 1.3}, {7, -3, 0.35, 2.1}};
+  const double twoPi = 6.283185307179586;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      const glm::dvec2 x = (glm::dvec2(i, j) + 0.5) * (tile / size);
+      glm::dvec3 h(0.0);
+      for (const auto& w : waves) {
+        const glm::dvec2 k = twoPi / tile * glm::dvec2(w[0], w[1]);
+        const double a = amplitude * w[2], phase = glm::dot(k, x) + w[3];
+        h += glm::dvec3(a * k.x * std::cos(phase), a * k.y * std::cos(phase), a * std::sin(phase));
+      }
+      texels[static_cast<std::size_t>(j) * size + i] = glm::vec4(glm::vec3(h), 1.0f);
+    }
+  return makeWaterTextureFromTexels(size, texels);
 }
 
 }  // namespace postfxtest

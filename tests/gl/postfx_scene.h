@@ -75,6 +75,15 @@ GLuint makeLevelIndependentWaterTexture(int size, double slope);
 // keep it seamless.
 GLuint makeWaterTextureFromTexels(int size, const std::vector<glm::vec4>& texels);
 
+// Three crossing sine waves, h = sum of A sin(k . x + phase) with whole periods per `tile` m
+// (seamless) and amplitudes amplitude x (1, 0.6, 0.35): one cascade of size^2 texels (slopes,
+// height, 1), as makeWaterTextureFromTexels.
+GLuint makeCrossingWaves(int size, double tile, double amplitude);
+
+// A reverse-Z perspective (near -> 1, far -> 0, right-handed), as most of the tests' hosts use.
+glm::dmat4 reverseZPerspective(double fovYDegrees, double aspect, double nearPlane,
+                               double farPlane);
+
 // A frame for `scene` with the caustics defaults but the RayDeviation model, water at `level`
 // (world), camera at scene.camera + offset (the whole scene moved by `offset`).
 postfx::FrameDesc makeFrame(const Scene& scene, GLuint water, int cascades,

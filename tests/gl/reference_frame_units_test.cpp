@@ -49,11 +49,7 @@ TEST_F(ReferenceUnitsTest, FlatWaterReferenceLightIsThePluginsAddedLight) {
   GBufferCopy gbuffer;
   std::string error;
   ASSERT_TRUE(readGBuffer(create, frame, gbuffer, error)) << error;
-  const glm::dvec4 projection(frame.camera.projection[0][0], frame.camera.projection[1][1],
-                              frame.camera.projection[2][0], frame.camera.projection[2][1]);
-  const FrameReceivers receivers = makeFrameReceivers(
-      spec.width, spec.height, frame.camera.position, glm::dmat3(glm::mat3(frame.camera.view)),
-      projection, frame.water.level, gbuffer.viewPosition, gbuffer.normal, gbuffer.sky);
+  const FrameReceivers receivers = receiversOf(frame, gbuffer);
   WaterTextureSurface surface;
   ASSERT_TRUE(surface.read(frame.water, error)) << error;
   const glm::dvec3 c = frame.camera.position;

@@ -32,38 +32,6 @@ constexpr int kWidth = 128, kHeight = 80;
 constexpr double kCameraY = 0.6;
 constexpr double kTile = 8.0;
 
-glm::dmat4 reverseZProjection(double fovYDegrees) {
-  const double fov = glm::radians(fovYDegrees), aspect = double(kWidth) / kHeight, n = 0.05,
-               f = 200.0;
-  glm::dmat4 p(0.0);
-  const double t = 1.0 / std::tan(fov * 0.5);
-  p[0][0] = t / aspect;
-  p[1][1] = t;
-  p[2][2] = n / (f - n);
-  p[2][3] = -1.0;
-  p[3][2] = f * n / (f - n);
-  return p;
-}
-
-// h = sum of A sin(k . x + phase) over three crossing waves with whole periods per tile.
-GLuint makeWaves(int size, double amplitude) {
-  std::vector<glm::vec4> texels(static_cast<std::size_t>(size) * size);
-  const double waves[][4] = {{4, 1, 1.0, 0.0}, {-2, 5, 0.6, 1.3}, {7, -3, 0.35, 2.1}};
-  const double twoPi = 6.283185307179586;
-  for (int j = 0; j < size; ++j)
-    for (int i = 0; i < size; ++i) {
-      const glm::dvec2 x = (glm::dvec2(i, j) + 0.5) * (kTile / size);
-      glm::dvec3 h(0.0);
-      for (const auto& w : waves) {
-        const glm::dvec2 k = twoPi / kTile * glm::dvec2(w[0], w[1]);
-        const double a = amplitude * w[2], phase = glm::dot(k, x) + w[3];
-        h += glm::dvec3(a * k.x * std::cos(phase), a * k.y * std::cos(phase), a * std::sin(phase));
-      }
-      texels[static_cast<std::size_t>(j) * size + i] = glm::vec4(glm::vec3(h), 1.0f);
-    }
-  return postfxtest::makeWaterTextureFromTexels(size, texels);
-}
-
 enum class Receiver { Underside, Wall };
 
 // Camera 0.6 m up at the origin. Underside: a pier deck's underside 2 m up over z in [-7, 0],
@@ -76,7 +44,7 @@ SyntheticScene scene(Receiver r) {
       r == Receiver::Underside ? glm::dvec3(0.0, 0.35, -1.0) : glm::dvec3(0.0, 0.15, -1.0);
   s.view =
       glm::dmat4(glm::lookAt(glm::dvec3(0.0), glm::normalize(look), glm::dvec3(0.0, 1.0, 0.0)));
-  s.projection = reverseZProjection(60.0);
+  s.projection = postfxtest::reverseZPerspective(60.0, double(kWidth) / kHeight, 0.05, 200.0);
   s.albedoFormat = GL_RGBA16F;
   s.targetFormat = GL_RGBA32F;
   s.maxDistance = 199.0;
@@ -116,7 +84,7 @@ Correlation comparePatterns(Receiver r, const glm::dvec3& sun, double amplitude,
   const SyntheticScene s = scene(r);
   const SyntheticGbuffer gbuffer(s);
   const GLuint flatWater = postfxtest::makeWaterTexture(32, 1, 0.0);
-  const GLuint waves = makeWaves(512, amplitude);
+  const GLuint waves = postfxtest::makeCrossingWaves(512, kTile, amplitude);
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
   postfx::FrameDesc frame;
   frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
@@ -150,11 +118,7 @@ Correlation comparePatterns(Receiver r, const glm::dvec3& sun, double amplitude,
   GBufferCopy copy;
   std::string error;
   EXPECT_TRUE(readGBuffer(create, frame, copy, error)) << error;
-  const glm::dvec4 projection(frame.camera.projection[0][0], frame.camera.projection[1][1],
-                              frame.camera.projection[2][0], frame.camera.projection[2][1]);
-  const FrameReceivers receivers = makeFrameReceivers(
-      kWidth, kHeight, frame.camera.position, glm::dmat3(glm::mat3(frame.camera.view)), projection,
-      frame.water.level, copy.viewPosition, copy.normal, copy.sky);
+  const FrameReceivers receivers = receiversOf(frame, copy);
   WaterTextureSurface surface;
   EXPECT_TRUE(surface.read(frame.water, error)) << error;
   const TriangleMesh receiver =

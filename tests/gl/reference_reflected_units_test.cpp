@@ -32,19 +32,6 @@ class ReferenceReflectedUnitsTest : public testsupport::GlTest {};
 constexpr int kWidth = 64, kHeight = 40;
 constexpr double kCameraY = 0.6;
 
-glm::dmat4 reverseZProjection(double fovYDegrees) {
-  const double fov = glm::radians(fovYDegrees), aspect = double(kWidth) / kHeight, n = 0.05,
-               f = 200.0;
-  glm::dmat4 p(0.0);
-  const double t = 1.0 / std::tan(fov * 0.5);
-  p[0][0] = t / aspect;
-  p[1][1] = t;
-  p[2][2] = n / (f - n);
-  p[2][3] = -1.0;
-  p[3][2] = f * n / (f - n);
-  return p;
-}
-
 // A camera 0.6 m above the level looking a little up at a quay wall 9 m away facing the sun
 // (from +z, 35 degrees up), from 3 m under the water to 5 m above it; a seabed 3 m down.
 SyntheticScene quayScene() {
@@ -53,7 +40,7 @@ SyntheticScene quayScene() {
   s.height = kHeight;
   s.view = glm::dmat4(glm::lookAt(glm::dvec3(0.0), glm::normalize(glm::dvec3(0.0, 0.2, -1.0)),
                                   glm::dvec3(0.0, 1.0, 0.0)));
-  s.projection = reverseZProjection(60.0);
+  s.projection = postfxtest::reverseZPerspective(60.0, double(kWidth) / kHeight, 0.05, 200.0);
   s.albedoFormat = GL_RGBA16F;
   s.targetFormat = GL_RGBA32F;
   s.maxDistance = 199.0;
@@ -98,11 +85,7 @@ TEST_F(ReferenceReflectedUnitsTest, FlatSeaReferenceLightIsThePluginsReflectedLi
   GBufferCopy copy;
   std::string error;
   ASSERT_TRUE(readGBuffer(create, frame, copy, error)) << error;
-  const glm::dvec4 projection(frame.camera.projection[0][0], frame.camera.projection[1][1],
-                              frame.camera.projection[2][0], frame.camera.projection[2][1]);
-  const FrameReceivers receivers = makeFrameReceivers(
-      kWidth, kHeight, frame.camera.position, glm::dmat3(glm::mat3(frame.camera.view)), projection,
-      frame.water.level, copy.viewPosition, copy.normal, copy.sky);
+  const FrameReceivers receivers = receiversOf(frame, copy);
   WaterTextureSurface surface;
   ASSERT_TRUE(surface.read(frame.water, error)) << error;
   TriangleMesh wall, seabed;
