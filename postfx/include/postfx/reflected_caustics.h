@@ -2,24 +2,24 @@
 // Reflected caustics above the water (Feature::ReflectedCaustics): the sunlight the waves mirror
 // upward, the moving bright network on a hull, the underside of a pier, a harbour wall or a cliff.
 // Per view (like WavefrontAreaRatio's window, it follows the view's camera, centred a quarter of
-// its side ahead of it along the view), a grid over the water there reflects the sun (law of reflection through the waves' own normals and
-// heights, Fresnel reflectance per grid point, less the light the next crest catches) onto
-// heightLayers horizontal layers above the level, folds summed as the wavefront area ratio sums
-// them under the water; each layer holds the light crossing it (I) and that light times its
-// rays' drift (D). A pixel above the level then receives
-//     albedo * E_sun * intensity * R(theta_sun) * sun.y * max(-n.y I - n.x D.x - n.z D.z, 0)
-//     * visibility,
+// its side ahead of it along the view), a grid over the water there reflects the sun (law of
+// reflection through the waves' own normals and heights, Fresnel reflectance per grid point, less
+// the light the next crest catches) onto heightLayers horizontal layers above the level, folds
+// summed as the wavefront area ratio sums them under the water; each layer holds the light
+// crossing it (I) and that light times its rays' drift (D). A pixel above the level then receives
+//     albedo * E_sun * intensity * R(theta_sun) * sun.y * max(-n.y I - n.x D.x - n.z D.z, 0),
 // what the rays arriving at it deliver to its normal n: over a flat sea, I * max(n . l_r, 0),
 // l_r the flat-water reflected sun reversed (from the receiver down toward the water), R the
 // unpolarised Fresnel reflectance of flat water at the sun's incidence and I the field's
 // irradiance relative to flat water's mirror light (1 over a flat sea). Between layers the
 // field is looked up along the mean ray arriving at the pixel.
 // Surfaces facing up, under the water, on the sky or facing away from the water get none.
-// visibility: with Feature::ShadowMask, the host's sun shadow map at the point of the water
-// the receiver's light was reflected from (flat water's), so water in the shade of a pier or
-// hull mirrors nothing onto its underside; without it, 1. The path from the water up to the
-// receiver is taken as clear (the receiver faces the water and is the first surface the mirror
-// ray meets in the usual hull, pier and wall; an object between them is not seen).
+// Visibility: with Feature::ShadowMask, the host's sun shadow map at every water point the grid
+// mirrors, so water in the shade of a pier or hull mirrors nothing onto its underside (beyond
+// the window, at the receiver's flat-water mirror point); without it, all the water mirrors the
+// sun. The path from the water up to the receiver is taken as clear (the receiver faces the
+// water and is the first surface the mirror ray meets in the usual hull, pier and wall; an
+// object between them is not seen).
 // Composition: the light is ADDED into FrameDesc::target like the underwater caustics.
 // docs/integration.md, "Reflected caustics".
 #include <postfx/range.h>

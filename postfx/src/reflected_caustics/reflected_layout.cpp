@@ -57,14 +57,9 @@ ReflectedLayout reflectedLayout(const FrameDesc& frame) {
 }
 
 std::uint64_t reflectedFieldBytes(int gridResolution, int layers, bool spread) {
-  // The refracted window's bytes for one channel's layers, and the two drift channels' texels.
-  const std::uint64_t oneChannel = wavefrontAreaRatioBytes(gridResolution, layers, false);
-  std::uint64_t texels = 0;
-  for (int level = 0; level < wavefrontAreaRatioMipLevels(gridResolution); ++level) {
-    const std::uint64_t side = std::max(gridResolution >> level, 1);
-    texels += side * side;
-  }
-  return oneChannel + texels * std::uint64_t(layers) * (kReflectedChannels - 1) * 4 +
+  // The refracted window's layers and grid points, with every channel's layers; the spread blurs
+  // one channel's layers at a time.
+  return wavefrontAreaRatioBytes(gridResolution, kReflectedChannels * layers, false) +
          (spread ? layerSpreadBytes(gridResolution, layers) : 0);
 }
 

@@ -31,31 +31,35 @@ SHARED_FN float reflectedEscape(float ny, float ry, float cosIncident) {
   return min(1.0f, 2.0f * ny * ry / max(cosIncident, 1e-6f));
 }
 
-// Where the sun ray mirrored by the surface point (local, h) meets a horizontal layer `height`
-// metres above the mean level (xy), and its Fresnel reflectance relative to flat water's (z).
-// A ray that cannot rise (the back of a wave, or mirrored downward by a steep face) carries no
-// light: z = 0. A layer below the crest it left from is met at the crest (path 0).
-SHARED_FN vec3 reflectToLayer(vec2 local, vec3 surface, vec3 towardSun, float ior,
-                              float invFlatReflectance, float height) {
-  vec3 n = waterNormalFromSlopes(vec2(surface.x, surface.y));
-  float h = sanitizeHeight(surface.z);
+// The sun ray mirrored by a surface of unit normal n: its direction (xyz) and the light it
+// carries relative to flat water's mirror light (w): Fresnel reflectance over flat water's, times
+// the share that escapes the waves (reflectedEscape). A ray that cannot rise (the back of a wave,
+// or mirrored downward by a steep face) carries none: w = 0.
+SHARED_FN vec4 mirroredSunRay(vec3 n, vec3 towardSun, float ior, float invFlatReflectance) {
   float cosIncident = dot(towardSun, n);
   vec3 r = reflect(-towardSun, n);
-  if (!(cosIncident > 0.0f) || !(r.y > 1e-4f)) return vec3(local, 0.0f);
-  float path = max((height - h) / r.y, 0.0f);
+  if (!(cosIncident > 0.0f) || !(r.y > 1e-4f)) return vec4(r, 0.0f);
   float weight = fresnelReflectance(cosIncident, ior) * invFlatReflectance;
   weight *= reflectedEscape(n.y, r.y, cosIncident);
-  return vec3(local + vec2(r.x, r.z) * path, weight);
+  return vec4(r, weight);
 }
 
-// The mirrored ray's horizontal drift per metre of rise, ray.xz / ray.y, at the surface point
-// (slopes, height): what the field carries besides the light, so that a receiver of any
-// orientation gets what the rays arriving at it deliver (reflectedReceiverLight). Rays that
-// cannot rise carry no light; they get `flatRise` so that nothing in them is undefined.
-SHARED_FN vec2 mirroredDrift(vec3 surface, vec3 towardSun, vec2 flatRise) {
-  vec3 r = reflect(-towardSun, waterNormalFromSlopes(vec2(surface.x, surface.y)));
-  if (!(r.y > 1e-4f)) return flatRise;
-  return vec2(r.x, r.z) / r.y;
+// Where `ray` (mirroredSunRay) from the surface point (local, height h) meets a horizontal layer
+// `height` metres above the mean level (xy), and the light it carries (z). A ray carrying none
+// stays at its point. A layer below the crest it left from is met at the crest (path 0).
+SHARED_FN vec3 reflectToLayer(vec2 local, float h, vec4 ray, float height) {
+  if (!(ray.w > 0.0f)) return vec3(local, 0.0f);
+  float path = max((height - h) / ray.y, 0.0f);
+  return vec3(local + vec2(ray.x, ray.z) * path, ray.w);
+}
+
+// The mirrored ray's horizontal drift per metre of rise, ray.xz / ray.y: what the field carries
+// besides the light, so that a receiver of any orientation gets what the rays arriving at it
+// deliver (reflectedReceiverLight). Rays that cannot rise get `flatRise`, so that nothing in
+// them is undefined.
+SHARED_FN vec2 mirroredDrift(vec4 ray, vec2 flatRise) {
+  if (!(ray.y > 1e-4f)) return flatRise;
+  return vec2(ray.x, ray.z) / ray.y;
 }
 
 // The light a receiver of unit normal n gets from the field (I, Dx, Dz): I the flux crossing a
@@ -85,8 +89,9 @@ SHARED_FN vec2 reflectedMeanDrift(vec3 field, vec2 rise) {
 }
 
 // Where a layer `layerHeight` above the level is looked up for a receiver at xz, `height` above
-// it: the point its flat-water mirror ray (rising along (-sun.x, sun.y, -sun.z)) reaches at the
-// layer's height. rise = -towardSun.xz / towardSun.y, the mirror ray's drift per metre of height.
+// it: the point a ray of horizontal drift `rise` per metre of height through the receiver meets
+// at the layer's height (flat water's mirror ray: -towardSun.xz / towardSun.y; or the mean ray
+// arriving there, reflectedMeanDrift).
 SHARED_FN vec2 reflectedLayerSamplePoint(vec2 xz, float height, float layerHeight, vec2 rise) {
   return xz + rise * (layerHeight - height);
 }

@@ -43,15 +43,15 @@ float channelAt(vec2 uv, float layer, float lod, float texels) {
   return filtered;
 }
 
-// Layer k's field (light, drift sums) at camera-relative xz `point`, faded to meanField toward
-// the window's edge (the window snaps in steps of its coarsest filtered texel;
-// the fade follows the camera and stays inside). `axis`: the pixel's footprint's long half-axis
-// in the layer (m), averaged over by up to four taps along it.
 // Flat water's field (1, rise) at this pixel, times the sun at its flat mirror point (with the
 // shadow mask): what the pattern fades to beyond the window, below the lowest layer and above
-// the highest, where the field's own shadows are not looked up.
+// the highest, where the field's own shadows are not looked up. Set once per pixel by main().
 vec3 meanField;
 
+// Layer k's field (light, drift sums) at camera-relative xz `point`, faded to meanField toward
+// the window's edge (the window snaps in steps of its coarsest filtered texel; the fade follows
+// the camera and stays inside). `axis`: the pixel's footprint's long half-axis in the layer (m),
+// averaged over by up to four taps along it.
 vec3 layerField(vec2 point, int k, int layers, float lod, float texels, vec2 axis) {
   vec2 uv = (point - window.xy) * window.z + 0.5;
   float margin = float(1 << IRRADIANCE_MIP_LEVELS) / texels;
@@ -78,7 +78,8 @@ vec3 layerLight(vec2 xz, float height, int k, int layers, float lod, float texel
   float layerHeight = packedLayerDepth(heights[0], heights[1], k);
   vec2 first = reflectedLayerSamplePoint(xz, height, layerHeight, rise);
   vec2 drift = reflectedMeanDrift(layerField(first, k, layers, lod, texels, axis), rise);
-  return layerField(xz + drift * (layerHeight - height), k, layers, lod, texels, axis);
+  vec2 along = reflectedLayerSamplePoint(xz, height, layerHeight, drift);
+  return layerField(along, k, layers, lod, texels, axis);
 }
 
 void main() {

@@ -58,16 +58,19 @@ void main() {
     vec2 uv = cascadeGrid[c].xy + vec2(index) * cascadeGrid[c].z;
     surface += textureLod(waterSurface, WATER_COORD(uv, c), cascadeGrid[c].w).rgb;
   }
-  vec3 hit = reflectToLayer(local, surface, towardSun.xyz, towardSun.w, scales.x, grid.w);
+  vec3 n = waterNormalFromSlopes(surface.xy);
+  float h = sanitizeHeight(surface.z);
+  vec4 ray = mirroredSunRay(n, towardSun.xyz, towardSun.w, scales.x);
+  vec3 hit = reflectToLayer(local, h, ray, grid.w);
   vec2 beam = beamPosition(local, surface.z, towardSun.xz / towardSun.y);
   int i = 2 * (index.y * pointsPerSide + index.x);
   gridPoints[i] = vec4(hit.xy, beam) * scales.y;
-  vec2 drift = mirroredDrift(surface, towardSun.xyz, -towardSun.xz / towardSun.y);
+  vec2 drift = mirroredDrift(ray, -towardSun.xz / towardSun.y);
 #if POSTFX_SHADOW_MASK
   if (hit.z > 0.0) {
-    vec3 water = vec3(local.x + cornerFromCamera.x, cornerFromCamera.y + sanitizeHeight(surface.z),
+    vec3 water = vec3(local.x + cornerFromCamera.x, cornerFromCamera.y + h,
                       local.y + cornerFromCamera.z);
-    hit.z *= sunVisibility(water, waterNormalFromSlopes(surface.xy));
+    hit.z *= sunVisibility(water, n);
   }
 #endif
   gridPoints[i + 1] = vec4(hit.z, drift, 0.0);
