@@ -13,14 +13,12 @@ namespace postfx::detail {
 
 Result LayerSpread::init(const std::string& defines, const std::string& label, std::string& error) {
   label_ = label;
-  const std::string statistics = label + ".spread_statistics", blur = label + ".spread";
+  const Result r = statistics_.init(defines, label, error);
+  if (r != Result::Ok) return r;
   return buildPrograms(
       defines,
-      {{statistics_,
-        statistics,
-        {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/tile_irradiance_spread.comp"}}},
-       {blur_,
-        blur,
+      {{blur_,
+        label + ".spread",
         {{GL_COMPUTE_SHADER, "postfx/seabed_caustics/wavefront_area_ratio_spread.comp"}}}},
       error);
 }
@@ -32,17 +30,15 @@ void LayerSpread::ensure(bool on, int resolution, int layers) {
     if (depth == layers) return;
   }
   rows_.reset();  // the old size goes first: never two allocated at once
-  statisticsBuffer_.reset();
+  statistics_.ensure(false);
   if (!on) return;
   rows_ = glkit::createTexture(GL_TEXTURE_2D_ARRAY, (label_ + ".spread_rows").c_str());
   glTextureStorage3D(rows_.id(), 1, GL_R32F, resolution, resolution, layers);
-  statisticsBuffer_ =
-      glkit::createBuffer(GLsizeiptr(tileSpreadStatisticsBytes()), nullptr, GL_DYNAMIC_STORAGE_BIT,
-                          (label_ + ".spread_statistics").c_str());
+  statistics_.ensure(true);
 }
 
 std::uint64_t LayerSpread::allocatedBytes() const {
-  return textureBytes(rows_.id(), 4) + bufferBytes(statisticsBuffer_.id());  // R32F
+  return textureBytes(rows_.id(), 4) + statistics_.allocatedBytes();  // R32F
 }
 
 std::uint64_t layerSpreadBytes(int resolution, int layers) {
@@ -54,20 +50,7 @@ void LayerSpread::draw(const FrameDesc& frame, const ValidatedTextures& textures
                        const LayerSpreadDesc& d) {
   const WaterSurface& water = frame.water;
   const int cascades = std::min(water.cascadeCount, kMaxCascades);
-  // The slopes inside the grid's cells, per cascade: its cells per tile are the tile over the
-  // grid spacing (the grid's water lookups are filtered to that cell).
-  const int texelsPerSide = std::max(textures.water.width, textures.water.height);
-  glm::vec4 cellsPerTile(1.0f);
-  for (int c = 0; c < cascades; ++c)
-    cellsPerTile[c] =
-        static_cast<float>(std::min(water.tileSize[c] / d.cell, double(texelsPerSide)));
-  const GLuint statistics = statistics_.id();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_SPREAD, statisticsBuffer_.id());
-  glProgramUniform4fv(statistics, 0, 1, &cellsPerTile.x);
-  glUseProgram(statistics);
-  glDispatchCompute(static_cast<GLuint>(cascades), static_cast<GLuint>(shared::TILE_SPREAD_PARTS),
-                    1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  statistics_.measure(frame, textures, d.cell);
 
   // The blur: one slot, every cascade's cell slopes added up (the grid carries their sum).
   float distances[shared::TILE_MAX_LAYERS] = {};

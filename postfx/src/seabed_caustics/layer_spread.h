@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "core/validation.h"
+#include "seabed_caustics/cell_slope_statistics.h"
 
 namespace postfx::detail {
 
@@ -44,9 +45,9 @@ class LayerSpread {
   void draw(const FrameDesc& frame, const ValidatedTextures& textures, const LayerSpreadDesc& d);
 
  private:
-  glkit::Program statistics_, blur_;
+  CellSlopeStatistics statistics_;
+  glkit::Program blur_;
   glkit::Texture rows_;  // level 0 of every layer, blurred along rows
-  glkit::Buffer statisticsBuffer_;
   std::string label_;
 };
 
