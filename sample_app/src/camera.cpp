@@ -184,9 +184,11 @@ Preset harbourPreset() {
   preset.reflectedCaustics = true;
   // A mirror deviates light by twice the slope: the network a metre up is drawn by ripples a
   // few centimetres long, which the plugin's default grid (512 over 24 m, 4.7 cm) low-passes
-  // away; 1024 (2.3 cm) keeps them.
-  preset.reflectedGrid = 1024;
-  // The highest receiver facing the water is the quay's wall, to 2.4 m: the layers up to 2.5 m.
+  // away; 2048 (1.2 cm) keeps them, and lands enough rays on the pier's underside, beyond the
+  // ripples' focus, for its light to settle (docs/measurements.md, "Reflected caustics").
+  preset.reflectedGrid = 2048;
+  // The highest receiver facing the water is the quay's wall, to 2.4 m: rays followed (and the
+  // height layers, with ReflectedLanding::HeightLayers) to 2.5 m.
   preset.reflectedMaxHeight = 2.5;
   // The pier shades the water beside it, the boat the wall, along the sun in air.
   preset.airShadows = true;

@@ -225,11 +225,23 @@ const std::array kValueOptions{
                   return intIn(text, 16, 2048, o.localWaterGrid, "--local-water-grid", error);
                 }},
     ValueOption{"--reflected-grid", "N",
-                "reflected caustics' water grid cells per side, 64..1024 (default: the "
+                "reflected caustics' water grid cells per side, 64..2048 (default: the "
                 "preset's, harbour 1024, else the plugin's 512)",
                 false,
                 [](std::string_view text, Options& o, std::string& error) {
-                  return intIn(text, 64, 1024, o.reflectedGrid, "--reflected-grid", error);
+                  return intIn(text, 64, 2048, o.reflectedGrid, "--reflected-grid", error);
+                }},
+    ValueOption{"--reflected-landing", "WHERE",
+                "reflected caustics' rays followed to the view's depth (depth) or to height "
+                "layers (layers) (default: the plugin's)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (text == "depth" || text == "layers") {
+                    o.reflectedLanding = text == "depth" ? 1 : 2;
+                    return true;
+                  }
+                  error = "--reflected-landing must be depth or layers" + got(text);
+                  return false;
                 }},
     ValueOption{"--caustics-lookup", "RES",
                 "tile model's lookups at full or half (default) resolution", false,

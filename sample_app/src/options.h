@@ -67,6 +67,9 @@ struct Options {
   // Their highest layer's height (ReflectedCausticsSettings::maxHeight, m); 0 keeps the plugin's
   // default. No flag: the preset's (Preset::reflectedMaxHeight).
   double reflectedMaxHeight = 0.0;
+  // --reflected-landing: where their mirrored rays are followed to (ReflectedCausticsSettings::
+  // landing): 1 the view's depth, 2 height layers; 0 keeps the plugin's default.
+  int reflectedLanding = 0;
   // The plugin is given a flat sea (zero slopes and heights in every cascade) instead of the
   // ocean's texture, the sample's own drawing unchanged: flat water's frame of the reflected
   // caustics for compare --flat (the seabed's has --caustics-model ray-deviation --tau 0).

@@ -152,6 +152,10 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   setup->reflectedCaustics_.intensity = kLambertian;
   setup->reflectedCaustics_.includeMirrorMean = true;
   if (options.reflectedGrid > 0) setup->reflectedCaustics_.gridResolution = options.reflectedGrid;
+  if (options.reflectedLanding > 0)
+    setup->reflectedCaustics_.landing = options.reflectedLanding == 1
+                                            ? postfx::ReflectedLanding::ViewDepth
+                                            : postfx::ReflectedLanding::HeightLayers;
   if (options.reflectedMaxHeight > 0.0)
     setup->reflectedCaustics_.maxHeight = float(options.reflectedMaxHeight);
   PluginSetup* self = setup.get();

@@ -14,7 +14,7 @@ namespace ocean {
 
 struct ReflectedReportSettings {
   int width = 640, height = 360;
-  std::vector<int> grids{128, 256, 512, 1024};
+  std::vector<int> grids{256, 512, 1024, 2048};
   int timedFrames = 16;
 };
 

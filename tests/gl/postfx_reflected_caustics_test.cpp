@@ -109,7 +109,7 @@ class OwnedTexture {
 };
 
 postfx::FrameDesc frameFor(const SyntheticGbuffer& g, const SyntheticScene& s, double cameraY,
-                           GLuint water, double tile) {
+                           GLuint water, double tile, postfx::ReflectedLanding landing) {
   postfx::FrameDesc f;
   f.depth = {g.depth(), GL_DEPTH_COMPONENT32F};
   f.normal = {g.normal(), g.normalFormat()};
@@ -127,6 +127,7 @@ postfx::FrameDesc frameFor(const SyntheticGbuffer& g, const SyntheticScene& s, d
   f.water.ior = kIor;
   f.reflectedCaustics.gridResolution = 256;
   f.reflectedCaustics.windowSize = 24.0f;
+  f.reflectedCaustics.landing = landing;
   return f;
 }
 
@@ -145,24 +146,64 @@ struct Receivers {
   SyntheticGbuffer gbuffer;
   OwnedTexture water;
   postfx::FrameDesc frame;
-  Receivers(const glm::dvec3& look, double y, double amplitude)
+  Receivers(const glm::dvec3& look, double y, double amplitude,
+            postfx::ReflectedLanding landing = postfx::ReflectedLanding::HeightLayers)
       : cameraY(y),
         scene(receiverScene(look, y)),
         gbuffer(scene),
         water(postfxtest::makeCrossingWaves(256, 8.0, amplitude)),
-        frame(frameFor(gbuffer, scene, y, water, 8.0)) {}
+        frame(frameFor(gbuffer, scene, y, water, 8.0, landing)) {}
 };
 
 const glm::dvec3 kLookAtPier{0.0, 0.25, -1.0};
 
-TEST_F(PostfxReflectedCausticsTest, FlatWaterMirrorsExactlyTheFresnelShareOfTheSun) {
-  Receivers s(kLookAtPier, 0.6, 0.0);
+// The contracts both landings keep (ReflectedCausticsSettings::landing).
+class PostfxReflectedLandingTest : public PostfxReflectedCausticsTest,
+                                   public ::testing::WithParamInterface<postfx::ReflectedLanding> {
+ protected:
+  bool onDepth() const { return GetParam() == postfx::ReflectedLanding::ViewDepth; }
+};
+
+INSTANTIATE_TEST_SUITE_P(Landings, PostfxReflectedLandingTest,
+                         ::testing::Values(postfx::ReflectedLanding::ViewDepth,
+                                           postfx::ReflectedLanding::HeightLayers),
+                         [](const ::testing::TestParamInfo<postfx::ReflectedLanding>& info) {
+                           return info.param == postfx::ReflectedLanding::ViewDepth
+                                      ? std::string("ViewDepth")
+                                      : std::string("HeightLayers");
+                         });
+
+TEST_P(PostfxReflectedLandingTest, FlatWaterMirrorsExactlyTheFresnelShareOfTheSun) {
+  Receivers s(kLookAtPier, 0.6, 0.0, GetParam());
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
   ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const std::vector<glm::vec4> out = readTarget(s.gbuffer);
   const float r = flatReflectance();
   ASSERT_GT(r, 0.01f);
-  int ceiling = 0, wall = 0, dark = 0;
+  int ceiling = 0, wall = 0, dark = 0, edge = 0, rippled = 0;
+  // On the view's depth each pixel gets what the grid's triangles landed on it: exact (to float
+  // rounding) where whole triangles cover it; where the sub-pixel ones are summed as points
+  // their sums ripple with the grid's beat against the pixels (under 5 %, and 1 % for all but a
+  // few), and so where a broken triangle's corner shares reach (a few pixels from an edge).
+  // Near the water's edge at a wall's foot (four grid cells' rise, tan(elevation) per metre of
+  // run, and two pixels) part of the light comes from triangles the foot breaks (their rays
+  // from behind the wall go nowhere), and within two pixels of another surface's edge or the
+  // frame's from triangles broken across the two or cut by the frame: their corners' shares are
+  // spread over a pixel or two, so there the light is only bounded, and the frame's flux kept.
+  const double cell = double(s.frame.reflectedCaustics.windowSize) /
+                      double(s.frame.reflectedCaustics.gridResolution);
+  const glm::dvec3 sun = towardSun();
+  const double cellRise = cell * sun.y / glm::length(glm::dvec2(sun.x, sun.z));
+  const double radiansPerPixel = glm::radians(70.0) / kHeight;
+  auto besideAnEdge = [&s](int x, int y) {
+    if (x < 2 || y < 2 || x >= kWidth - 2 || y >= kHeight - 2) return true;  // the frame's
+    const int surface = s.gbuffer.pixel(x, y).surface;
+    for (int j = std::max(y - 2, 0); j <= std::min(y + 2, kHeight - 1); ++j)
+      for (int i = std::max(x - 2, 0); i <= std::min(x + 2, kWidth - 1); ++i)
+        if (s.gbuffer.pixel(i, j).surface != surface) return true;
+    return false;
+  };
+  double landed = 0.0, flat = 0.0;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       const auto& p = s.gbuffer.pixel(x, y);
@@ -170,11 +211,22 @@ TEST_F(PostfxReflectedCausticsTest, FlatWaterMirrorsExactlyTheFresnelShareOfTheS
       const double height = p.position.y + s.cameraY;
       const double facing = glm::dot(p.normal, mirrorReversed());
       if (p.surface >= 0 && height > 0.01 && facing > 0.0) {
+        const double foot = 4.0 * cellRise + 2.0 * glm::length(p.position) * radiansPerPixel;
+        const bool bounded = onDepth() && (height < foot || besideAnEdge(x, y));
         for (int c = 0; c < 3; ++c) {
           const double expected = double(kAlbedo * kSunIrradiance[c] * r) * facing;
-          ASSERT_NEAR(light[c], expected, 2e-3 * expected)
-              << x << "," << y << " surface " << p.surface;
+          if (bounded) {
+            ASSERT_GE(light[c], 0.0f);
+            ASSERT_LE(light[c], 1.5 * expected) << x << "," << y;
+          } else {
+            ASSERT_NEAR(light[c], expected, (onDepth() ? 5e-2 : 2e-3) * expected)
+                << x << "," << y << " surface " << p.surface;
+            if (c == 0 && std::abs(light[c] - expected) > 1e-2 * expected) ++rippled;
+          }
         }
+        edge += bounded ? 1 : 0;
+        landed += double(light[0]);
+        flat += double(kAlbedo * kSunIrradiance[0] * r) * facing;
         (p.surface == kCeiling ? ceiling : wall) += 1;
       } else if (p.surface < 0 || height < -0.01 || facing < 0.0) {
         // The sky, under the water, facing up or away: nothing at all.
@@ -186,10 +238,15 @@ TEST_F(PostfxReflectedCausticsTest, FlatWaterMirrorsExactlyTheFresnelShareOfTheS
   EXPECT_GT(ceiling, 400);
   EXPECT_GT(wall, 200);
   EXPECT_GT(dark, 400);
+  // The bounded pixels are a band, the frame's light flat water's (measured 0.980: the foot's
+  // broken triangles lose what their hidden rays carried).
+  EXPECT_LT(edge, (ceiling + wall) / 4);
+  EXPECT_LT(rippled, (ceiling + wall) / 20) << "more than 5 % of the pixels off by over 1 %";
+  EXPECT_NEAR(landed / flat, 1.0, 0.03);
 }
 
-TEST_F(PostfxReflectedCausticsTest, WavesKeepTheMeanAndDrawAPattern) {
-  Receivers flat(kLookAtPier, 0.6, 0.0), waves(kLookAtPier, 0.6, 0.02);
+TEST_P(PostfxReflectedLandingTest, WavesKeepTheMeanAndDrawAPattern) {
+  Receivers flat(kLookAtPier, 0.6, 0.0, GetParam()), waves(kLookAtPier, 0.6, 0.02, GetParam());
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
   ASSERT_EQ(postfx::dispatch(*fx, flat.frame), postfx::Result::Ok);
   ASSERT_EQ(postfx::dispatch(*fx, waves.frame), postfx::Result::Ok) << postfx::lastError(fx.get());
@@ -268,8 +325,8 @@ TEST_F(PostfxReflectedCausticsTest, ReflectedAndTransmittedFluxAddUpToTheInciden
       << t;
 }
 
-TEST_F(PostfxReflectedCausticsTest, FeatureOffOrDisabledChangesNothingBitForBit) {
-  Receivers s(kLookAtPier, 0.6, 0.02);
+TEST_P(PostfxReflectedLandingTest, FeatureOffOrDisabledChangesNothingBitForBit) {
+  Receivers s(kLookAtPier, 0.6, 0.02, GetParam());
   s.frame.caustics.model = postfx::CausticsModel::TileIrradiance;
   auto run = [&s](postfx::Feature features, bool enabled) {
     const glm::vec4 zero(0.0f);
@@ -300,10 +357,10 @@ TEST_F(PostfxReflectedCausticsTest, FeatureOffOrDisabledChangesNothingBitForBit)
   EXPECT_GT(added, 400);
 }
 
-TEST_F(PostfxReflectedCausticsTest, SkippedWithNothingAboveTheWaterInView) {
+TEST_P(PostfxReflectedLandingTest, SkippedWithNothingAboveTheWaterInView) {
   // A diver's camera 2 m down looking down at the seabed: no part of the frustum reaches the
   // level, so the pass records nothing and reports 0 ms.
-  Receivers s(glm::dvec3(0.0, -1.0, -0.2), -2.0, 0.02);
+  Receivers s(glm::dvec3(0.0, -1.0, -0.2), -2.0, 0.02, GetParam());
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
   for (int frame = 0; frame < 6; ++frame)
     ASSERT_EQ(postfx::dispatch(*fx, s.frame), postfx::Result::Ok);
@@ -313,7 +370,7 @@ TEST_F(PostfxReflectedCausticsTest, SkippedWithNothingAboveTheWaterInView) {
   EXPECT_EQ(stats.lastMs, 0.0);
   EXPECT_EQ(fx->reflected.allocatedBytes(), 0u) << "a skipped pass holds no memory";
   // Seen from above, it runs and is timed; the estimate is what GL holds.
-  Receivers above(kLookAtPier, 0.6, 0.02);
+  Receivers above(kLookAtPier, 0.6, 0.02, GetParam());
   for (int frame = 0; frame < 6; ++frame)
     ASSERT_EQ(postfx::dispatch(*fx, above.frame), postfx::Result::Ok);
   const postfx::PassStats ran = postfx::stats(*fx).pass(postfx::Pass::ReflectedCaustics);
@@ -325,8 +382,8 @@ TEST_F(PostfxReflectedCausticsTest, SkippedWithNothingAboveTheWaterInView) {
             fx->reflected.allocatedBytes());
 }
 
-TEST_F(PostfxReflectedCausticsTest, BadSettingsAreRefusedWithNothingDrawn) {
-  Receivers s(kLookAtPier, 0.6, 0.02);
+TEST_P(PostfxReflectedLandingTest, BadSettingsAreRefusedWithNothingDrawn) {
+  Receivers s(kLookAtPier, 0.6, 0.02, GetParam());
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
   const glm::vec4 marker(0.25f, 0.5f, 0.75f, 1.0f);
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -362,12 +419,12 @@ TEST_F(PostfxReflectedCausticsTest, BadSettingsAreRefusedWithNothingDrawn) {
   EXPECT_NE(postfx::dispatch(*fx, frame), postfx::Result::Ok);
 }
 
-TEST_F(PostfxReflectedCausticsTest, WaterInTheShadeMirrorsNothing) {
+TEST_P(PostfxReflectedLandingTest, WaterInTheShadeMirrorsNothing) {
   // A sun shadow map whose left half (light-space x < 0) is occluded: a pier's shade on the
   // water. A receiver whose flat mirror ray comes from shaded water gets nothing (the field
   // holds the shade: its grid points read the map); one lit from sunlit water gets exactly what
   // it gets without the mask.
-  Receivers s(kLookAtPier, 0.6, 0.0);
+  Receivers s(kLookAtPier, 0.6, 0.0, GetParam());
   const int side = 256;
   GLuint map = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &map);
@@ -426,10 +483,11 @@ TEST_F(PostfxReflectedCausticsTest, WaterInTheShadeMirrorsNothing) {
   EXPECT_GT(sunlit, 100);
 }
 
-TEST_F(PostfxReflectedCausticsTest, EachViewDrawsWhatAContextOfItsOwnWould) {
+TEST_P(PostfxReflectedLandingTest, EachViewDrawsWhatAContextOfItsOwnWould) {
   // Two cameras 7 m apart in one dispatch: each view's field follows its own camera, so each
   // image is bit for bit what a context drawing that camera alone draws.
-  Receivers a(kLookAtPier, 0.6, 0.02), b(glm::dvec3(0.3, 0.1, -1.0), 1.2, 0.02);
+  Receivers a(kLookAtPier, 0.6, 0.02, GetParam()),
+      b(glm::dvec3(0.3, 0.1, -1.0), 1.2, 0.02, GetParam());
   b.frame.camera.position = glm::dvec3(7.0, 1.2, 3.0);
   b.frame.water.texture = a.frame.water.texture;
   std::vector<glm::vec4> alone[2];
@@ -460,10 +518,10 @@ TEST_F(PostfxReflectedCausticsTest, EachViewDrawsWhatAContextOfItsOwnWould) {
   }
 }
 
-TEST_F(PostfxReflectedCausticsTest, EveryHostStateSurvivesDispatch) {
+TEST_P(PostfxReflectedLandingTest, EveryHostStateSurvivesDispatch) {
   // The host's unusual state (postfx_host_state.h) around a frame whose reflected pass runs with
   // its field's spread and the shadow mask, one it skips, and one it refuses.
-  Receivers s(kLookAtPier, 0.6, 0.02);
+  Receivers s(kLookAtPier, 0.6, 0.02, GetParam());
   GLuint map = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &map);
   OwnedTexture owned(map);
@@ -507,7 +565,7 @@ struct ExtremeCase {
 // Every extreme case: finite light, never negative, never above the clamp's brightest mirror
 // light (albedo E R maxIrradiance; R of the grazing sun near 1), nothing under the water; and a
 // step of 1e-4 rad in the sun's elevation moves the image by little (no jump, no blow-up).
-TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous) {
+TEST_P(PostfxReflectedLandingTest, ExtremeInputsStayFiniteBoundedAndContinuous) {
   const ExtremeCase cases[] = {
       {"grazing sun 0.2 deg", 0.02,
        [](postfx::FrameDesc& f) {
@@ -552,7 +610,7 @@ TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous)
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics);
   for (const ExtremeCase& c : cases) {
     SCOPED_TRACE(c.name);
-    Receivers s(kLookAtPier, 0.6, c.amplitude);
+    Receivers s(kLookAtPier, 0.6, c.amplitude, GetParam());
     c.apply(s.frame);
     auto render = [&s, &fx](const postfx::FrameDesc& frame) {
       const glm::vec4 zero(0.0f);
@@ -561,44 +619,54 @@ TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous)
       return readTarget(s.gbuffer);
     };
     const std::vector<glm::vec4> a = render(s.frame);
-    postfx::FrameDesc stepped = s.frame;
-    const glm::dvec3 sun = glm::normalize(stepped.sun.direction);
-    const double elevation = std::asin(sun.y) - 1e-4, azimuth = std::atan2(sun.x, sun.z);
-    stepped.sun.direction = glm::dvec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                                       std::cos(elevation) * std::cos(azimuth));
-    const std::vector<glm::vec4> b = render(stepped);
-    const float r =
-        std::max(postfx::shared::fresnelReflectance(float(sun.y), s.frame.water.ior),
-                 postfx::shared::fresnelReflectance(float(std::sin(elevation)), s.frame.water.ior));
-    const float bound =
-        kAlbedo * kSunIrradiance.r * r * s.frame.reflectedCaustics.maxIrradiance * 1.001f + 1e-6f;
-    double sumA = 0.0, sumDiff = 0.0;
-    for (int y = 0; y < kHeight; ++y)
-      for (int x = 0; x < kWidth; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
-        const auto& p = s.gbuffer.pixel(x, y);
-        for (const glm::vec4* v : {&a[i], &b[i]}) {
-          ASSERT_TRUE(std::isfinite(v->r) && std::isfinite(v->g) && std::isfinite(v->b))
-              << x << "," << y;
-          if (s.frame.reflectedCaustics.includeMirrorMean) {
-            ASSERT_GE(v->r, 0.0f);
+    // Two steps of the sun's elevation: the change must be small, and shrink with the step (a
+    // jump does not).
+    for (const double step : {1e-4, 1e-6}) {
+      postfx::FrameDesc stepped = s.frame;
+      const glm::dvec3 sun = glm::normalize(stepped.sun.direction);
+      const double elevation = std::asin(sun.y) - step, azimuth = std::atan2(sun.x, sun.z);
+      stepped.sun.direction =
+          glm::dvec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                     std::cos(elevation) * std::cos(azimuth));
+      const std::vector<glm::vec4> b = render(stepped);
+      const float r = std::max(
+          postfx::shared::fresnelReflectance(float(sun.y), s.frame.water.ior),
+          postfx::shared::fresnelReflectance(float(std::sin(elevation)), s.frame.water.ior));
+      const float bound =
+          kAlbedo * kSunIrradiance.r * r * s.frame.reflectedCaustics.maxIrradiance * 1.001f + 1e-6f;
+      double sumA = 0.0, sumDiff = 0.0;
+      for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+          const auto& p = s.gbuffer.pixel(x, y);
+          for (const glm::vec4* v : {&a[i], &b[i]}) {
+            ASSERT_TRUE(std::isfinite(v->r) && std::isfinite(v->g) && std::isfinite(v->b))
+                << x << "," << y;
+            if (s.frame.reflectedCaustics.includeMirrorMean) {
+              ASSERT_GE(v->r, 0.0f);
+            }
+            ASSERT_LE(std::abs(v->r), bound) << x << "," << y;
+            if (p.surface < 0 || p.position.y + s.cameraY <= 0.0) {
+              ASSERT_EQ(*v, glm::vec4(0.0f));
+            }
           }
-          ASSERT_LE(std::abs(v->r), bound) << x << "," << y;
-          if (p.surface < 0 || p.position.y + s.cameraY <= 0.0) {
-            ASSERT_EQ(*v, glm::vec4(0.0f));
-          }
+          // The flat mirror light here: the scale the change is measured against.
+          const glm::dvec3 lr(sun.x, -sun.y, sun.z);
+          if (p.surface >= 0 && p.position.y + s.cameraY > 0.0)
+            sumA += double(kAlbedo * kSunIrradiance.r * r) * std::max(glm::dot(p.normal, lr), 0.0);
+          sumDiff += double(std::abs(a[i].r - b[i].r));
         }
-        // The flat mirror light here: the scale the change is measured against.
-        const glm::dvec3 lr(sun.x, -sun.y, sun.z);
-        if (p.surface >= 0 && p.position.y + s.cameraY > 0.0)
-          sumA += double(kAlbedo * kSunIrradiance.r * r) * std::max(glm::dot(p.normal, lr), 0.0);
-        sumDiff += double(std::abs(a[i].r - b[i].r));
+      // The flat mean alone moves by dR/de ~ 1e-4 relative; the network moves by a 1e-4 rad turn
+      // of every ray (under a millimetre at these heights, a cell is 9 cm): a per-mille change of
+      // the mirror light where the layers filter it. On the view's depth the lines are as sharp as
+      // the grid draws them, each pixel centre lit by one triangle: under a point sun with no
+      // spread, the turn moves every line edge past some centres (measured 1.7 %, 0.06 % for a
+      // 1e-5 step, 0.003 % for 1e-6: continuous). 1e-6 must move it 50 times less than 1e-4 may.
+      const double allowed = step > 1e-5 ? (onDepth() ? 0.02 : 0.01) : 2e-4;
+      if (sumA > 0.0) {
+        EXPECT_LT(sumDiff / sumA, allowed)
+            << "sun step " << step << " changed the image by " << sumDiff / sumA;
       }
-    // The flat mean alone moves by dR/de ~ 1e-4 relative; the network moves by a 1e-4 rad turn
-    // of every ray (under a millimetre at these heights, a texel is 9 cm): a per-mille change of
-    // the mirror light.
-    if (sumA > 0.0) {
-      EXPECT_LT(sumDiff / sumA, 0.01) << "sun step changed the image by " << sumDiff / sumA;
     }
   }
 }
@@ -607,11 +675,11 @@ TEST_F(PostfxReflectedCausticsTest, ExtremeInputsStayFiniteBoundedAndContinuous)
 // texels) and the camera, one or two wild values a case (NaN, infinities, bounds and past them,
 // far magnitudes). Every case is refused with the target untouched, or drawn finite with
 // nothing under the water; no GL error either way.
-TEST_F(PostfxReflectedCausticsTest, FuzzedFramesAreRefusedCleanlyOrDrawnFinite) {
+TEST_P(PostfxReflectedLandingTest, FuzzedFramesAreRefusedCleanlyOrDrawnFinite) {
   using postfxfuzz::wild;
   using postfxfuzz::wildFloat;
   using postfxfuzz::wildInt;
-  Receivers s(kLookAtPier, 0.6, 0.02);
+  Receivers s(kLookAtPier, 0.6, 0.02, GetParam());
   s.frame.reflectedCaustics.gridResolution = 64;  // fast: the fuzz is about values, not detail
   auto fx = postfxtest::makeContext(postfx::Feature::ReflectedCaustics | postfx::Feature::Caustics);
   postfxfuzz::Rng rng(32);
@@ -679,7 +747,7 @@ TEST_F(PostfxReflectedCausticsTest, FuzzedFramesAreRefusedCleanlyOrDrawnFinite) 
   EXPECT_GT(refused, 40);
 }
 
-TEST_F(PostfxReflectedCausticsTest, PatternLiesWhereTheMirrorPutsIt) {
+TEST_P(PostfxReflectedLandingTest, PatternLiesWhereTheMirrorPutsIt) {
   // A single gentle wave along x (2 m long, 1 mm high) under a sun with an x component: to first
   // order the ceiling 2 m up is lit by I = 1 - H div(J s) at the water point its flat mirror ray
   // left from, w = p - rise H, i.e. 1 + H J_xx A k^2 sin(k w.x + phase). The plugin's light
@@ -694,7 +762,7 @@ TEST_F(PostfxReflectedCausticsTest, PatternLiesWhereTheMirrorPutsIt) {
           glm::vec4(float(amplitude * k * std::cos(a)), 0.0f, float(amplitude * std::sin(a)), 1.0f);
     }
   OwnedTexture water(postfxtest::makeWaterTextureFromTexels(size, texels));
-  Receivers s(kLookAtPier, 0.6, 0.0);
+  Receivers s(kLookAtPier, 0.6, 0.0, GetParam());
   const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.7, 0.55));
   s.frame.sun.direction = sun;
   s.frame.sun.angularDiameterDegrees = 0.0f;
@@ -729,8 +797,11 @@ TEST_F(PostfxReflectedCausticsTest, PatternLiesWhereTheMirrorPutsIt) {
     }
   ASSERT_GT(n, 400);
   const double correlation = sxy / std::sqrt(sxx * syy);
-  // Measured: correlation 0.996, gain 0.94 (the grid low-passes the wave a little).
-  EXPECT_GT(correlation, 0.95);
+  // Measured: correlation 0.996, gain 0.94 (the grid low-passes the wave a little); on the
+  // view's depth 0.925 (the ceiling's far half takes its sub-pixel triangles as points, whose
+  // sums ripple by about a per cent with the grid's beat against the pixels: the 8 % pattern
+  // of this millimetre wave shows it).
+  EXPECT_GT(correlation, onDepth() ? 0.9 : 0.95);
   EXPECT_NEAR(sxy / sxx, 1.0, 0.15);
 }
 

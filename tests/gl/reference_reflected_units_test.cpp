@@ -78,6 +78,10 @@ TEST_F(ReferenceReflectedUnitsTest, FlatSeaReferenceLightIsThePluginsReflectedLi
   frame.water.tileSize[0] = 8.0;
   frame.water.ior = 1.333f;
   frame.reflectedCaustics.intensity = 1.3f;
+  // The height layers: exact over a flat sea at every pixel (on the view's depth, exact where
+  // whole triangles land, a few per cent where sub-pixel ones are summed), so the comparison is
+  // of the reference's units alone.
+  frame.reflectedCaustics.landing = postfx::ReflectedLanding::HeightLayers;
   ASSERT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx.get());
   const auto added = postfxtest::readRgba(gbuffer.target(), kWidth, kHeight);
 

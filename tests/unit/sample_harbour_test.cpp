@@ -2,12 +2,14 @@
 // light, every reflecting point in view lies inside the plugin's window, its scene reaches the
 // renderer and the traced reference, and the command line's new flags parse as documented
 // (--reflected-caustics / --no-reflected-caustics over the preset's choice, refused together;
-// --flat-water; --reflected-grid in the plugin's range; the preset and the flags in the help).
+// --flat-water; --reflected-grid in the plugin's range, --reflected-landing depth|layers; the
+// preset and the flags in the help).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <postfx/reflected_caustics.h>
@@ -54,7 +56,7 @@ TEST(SampleHarbour, PresetShowsTheHarbourWithReflectedCausticsInALowSun) {
   EXPECT_EQ(preset.scene, ocean::SceneKind::Harbour);
   EXPECT_TRUE(preset.reflectedCaustics);
   EXPECT_TRUE(preset.airShadows);
-  EXPECT_TRUE(postfx::kGridResolutionRange.contains(preset.reflectedGrid));
+  EXPECT_TRUE(postfx::kReflectedGridRange.contains(preset.reflectedGrid));
   EXPECT_TRUE(postfx::kReflectedHeightRange.contains(float(preset.reflectedMaxHeight)));
   // Above the quay's wall, its highest receiver.
   EXPECT_GE(preset.reflectedMaxHeight, ocean_scene::HarbourSceneParams{}.quayHeight);
@@ -229,11 +231,19 @@ TEST(SampleHarbour, ContradictingOrOutOfRangeFlagsAreRefused) {
     EXPECT_NE(parsed.text.find("--no-reflected-caustics"), std::string::npos) << parsed.text;
     EXPECT_EQ(parsed.text.find('\n'), std::string::npos) << "one line: " << parsed.text;
   }
-  for (const char* grid : {"32", "2048", "512.5", "many"}) {
+  for (const char* grid : {"32", "4096", "512.5", "many"}) {
     const ocean::ParsedCommandLine parsed = parse({"render", "--reflected-grid", grid});
     EXPECT_EQ(parsed.outcome, ocean::ParsedCommandLine::Outcome::Error) << grid;
     EXPECT_NE(parsed.text.find("--reflected-grid"), std::string::npos) << parsed.text;
   }
+  for (const auto& [word, landing] : {std::pair{"depth", 1}, std::pair{"layers", 2}}) {
+    const ocean::ParsedCommandLine parsed = parse({"render", "--reflected-landing", word});
+    ASSERT_EQ(parsed.outcome, ocean::ParsedCommandLine::Outcome::Run) << parsed.text;
+    EXPECT_EQ(parsed.options.reflectedLanding, landing) << word;
+  }
+  const ocean::ParsedCommandLine sideways = parse({"render", "--reflected-landing", "sideways"});
+  EXPECT_EQ(sideways.outcome, ocean::ParsedCommandLine::Outcome::Error);
+  EXPECT_NE(sideways.text.find("--reflected-landing"), std::string::npos) << sideways.text;
   // compare renders nothing: the scene's flags are not its own.
   const ocean::ParsedCommandLine compare = parse({"compare", "--flat-water"});
   EXPECT_EQ(compare.outcome, ocean::ParsedCommandLine::Outcome::Error);
@@ -249,7 +259,7 @@ TEST(SampleHarbour, FlatWaterFlagAndHelp) {
     const ocean::ParsedCommandLine help = parse({command, "--help"});
     ASSERT_EQ(help.outcome, ocean::ParsedCommandLine::Outcome::Help) << command;
     for (const char* word : {"harbour (", "--reflected-caustics", "--no-reflected-caustics",
-                             "--flat-water", "--reflected-grid"})
+                             "--flat-water", "--reflected-grid", "--reflected-landing"})
       EXPECT_NE(help.text.find(word), std::string::npos) << command << " --help lacks " << word;
   }
 }

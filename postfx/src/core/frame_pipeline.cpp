@@ -257,7 +257,8 @@ Result reserve(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTa
     if (r != Result::Ok) return r;
   }
   if (s.reflected) {
-    r = context.reflected.reserve(first, error);
+    r = context.reflected.reserve(first, work[0].textures.targetWidth,
+                                  work[0].textures.targetHeight, error);
     if (r != Result::Ok) return r;
   } else if (context.reflected.ready()) {
     context.reflected.release();  // a frame without the pass holds none of its memory

@@ -63,7 +63,11 @@ Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
   if (tile) t.tile = tileIrradianceBytes(tileIrradianceLayout(frame));
   if (localWater) t.localWater = localWaterBytes(frame);
   // One field, drawn by each view in turn.
-  if (reflected)
+  if (reflected && frame.reflectedCaustics.landing == ReflectedLanding::ViewDepth)
+    t.reflected =
+        reflectedReceiverBytes(frame.reflectedCaustics.gridResolution, views[0].targetWidth,
+                               views[0].targetHeight, frame.caustics.tileUnresolvedSpread);
+  else if (reflected)
     t.reflected = reflectedFieldBytes(frame.reflectedCaustics.gridResolution,
                                       frame.reflectedCaustics.heightLayers, landingSpreadOn(frame));
   if (passes.objectMaps()) {

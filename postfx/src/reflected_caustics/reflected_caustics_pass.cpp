@@ -16,19 +16,37 @@ namespace postfx::detail {
 Result ReflectedCausticsPass::init(const CreateDesc& desc, std::string& error) {
   Result r = field_.init(shaderDefines(desc), error);
   if (r != Result::Ok) return r;
+  r = receivers_.init(shaderDefines(desc), error);
+  if (r != Result::Ok) return r;
   // Its framebuffer holds the host's target alone: no raw output.
   r = buildPrograms(shaderDefines(desc),
                     {{light_,
                       "postfx.reflected_caustics.light",
                       {kFullScreenVertex,
                        {GL_FRAGMENT_SHADER, "postfx/reflected_caustics/reflected_caustics.frag"}},
-                      "#undef POSTFX_RAW_OUTPUT\n#define POSTFX_RAW_OUTPUT 0\n"}},
+                      "#undef POSTFX_RAW_OUTPUT\n#define POSTFX_RAW_OUTPUT 0\n"},
+                     {lightOnDepth_,
+                      "postfx.reflected_caustics.light_on_depth",
+                      {kFullScreenVertex,
+                       {GL_FRAGMENT_SHADER, "postfx/reflected_caustics/reflected_caustics.frag"}},
+                      "#undef POSTFX_RAW_OUTPUT\n#define POSTFX_RAW_OUTPUT 0\n"
+                      "#define REFLECTED_VIEW_DEPTH 1\n"}},
                     error);
   if (r != Result::Ok) return r;
   framebuffer_ = glkit::createFramebuffer("postfx.reflected_caustics.target");
   sampler_ = glkit::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE,
                                   "postfx.sampler.reflected_caustics");
   return Result::Ok;
+}
+
+Result ReflectedCausticsPass::reserve(const FrameDesc& frame, int targetWidth, int targetHeight,
+                                      std::string& error) {
+  if (frame.reflectedCaustics.landing == ReflectedLanding::ViewDepth) {
+    field_.release();
+    return receivers_.reserve(frame, targetWidth, targetHeight, error);
+  }
+  receivers_.release();
+  return field_.reserve(frame, error);
 }
 
 Result ReflectedCausticsPass::prepare(const FrameDesc& frame, std::string& error) {
@@ -44,19 +62,34 @@ void ReflectedCausticsPass::finish() {
 }
 
 void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
-  field_.draw(frame, textures);
-  const ReflectedLayout& l = field_.layout();
   const ReflectedCausticsSettings& s = frame.reflectedCaustics;
+  const bool onDepth = s.landing == ReflectedLanding::ViewDepth;
+  ReflectedLayout onDepthLayout;
+  if (onDepth) {
+    onDepthLayout = reflectedLayout(frame);
+    receivers_.draw(frame, textures, onDepthLayout);
+  } else {
+    field_.draw(frame, textures);
+  }
+  const ReflectedLayout& l = onDepth ? onDepthLayout : field_.layout();
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
   const float flatR = shared::fresnelReflectance(static_cast<float>(sun.y), frame.water.ior);
-  const glm::dvec2 centre = l.windowOrigin + 0.5 * l.windowSize -
-                            glm::dvec2(frame.camera.position.x, frame.camera.position.z);
+  // Where the pattern reaches: the field's window, or the receivers' outer grid's square.
+  glm::dvec2 reachOrigin = l.windowOrigin;
+  double reachSize = l.windowSize;
+  if (onDepth) {
+    const ReflectedReceiverPass::Grid outer = ReflectedReceiverPass::grids(l).level[1];
+    reachOrigin = outer.origin;
+    reachSize = outer.cell * outer.cells;
+  }
+  const glm::dvec2 centre =
+      reachOrigin + 0.5 * reachSize - glm::dvec2(frame.camera.position.x, frame.camera.position.z);
   float heights[8] = {};
   for (int k = 0; k < l.layers; ++k) heights[k] = static_cast<float>(l.height[k]);
   const glm::vec3 scale = frame.sun.irradiance * (s.intensity * flatR);
-  const GLuint program = light_.id();
+  const GLuint program = onDepth ? lightOnDepth_.id() : light_.id();
   glProgramUniform4f(program, 0, static_cast<float>(centre.x), static_cast<float>(centre.y),
-                     static_cast<float>(1.0 / l.windowSize), static_cast<float>(l.layers));
+                     static_cast<float>(1.0 / reachSize), static_cast<float>(l.layers));
   glProgramUniform4fv(program, 1, 2, heights);
   glProgramUniform4f(program, 3, static_cast<float>(sun.x), static_cast<float>(-sun.y),
                      static_cast<float>(sun.z), s.maxHeight);
@@ -68,8 +101,8 @@ void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, static_cast<float>(textures.x), static_cast<float>(textures.y),
                      static_cast<float>(textures.width), static_cast<float>(textures.height));
-  glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, field_.texture());
-  glBindSampler(POSTFX_UNIT_IRRADIANCE, sampler_.id());
+  glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, onDepth ? receivers_.texture() : field_.texture());
+  glBindSampler(POSTFX_UNIT_IRRADIANCE, onDepth ? 0 : sampler_.id());
   glUseProgram(program);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

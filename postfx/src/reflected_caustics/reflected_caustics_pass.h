@@ -16,6 +16,7 @@
 
 #include "core/validation.h"
 #include "reflected_caustics/reflected_field_pass.h"
+#include "reflected_caustics/reflected_receiver_pass.h"
 
 namespace postfx::detail {
 
@@ -24,10 +25,13 @@ class ReflectedCausticsPass {
   Result init(const CreateDesc& desc, std::string& error);
   bool ready() const { return light_.id() != 0; }
 
-  Result reserve(const FrameDesc& frame, std::string& error) {
-    return field_.reserve(frame, error);
+  // Allocates what `frame`'s landing needs (the receivers' light at the G-buffer's
+  // targetWidth x targetHeight) and frees the other's.
+  Result reserve(const FrameDesc& frame, int targetWidth, int targetHeight, std::string& error);
+  void release() {
+    field_.release();
+    receivers_.release();
   }
-  void release() { field_.release(); }
   // Attaches the view's target; GlError with a message when the framebuffer is incomplete.
   Result prepare(const FrameDesc& frame, std::string& error);
   // Records the field for the view's camera and adds its light into the view's target, under
@@ -36,12 +40,16 @@ class ReflectedCausticsPass {
   // Lets go of the host's texture.
   void finish();
 
-  std::uint64_t allocatedBytes() const { return field_.allocatedBytes(); }
+  std::uint64_t allocatedBytes() const {
+    return field_.allocatedBytes() + receivers_.allocatedBytes();
+  }
   const ReflectedFieldPass& field() const { return field_; }
+  const ReflectedReceiverPass& receivers() const { return receivers_; }
 
  private:
   ReflectedFieldPass field_;
-  glkit::Program light_;
+  ReflectedReceiverPass receivers_;
+  glkit::Program light_, lightOnDepth_;
   glkit::Framebuffer framebuffer_;
   glkit::Sampler sampler_;
 };

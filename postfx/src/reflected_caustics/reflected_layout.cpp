@@ -74,6 +74,13 @@ glm::dvec2 mirroredOffsetPerHeight(const glm::dvec3& towardSun, const glm::dvec3
 
 }  // namespace
 
+std::uint64_t reflectedReceiverBytes(int gridResolution, int targetWidth, int targetHeight,
+                                     bool slopeSpread) {
+  const std::uint64_t side = std::uint64_t(gridResolution) + 1;
+  return side * side * 2 * 16 + std::uint64_t(targetWidth) * std::uint64_t(targetHeight) * 16 +
+         (slopeSpread ? tileSpreadStatisticsBytes() : 0);
+}
+
 glm::dvec4 reflectedLandingJacobian(const glm::dvec3& towardSun) {
   const glm::dvec3 sun = glm::normalize(towardSun);
   auto offset = [&](double sx, double sz) {

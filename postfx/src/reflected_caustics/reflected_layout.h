@@ -55,5 +55,11 @@ ReflectedLayout reflectedLayout(const FrameDesc& frame);
 // blur's copy of one channel's level 0 and the slope statistics. The memory estimate and
 // ReflectedFieldPass::allocatedBytes() must agree (a test checks).
 std::uint64_t reflectedFieldBytes(int gridResolution, int layers, bool spread);
+// GPU memory ReflectedLanding::ViewDepth allocates: the grid points (two vec4 per point), an
+// RG32F light target of the G-buffer's size and, with `slopeSpread`
+// (CausticsSettings::tileUnresolvedSpread), the slope statistics
+// (ReflectedReceiverPass::allocatedBytes()).
+std::uint64_t reflectedReceiverBytes(int gridResolution, int targetWidth, int targetHeight,
+                                     bool slopeSpread);
 
 }  // namespace postfx::detail

@@ -21,8 +21,8 @@ Result validateReflectedCaustics(const ReflectedCausticsSettings& s, std::string
   };
   if (!within(s.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
   if (!within(s.windowSize, kWindowSizeRange)) return outside("windowSize", kWindowSizeRange, " m");
-  if (!kGridResolutionRange.contains(s.gridResolution))
-    return outsideInt("gridResolution", kGridResolutionRange, s.gridResolution);
+  if (!kReflectedGridRange.contains(s.gridResolution))
+    return outsideInt("gridResolution", kReflectedGridRange, s.gridResolution);
   if (!kReflectedLayersRange.contains(s.heightLayers))
     return outsideInt("heightLayers", kReflectedLayersRange, s.heightLayers);
   if (!within(s.maxHeight, kReflectedHeightRange))

@@ -72,11 +72,12 @@ SHARED_FN vec2 mirroredDrift(vec4 ray, vec2 flatRise) {
 // `maxLight` (the clamp, in flat water's light on a face turned to the mirrored sun: a face
 // can gather more than the horizontal clamp lets through, from low rays), less `subtract` times
 // flat water's light (0: the whole light; 1: the waves' modulation alone, signed; a host's own
-// flat mirror light in the shade is 0, so is then what is subtracted).
+// flat mirror light in the shade, or on a face turned from the flat mirror ray, is 0, so is then
+// what is subtracted).
 SHARED_FN float reflectedReceiverLight(vec3 n, vec3 field, float sunY, vec2 rise, float subtract,
                                        float maxLight) {
   float light = sunY * (-n.y * field.x - n.x * field.y - n.z * field.z);
-  float flatLight = sunY * (-n.y - n.x * rise.x - n.z * rise.y);
+  float flatLight = max(sunY * (-n.y - n.x * rise.x - n.z * rise.y), 0.0f);
   return clamp(light, 0.0f, maxLight) - subtract * flatLight;
 }
 

@@ -13,7 +13,17 @@
 #include "postfx/reflected_caustics/postfx_reflected_caustics.h"
 #include "postfx/seabed_caustics/irradiance_bspline.glsl"
 
+#if REFLECTED_VIEW_DEPTH
+// ReflectedLanding::ViewDepth: the light the mirrored grid landed with on each view pixel
+// (reflected_receiver_pass.h), in flat water's mirror light on the receiver.
+// r: the window grid's light; g: the light times the variance per axis of where its rays land
+// (m^2); b, a: the same for the outer grid.
+layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2D receiverLight;
+// Widest gather of the landing spread's blur (pixels each side).
+const int kMaxBlur = 6;
+#else
 layout(binding = POSTFX_UNIT_IRRADIANCE) uniform sampler2DArray reflectedIrradiance;
+#endif
 
 // xy: camera-relative world xz of the window's centre (m); z: 1 / its side (1/m); w: height
 // layers (channel c of layer k is texture layer c * layers + k)
@@ -26,6 +36,64 @@ layout(location = 4) uniform vec4 mirrorLight;
 layout(location = 5) uniform vec2 rise;  // -towardSun.xz / towardSun.y
 layout(location = 6) uniform float maxLight;  // ReflectedCausticsSettings::maxIrradiance
 
+// Flat water's field (1, rise) at this pixel, times the sun at its flat mirror point (with the
+// shadow mask): what the pattern fades to beyond the window, below the lowest layer and above
+// the highest, where the field's own shadows are not looked up. Set once per pixel by main().
+vec3 meanField;
+
+#if REFLECTED_VIEW_DEPTH
+// The landed light at view pixel `local` (receiver p, normal n, `distance` from the camera),
+// blurred by where the rays each grid ray stands for land about it (the sun's disc, the slopes
+// finer than the grid: a Gaussian of the light-weighted variance around the pixel), gathered
+// from the pixels of the same surface (within a few centimetres of its plane).
+float landedLight(ivec2 local, vec3 p, vec3 n, float distance, int grid) {
+  ivec2 last = ivec2(u.viewport.zw) - 1;
+  vec2 near = vec2(0.0);
+  for (int y = -2; y <= 2; ++y)
+    for (int x = -2; x <= 2; ++x) {
+      vec4 v = texelFetch(receiverLight, clamp(local + ivec2(x, y), ivec2(0), last), 0);
+      near += grid == 0 ? v.rg : v.ba;
+    }
+  vec4 c = texelFetch(receiverLight, local, 0);
+  float centre = grid == 0 ? c.r : c.b;
+  if (!(near.x > 0.0)) return 0.0;
+  float pixel = distance * u.depthAndWater.w;
+  // What a pixel sees of the receiver is its footprint's average too: an area-matched disc of
+  // radius pixel / sqrt(facing) has variance r^2 / 6 per axis (as the traced reference's kernel).
+  float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 1.0 / 16.0);
+  float sigma = sqrt(max(near.y / near.x, 0.0) + pixel * pixel / (6.0 * facing));
+  // The Gaussian, windowed to 0 at `radius` (2.5 sigma): taps enter and leave with no weight as
+  // sigma changes, so the light does not jump when the spread grows a pixel.
+  float radius = 2.5 * sigma;
+  int reach = clamp(int(ceil(radius / max(pixel, 1e-9))), 0, kMaxBlur);
+  if (reach == 0) return centre;
+  float tolerance = 0.02 + 0.01 * distance;
+  float sum = 0.0, weights = 0.0;
+  for (int y = -kMaxBlur; y <= kMaxBlur; ++y) {
+    if (abs(y) > reach) continue;
+    for (int x = -kMaxBlur; x <= kMaxBlur; ++x) {
+      if (abs(x) > reach) continue;
+      ivec2 j = local + ivec2(x, y);
+      if (any(lessThan(j, ivec2(0))) || any(greaterThan(j, last))) continue;
+      float depth = texelFetch(gbufferDepth, j + ivec2(u.viewOrigin.xy), 0).r;
+      if (isSkyDepth(depth, POSTFX_DEPTH_CONVENTION)) continue;
+      vec3 q = mat3(u.viewToWorld) *
+               viewPositionFromDepth((vec2(j) + 0.5) * u.viewport.xy, depth, u.projection,
+                                     u.depthAndWater.xy, POSTFX_DEPTH_CONVENTION);
+      if (!(abs(dot(q - p, n)) < tolerance)) continue;
+      vec3 d = q - p;
+      float window = max(1.0 - dot(d, d) / (radius * radius), 0.0);
+      float w = exp(-dot(d, d) / (2.0 * sigma * sigma)) * window * window;
+      vec4 v = texelFetch(receiverLight, j, 0);
+      sum += w * (grid == 0 ? v.r : v.b);
+      weights += w;
+    }
+  }
+  return weights > 0.0 ? sum / weights : centre;
+}
+#endif
+
+#if !REFLECTED_VIEW_DEPTH
 float smoothLevelZero(vec2 uv, float layer, float texels) {
   BSplineTaps t = bsplineTaps(uv, texels);
   float e00 = textureLod(reflectedIrradiance, vec3(t.c0.x, t.c0.y, layer), 0.0).r;
@@ -43,10 +111,6 @@ float channelAt(vec2 uv, float layer, float lod, float texels) {
   return filtered;
 }
 
-// Flat water's field (1, rise) at this pixel, times the sun at its flat mirror point (with the
-// shadow mask): what the pattern fades to beyond the window, below the lowest layer and above
-// the highest, where the field's own shadows are not looked up. Set once per pixel by main().
-vec3 meanField;
 
 // Layer k's field (light, drift sums) at camera-relative xz `point`, faded to meanField toward
 // the window's edge (the window snaps in steps of its coarsest filtered texel; the fade follows
@@ -82,6 +146,8 @@ vec3 layerLight(vec2 xz, float height, int k, int layers, float lod, float texel
   return layerField(along, k, layers, lod, texels, axis);
 }
 
+#endif
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
@@ -98,12 +164,35 @@ void main() {
     return;
   }
   vec3 n = decodeNormal(texelFetch(gbufferNormal, pixel, 0), POSTFX_NORMAL_ENCODING);
-  float nDotL = dot(n, towardWater.xyz);  // 0 for a zero/NaN G-buffer normal
-  if (!(nDotL > 0.0)) {
+  // Whatever its facing: a face turned from flat water's mirror ray still meets the rays the
+  // waves tilt toward it (none reaches a face from behind: its light is clamped at 0).
+  if (!(dot(n, n) > 0.5)) {  // a zero or NaN G-buffer normal
     emitNothing();
     return;
   }
   float distance = length(viewPos);
+  float flatVisibility = 1.0;
+  vec3 water = p + towardWater.xyz * (height / max(-towardWater.y, 1e-6));
+#if POSTFX_SHADOW_MASK
+  flatVisibility = sunVisibility(water, vec3(0.0, 1.0, 0.0));
+#endif
+  meanField = vec3(1.0, rise) * flatVisibility;
+  float keep = reflectedTopWeight(height, towardWater.w);
+  // Without the mirror mean the host's own flat mirror light is taken off: where the sun is
+  // shaded at flat water's mirror point, the host's light holds none of it.
+  float subtract = (1.0 - mirrorLight.w) * flatVisibility;
+#if REFLECTED_VIEW_DEPTH
+  // The landed light where the flat mirror point lies in the window (its pattern whole), the
+  // mean beyond it and above the followed height.
+  vec2 mirrorUv = (water.xz - window.xy) * window.z + 0.5;
+  float edge = min(min(mirrorUv.x, mirrorUv.y), min(1.0 - mirrorUv.x, 1.0 - mirrorUv.y));
+  float inside = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge) * keep;
+  ivec2 local = pixel - ivec2(u.viewOrigin.xy);
+  float landed = landedLight(local, p, n, distance, 0) + landedLight(local, p, n, distance, 1);
+  float mean = reflectedReceiverLight(n, meanField, -towardWater.y, rise, 0.0, maxLight);
+  float flatLight = max(dot(n, towardWater.xyz), 0.0);
+  float light = mix(mean, min(landed, maxLight), inside) - subtract * flatLight;
+#else
   float texels = float(textureSize(reflectedIrradiance, 0).x);
   // The pixel's footprint as the layers see it: carried along the mirror ray onto a horizontal
   // plane, a step up a wall moves the lookup by `rise` (2.7 m per metre for a sun 20 degrees
@@ -119,21 +208,12 @@ void main() {
   if (slopeLength > 1e-3) axis = (slope.xz - rise * slope.y) * (halfFootprint / slopeLength);
   int layers = int(window.w);
   vec3 blend = layerBlend(height, heights[0], heights[1], layers);
-  float flatVisibility = 1.0;
-#if POSTFX_SHADOW_MASK
-  vec3 water = p + towardWater.xyz * (height / max(-towardWater.y, 1e-6));
-  flatVisibility = sunVisibility(water, vec3(0.0, 1.0, 0.0));
-#endif
-  meanField = vec3(1.0, rise) * flatVisibility;
   vec3 lower = meanField;
   if (!(blend.x < 0.0)) lower = layerLight(p.xz, height, int(blend.x), layers, lod, texels, axis);
   vec3 upper = layerLight(p.xz, height, int(blend.y), layers, lod, texels, axis);
-  float keep = reflectedTopWeight(height, towardWater.w);
   vec3 field = mix(meanField, mix(lower, upper, blend.z), keep);
-  // Without the mirror mean the host's own flat mirror light is taken off: where the sun is
-  // shaded at flat water's mirror point, the host's light holds none of it.
-  float subtract = (1.0 - mirrorLight.w) * flatVisibility;
   float light = reflectedReceiverLight(n, field, -towardWater.y, rise, subtract, maxLight);
+#endif
   vec3 albedo = sanitizeAlbedo(texelFetch(gbufferAlbedo, pixel, 0).rgb);
   // ViewExtinction::Plugin: the part of the view ray under the water, from a camera under the
   // level looking up at a hull (the ray is straight: the ratio of the heights); none from above.
