@@ -19,19 +19,9 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-#if POSTFX_WATER_SINGLE_2D
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
-#define WATER_COORD(uv, layer) (uv)
-#else
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
-#define WATER_COORD(uv, layer) vec3(uv, float(layer))
-#endif
+#include "postfx/reflected_caustics/reflected_grid_water.glsl"
 layout(binding = POSTFX_UNIT_DEPTH) uniform sampler2D gbufferDepth;
 
-// As reflected_light_vertices.comp: per cascade the uv of grid point (0, 0), uv per cell and
-// the mip level matching the grid spacing.
-layout(location = 0) uniform vec4 cascadeGrid[POSTFX_MAX_CASCADES];
-layout(location = 4) uniform int cascadeCount;
 // xy: camera-relative world xz of grid point (0, 0) (m); z: grid spacing (m); w: the level
 // relative to the camera (m).
 layout(location = 5) uniform vec4 grid;
@@ -225,12 +215,7 @@ float marchView(vec3 a, vec3 b, out vec3 hitNormal) {
 void main() {
   ivec2 index = ivec2(gl_GlobalInvocationID.xy);
   if (index.x >= pointsPerSide || index.y >= pointsPerSide) return;
-  vec3 surface = vec3(0.0);
-  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
-    if (c >= cascadeCount) break;
-    vec2 uv = cascadeGrid[c].xy + vec2(index) * cascadeGrid[c].z;
-    surface += textureLod(waterSurface, WATER_COORD(uv, c), cascadeGrid[c].w).rgb;
-  }
+  vec3 surface = gridWater(index);
   vec3 n = waterNormalFromSlopes(surface.xy);
   float h = sanitizeHeight(surface.z);
   vec4 ray = mirroredSunRay(n, towardSun.xyz, towardSun.w, scales.x);

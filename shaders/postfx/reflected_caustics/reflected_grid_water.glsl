@@ -1,0 +1,27 @@
+// The water under a reflected light grid's point: every cascade's slopes and height summed, each
+// read at the mip matching a grid cell (reflected_light_vertices.comp, reflected_receiver_rays.comp).
+// Declares the water texture and the cascades' uniforms (locations 0 to 4).
+#if POSTFX_WATER_SINGLE_2D
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
+#define WATER_COORD(uv, layer) (uv)
+#else
+layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
+#define WATER_COORD(uv, layer) vec3(uv, float(layer))
+#endif
+
+// Per cascade: xy = uv of grid point (0, 0) (reduced modulo the tile in double), z = uv per grid
+// cell, w = mip level matching the grid spacing (what the grid cannot carry is low-passed away
+// rather than aliased into false lines).
+layout(location = 0) uniform vec4 cascadeGrid[POSTFX_MAX_CASCADES];
+layout(location = 4) uniform int cascadeCount;
+
+// Slopes (xy) and height (z) of the water at grid point `index`.
+vec3 gridWater(ivec2 index) {
+  vec3 surface = vec3(0.0);
+  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
+    if (c >= cascadeCount) break;
+    vec2 uv = cascadeGrid[c].xy + vec2(index) * cascadeGrid[c].z;
+    surface += textureLod(waterSurface, WATER_COORD(uv, c), cascadeGrid[c].w).rgb;
+  }
+  return surface;
+}
