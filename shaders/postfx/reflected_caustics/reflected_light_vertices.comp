@@ -14,7 +14,7 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-#include "postfx/reflected_caustics/reflected_grid_water.glsl"
+#include "postfx/seabed_caustics/grid_water.glsl"
 
 // xy: grid point (0, 0) relative to the window corner (m); z: grid spacing (m); w: the layer's
 // height above the level (m).

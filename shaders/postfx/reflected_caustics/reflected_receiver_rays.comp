@@ -19,7 +19,7 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-#include "postfx/reflected_caustics/reflected_grid_water.glsl"
+#include "postfx/seabed_caustics/grid_water.glsl"
 layout(binding = POSTFX_UNIT_DEPTH) uniform sampler2D gbufferDepth;
 
 // xy: camera-relative world xz of grid point (0, 0) (m); z: grid spacing (m); w: the level

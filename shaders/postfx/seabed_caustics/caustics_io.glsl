@@ -7,13 +7,7 @@
 layout(binding = POSTFX_UNIT_DEPTH) uniform sampler2D gbufferDepth;
 layout(binding = POSTFX_UNIT_NORMAL) uniform sampler2D gbufferNormal;
 layout(binding = POSTFX_UNIT_ALBEDO) uniform sampler2D gbufferAlbedo;
-#if POSTFX_WATER_SINGLE_2D
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
-#define WATER_COORD(uv, layer) (uv)
-#else
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
-#define WATER_COORD(uv, layer) vec3(uv, float(layer))
-#endif
+#include "postfx/seabed_caustics/water_texture.glsl"
 #if POSTFX_SHADOW_MASK
 layout(binding = POSTFX_UNIT_SHADOW) uniform sampler2DShadow sunShadowMap;
 #endif

@@ -15,13 +15,7 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-#if POSTFX_WATER_SINGLE_2D
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
-#define WATER_COORD(uv, layer) (uv)
-#else
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
-#define WATER_COORD(uv, layer) vec3(uv, float(layer))
-#endif
+#include "postfx/seabed_caustics/water_texture.glsl"
 layout(binding = POSTFX_UNIT_LOCAL_SURFACE) uniform sampler2D regionSurface;
 
 // Per cascade: xy = uv of grid point (0, 0) (reduced modulo the tile in double), z = the mip

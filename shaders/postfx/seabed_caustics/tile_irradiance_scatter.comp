@@ -18,13 +18,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#if POSTFX_WATER_SINGLE_2D
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
-#define WATER_COORD(uv, layer) (uv)
-#else
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
-#define WATER_COORD(uv, layer) vec3(uv, float(layer))
-#endif
+#include "postfx/seabed_caustics/water_texture.glsl"
 
 layout(std430, binding = POSTFX_STORAGE_TILE_ACCUMULATORS) buffer TileAccumulators {
   uint accumulators[];

@@ -12,19 +12,8 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-#if POSTFX_WATER_SINGLE_2D
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
-#define WATER_COORD(uv, layer) (uv)
-#else
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
-#define WATER_COORD(uv, layer) vec3(uv, float(layer))
-#endif
+#include "postfx/seabed_caustics/grid_water.glsl"
 
-// Per cascade: xy = uv of grid point (0, 0) (reduced modulo the tile in double), z = uv per grid
-// cell, w = mip level matching the grid spacing (the surface is low-passed to what the grid
-// can carry instead of aliasing).
-layout(location = 0) uniform vec4 cascadeGrid[POSTFX_MAX_CASCADES];
-layout(location = 4) uniform int cascadeCount;
 // xy: grid point (0, 0) relative to the window corner (m); z: grid spacing (m); w: receiver
 // depth below the level (m).
 layout(location = 5) uniform vec4 grid;
@@ -41,12 +30,7 @@ void main() {
   ivec2 index = ivec2(gl_GlobalInvocationID.xy);
   if (index.x >= pointsPerSide || index.y >= pointsPerSide) return;
   vec2 local = grid.xy + vec2(index) * grid.z;
-  vec3 surface = vec3(0.0);
-  for (int c = 0; c < POSTFX_MAX_CASCADES; ++c) {
-    if (c >= cascadeCount) break;
-    vec2 uv = cascadeGrid[c].xy + vec2(index) * cascadeGrid[c].z;
-    surface += textureLod(waterSurface, WATER_COORD(uv, c), cascadeGrid[c].w).rgb;
-  }
+  vec3 surface = gridWater(index);
   vec3 hit = refractToReceiver(local, surface, towardSun.xyz, towardSun.w, scales.x, grid.w);
   vec2 beam = beamPosition(local, surface.z, towardSun.xz / towardSun.y);
   int i = 2 * (index.y * pointsPerSide + index.x);

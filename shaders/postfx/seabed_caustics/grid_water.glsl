@@ -1,13 +1,8 @@
-// The water under a reflected light grid's point: every cascade's slopes and height summed, each
-// read at the mip matching a grid cell (reflected_light_vertices.comp, reflected_receiver_rays.comp).
-// Declares the water texture and the cascades' uniforms (locations 0 to 4).
-#if POSTFX_WATER_SINGLE_2D
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2D waterSurface;
-#define WATER_COORD(uv, layer) (uv)
-#else
-layout(binding = POSTFX_UNIT_WATER) uniform sampler2DArray waterSurface;
-#define WATER_COORD(uv, layer) vec3(uv, float(layer))
-#endif
+// The water under a grid's point: every cascade's slopes and height summed, each read at the mip
+// matching a grid cell (the refracted window's wavefront_area_ratio_vertices.comp, the reflected
+// light's reflected_light_vertices.comp and reflected_receiver_rays.comp). Declares the water
+// texture and the cascades' uniforms (locations 0 to 4).
+#include "postfx/seabed_caustics/water_texture.glsl"
 
 // Per cascade: xy = uv of grid point (0, 0) (reduced modulo the tile in double), z = uv per grid
 // cell, w = mip level matching the grid spacing (what the grid cannot carry is low-passed away
