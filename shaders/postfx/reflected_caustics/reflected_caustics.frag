@@ -43,36 +43,39 @@ vec3 meanField;
 
 #if REFLECTED_VIEW_DEPTH
 // The landed light at view pixel `local` (receiver p, normal n, `distance` from the camera),
-// blurred by where the rays each grid ray stands for land about it (the sun's disc, the slopes
-// finer than the grid: a Gaussian of the light-weighted variance around the pixel), gathered
-// from the pixels of the same surface (within a few centimetres of its plane).
-float landedLight(ivec2 local, vec3 p, vec3 n, float distance, int grid) {
+// each grid's (window: x, outer: y) blurred by where the rays each grid ray stands for land
+// about it (the sun's disc, the slopes finer than the grid: a Gaussian of the light-weighted
+// variance around the pixel), gathered from the pixels of the same surface (within a few
+// centimetres of its plane); the two added. One walk over the neighbours serves both grids.
+float landedLight(ivec2 local, vec3 p, vec3 n, float distance) {
   ivec2 last = ivec2(u.viewport.zw) - 1;
-  vec2 near = vec2(0.0);
+  vec4 near = vec4(0.0);  // per grid: light, light times variance (rg window, ba outer)
   for (int y = -2; y <= 2; ++y)
-    for (int x = -2; x <= 2; ++x) {
-      vec4 v = texelFetch(receiverLight, clamp(local + ivec2(x, y), ivec2(0), last), 0);
-      near += grid == 0 ? v.rg : v.ba;
-    }
+    for (int x = -2; x <= 2; ++x)
+      near += texelFetch(receiverLight, clamp(local + ivec2(x, y), ivec2(0), last), 0);
   vec4 c = texelFetch(receiverLight, local, 0);
-  float centre = grid == 0 ? c.r : c.b;
-  if (!(near.x > 0.0)) return 0.0;
+  vec2 light = vec2(c.r, c.b);  // what a grid keeps when it gathers nothing around
+  bvec2 lit = bvec2(near.x > 0.0, near.z > 0.0);
+  light = mix(vec2(0.0), light, lit);
   float pixel = distance * u.depthAndWater.w;
   // What a pixel sees of the receiver is its footprint's average too: an area-matched disc of
   // radius pixel / sqrt(facing) has variance r^2 / 6 per axis (as the traced reference's kernel).
   float facing = max(abs(dot(n, p)) / max(distance, 1e-6), 1.0 / 16.0);
-  float sigma = sqrt(max(near.y / near.x, 0.0) + pixel * pixel / (6.0 * facing));
+  vec2 sigma = sqrt(max(vec2(near.y / near.x, near.w / near.z), vec2(0.0)) +
+                    pixel * pixel / (6.0 * facing));
   // The Gaussian, windowed to 0 at `radius` (2.5 sigma): taps enter and leave with no weight as
   // sigma changes, so the light does not jump when the spread grows a pixel.
-  float radius = 2.5 * sigma;
-  int reach = clamp(int(ceil(radius / max(pixel, 1e-9))), 0, kMaxBlur);
-  if (reach == 0) return centre;
+  vec2 radius = 2.5 * sigma;
+  ivec2 reach = clamp(ivec2(ceil(radius / max(pixel, 1e-9))), ivec2(0), ivec2(kMaxBlur));
+  reach = mix(ivec2(0), reach, lit);  // an unlit grid gathers nothing
+  int widest = max(reach.x, reach.y);
+  if (widest == 0) return light.x + light.y;
   float tolerance = 0.02 + 0.01 * distance;
-  float sum = 0.0, weights = 0.0;
+  vec2 sum = vec2(0.0), weights = vec2(0.0);
   for (int y = -kMaxBlur; y <= kMaxBlur; ++y) {
-    if (abs(y) > reach) continue;
+    if (abs(y) > widest) continue;
     for (int x = -kMaxBlur; x <= kMaxBlur; ++x) {
-      if (abs(x) > reach) continue;
+      if (abs(x) > widest) continue;
       ivec2 j = local + ivec2(x, y);
       if (any(lessThan(j, ivec2(0))) || any(greaterThan(j, last))) continue;
       float depth = texelFetch(gbufferDepth, j + ivec2(u.viewOrigin.xy), 0).r;
@@ -82,14 +85,20 @@ float landedLight(ivec2 local, vec3 p, vec3 n, float distance, int grid) {
                                      u.depthAndWater.xy, POSTFX_DEPTH_CONVENTION);
       if (!(abs(dot(q - p, n)) < tolerance)) continue;
       vec3 d = q - p;
-      float window = max(1.0 - dot(d, d) / (radius * radius), 0.0);
-      float w = exp(-dot(d, d) / (2.0 * sigma * sigma)) * window * window;
       vec4 v = texelFetch(receiverLight, j, 0);
-      sum += w * (grid == 0 ? v.r : v.b);
-      weights += w;
+      vec2 value = vec2(v.r, v.b);
+      for (int g = 0; g < 2; ++g) {
+        if (abs(x) > reach[g] || abs(y) > reach[g]) continue;
+        float window = max(1.0 - dot(d, d) / (radius[g] * radius[g]), 0.0);
+        float w = exp(-dot(d, d) / (2.0 * sigma[g] * sigma[g])) * window * window;
+        sum[g] += w * value[g];
+        weights[g] += w;
+      }
     }
   }
-  return weights > 0.0 ? sum / weights : centre;
+  for (int g = 0; g < 2; ++g)
+    if (reach[g] > 0 && weights[g] > 0.0) light[g] = sum[g] / weights[g];
+  return light.x + light.y;
 }
 #endif
 
@@ -188,7 +197,7 @@ void main() {
   float edge = min(min(mirrorUv.x, mirrorUv.y), min(1.0 - mirrorUv.x, 1.0 - mirrorUv.y));
   float inside = smoothstep(0.0, IRRADIANCE_FADE_BAND, edge) * keep;
   ivec2 local = pixel - ivec2(u.viewOrigin.xy);
-  float landed = landedLight(local, p, n, distance, 0) + landedLight(local, p, n, distance, 1);
+  float landed = landedLight(local, p, n, distance);
   float mean = reflectedReceiverLight(n, meanField, -towardWater.y, rise, 0.0, maxLight);
   float flatLight = max(dot(n, towardWater.xyz), 0.0);
   float light = mix(mean, min(landed, maxLight), inside) - subtract * flatLight;
