@@ -95,3 +95,11 @@ postfx_add_test(reference_reflected_pattern_tests GL
   LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy)
 target_include_directories(reference_reflected_pattern_tests PRIVATE ${CMAKE_SOURCE_DIR}/postfx/src
   ${POSTFX_SHADER_ROOT})
+
+# The volume caustics (the light a glass sphere focuses, seen in the water) through the
+# validation library's host (volume_caustic_run.h): the flux each ray scatters, IOR 1 against
+# the unshadowed god rays, an occluder in front, feature off bit for bit, extreme views, and the
+# cone against the traced beams at 640x360.
+postfx_add_test(postfx_volume_caustics_tests GL
+  SOURCES gl/postfx_volume_caustics_test.cpp
+  LIBS ocean_validation ocean_reference glm::glm postfx::epoxy)

@@ -131,7 +131,7 @@ GlMesh makeCubeMesh(double half) {
 }
 
 ReceiverMap::ReceiverMap(const glm::dvec3& towardSun, const glm::dvec3& centre, double halfExtent,
-                         double planeY, int sizeIn, double planeHalf)
+                         double planeY, int sizeIn, double planeHalf, const glm::dvec4* occluder)
     : size(sizeIn) {
   const glm::dvec3 l = glm::normalize(towardSun);
   const glm::dvec3 up = std::abs(l.y) > 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
@@ -148,6 +148,20 @@ ReceiverMap::ReceiverMap(const glm::dvec3& towardSun, const glm::dvec3& centre, 
       glm::dvec4 a = inverse * glm::dvec4(nx, ny, -1.0, 1.0);
       glm::dvec4 b = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
       const glm::dvec3 pa = glm::dvec3(a) / a.w, pb = glm::dvec3(b) / b.w;
+      if (occluder != nullptr) {
+        // The sphere's near side, if the texel's ray meets it first (pa -> pb, t in [0, 1]).
+        const glm::dvec3 ab = pb - pa, oc = pa - glm::dvec3(*occluder);
+        const double qa = glm::dot(ab, ab), qb = glm::dot(oc, ab);
+        const double qc = glm::dot(oc, oc) - occluder->w * occluder->w;
+        const double disc = qb * qb - qa * qc;
+        if (disc > 0.0) {
+          const double t = (-qb - std::sqrt(disc)) / qa;
+          if (t >= 0.0 && t <= 1.0) {
+            texels[static_cast<size_t>(y) * size + x] = static_cast<float>(t);
+            continue;
+          }
+        }
+      }
       if (std::abs(pb.y - pa.y) < 1e-12) continue;
       const double t = (planeY - pa.y) / (pb.y - pa.y);
       if (t < 0.0 || t > 1.0) continue;

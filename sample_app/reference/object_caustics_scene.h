@@ -50,10 +50,13 @@ GlMesh makeCubeMesh(double half);
 // covering a square of half side `halfExtent` (m) around `centre`, forward [-1, 1] depth
 // (SunShadowMap::depthConvention 2), GL_DEPTH_COMPONENT32F. Texels whose ray misses the plane
 // (or hits it outside [-planeHalf, planeHalf] in x and z, if planeHalf > 0) stay at the far plane.
+// `occluder` (xyz centre, w radius), when given: a sphere in front of the plane, as a host's sun
+// shadow map holds its casters.
 class ReceiverMap {
  public:
   ReceiverMap(const glm::dvec3& towardSun, const glm::dvec3& centre, double halfExtent,
-              double planeY, int size, double planeHalf = 0.0);
+              double planeY, int size, double planeHalf = 0.0,
+              const glm::dvec4* occluder = nullptr);
   ~ReceiverMap();
   ReceiverMap(const ReceiverMap&) = delete;
   ReceiverMap& operator=(const ReceiverMap&) = delete;

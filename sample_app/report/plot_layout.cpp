@@ -55,6 +55,10 @@ std::vector<PanelRule> panelRules(const std::vector<Row>& rows) {
       {"local water (the pool)", "relative RMSE of the pattern against traced light",
        [](const Row& r) { return r.pass == "local_water"; },
        [](const Row& r) { return r.relativeRmse; }},
+      {"volume caustics (glass sphere in water)",
+       "relative RMSE inside the cone against the traced beams",
+       [](const Row& r) { return r.pass == "volume_caustics"; },
+       [](const Row& r) { return r.relativeRmse; }},
   };
 }
 

@@ -243,6 +243,18 @@ const std::array kValueOptions{
                   error = "--reflected-landing must be depth or layers" + got(text);
                   return false;
                 }},
+    ValueOption{"--volume-method", "HOW",
+                "volume caustics' rays drawn as Gaussian beams (beams) or one-pixel lines "
+                "(lines) (default: the plugin's, beams)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  if (text == "beams" || text == "lines") {
+                    o.volumeMethod = text == "beams" ? 1 : 2;
+                    return true;
+                  }
+                  error = "--volume-method must be beams or lines" + got(text);
+                  return false;
+                }},
     ValueOption{"--caustics-lookup", "RES",
                 "tile model's lookups at full or half (default) resolution", false,
                 [](std::string_view text, Options& o, std::string& error) {
@@ -443,6 +455,9 @@ const std::array kFlagOptions{
                [](Options& o) { o.godRays = false; }},
     FlagOption{"--no-object-caustics", "leave the glass and metal objects' caustics out",
                [](Options& o) { o.objectCaustics = false; }},
+    FlagOption{"--no-volume-caustics",
+               "leave out the light the glass objects focus, seen in the water",
+               [](Options& o) { o.volumeCaustics = false; }},
     FlagOption{"--flat-local-water",
                "give the plugin the pool's or wake's regions flat (compare --flat's frame)",
                [](Options& o) { o.flatLocalWater = true; }},

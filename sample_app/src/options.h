@@ -50,6 +50,11 @@ struct Options {
   bool caustics = true;        // the plugin's seabed caustics
   bool godRays = true;         // the plugin's underwater god rays
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
+  // The light those objects focus, seen in the water (Feature::VolumeCaustics): on with the
+  // object caustics unless --no-volume-caustics; --volume-method: 1 beams, 2 lines, 0 the
+  // plugin's default (beams).
+  bool volumeCaustics = true;
+  int volumeMethod = 0;
   // The plugin is given the local water regions (pool, wake) with flat surfaces, the sample's
   // own drawing unchanged: with --caustics-model ray-deviation --tau 0, flat water's frame of
   // a scene with local water (compare --flat).

@@ -73,6 +73,7 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   if (options.physicalCaustics) desc.features = desc.features | postfx::Feature::WavefrontAreaRatio;
   if (options.objectCaustics) {
     desc.features = desc.features | postfx::Feature::ObjectCaustics;
+    if (options.volumeCaustics) desc.features = desc.features | postfx::Feature::VolumeCaustics;
     renderer.enableReceiverMap();
     // Exactly the scene's lights: the bound is a shader constant, 0 compiles no light code.
     desc.maxLocalLights = int(renderer.lights().size());
@@ -121,6 +122,12 @@ std::unique_ptr<PluginSetup> PluginSetup::create(Renderer& renderer, const Optio
   // The light through and off the casters is the same sun's (and the lights'), in the same
   // units: their shadows in the host's map remove what they block, this adds back what passes.
   setup->objectCaustics_.intensity = kLambertian;
+  // The light they focus in the water scatters like the god rays' sun (their phase and fades):
+  // it fills the shadow the casters cut into the shafts.
+  if (options.volumeMethod > 0)
+    setup->objectCaustics_.volume.method = options.volumeMethod == 1
+                                               ? postfx::VolumeCausticsMethod::Beams
+                                               : postfx::VolumeCausticsMethod::Lines;
   setup->godRays_.enabled = options.godRays;
   // The sun's single scattering with an isotropic phase function, 1 / (4 pi) per steradian,
   // as the sample's fog scatters the sky's light (sample_optics.h): the shafts in the same

@@ -21,6 +21,7 @@
 #include "headless_session.h"
 #include "local_water_rows.h"
 #include "reflected_rows.h"
+#include "volume_rows.h"
 
 namespace ocean {
 namespace {
@@ -93,9 +94,11 @@ int runReport(const Options& given) {
   const bool onlyStability = only("stability");
   const bool onlyLocalWater = only("local-water");
   const bool onlyReflected = only("reflected");
-  if (!given.only.empty() && !onlyStability && !onlyLocalWater && !onlyReflected)
+  const bool onlyVolume = only("volume");
+  if (!given.only.empty() && !onlyStability && !onlyLocalWater && !onlyReflected && !onlyVolume)
     return commandFailed(
-        "report --only knows three sections, 'stability', 'local-water' and 'reflected'; got '" +
+        "report --only knows four sections, 'stability', 'local-water', 'reflected' and "
+        "'volume'; got '" +
         given.only + "'");
   std::error_code fsError;
   std::filesystem::create_directories(options.out, fsError);
@@ -151,6 +154,23 @@ int runReport(const Options& given) {
     info.height = reflected.height;
     if (!measureReflectedRows(given, reflected, rows, info.referenceNote, error) ||
         !writeSection("reflected", "reflected caustics"))
+      return commandFailed(error);
+    return 0;
+  }
+  if (onlyVolume) {
+    VolumeReportSettings volume;
+    volume.imageDir = options.out;
+    if (given.quick) {
+      volume.width = 320;
+      volume.height = 180;
+      volume.grids = {64, 256};
+      volume.referenceRaysPerSide = 600;
+      volume.timedFrames = 6;
+    }
+    info.width = volume.width;
+    info.height = volume.height;
+    if (!measureVolumeRows(volume, rows, info.referenceNote, error) ||
+        !writeSection("volume", "volume caustics"))
       return commandFailed(error);
     return 0;
   }

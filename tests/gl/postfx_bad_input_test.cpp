@@ -154,10 +154,16 @@ TEST_F(PostfxBadInputTest, EachCaseFailsCleanly) {
 TEST_F(PostfxBadInputTest, CreateRejectsUnknownAndInvalid) {
   postfx::Context* fx = reinterpret_cast<postfx::Context*>(0x1);
   postfx::CreateDesc desc;
-  desc.features = static_cast<postfx::Feature>(1u << 11);
+  desc.features = static_cast<postfx::Feature>(1u << 12);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_EQ(fx, nullptr);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("unknown feature"), std::string::npos);
+  // The volume caustics draw the object caustics' rays: alone they are refused.
+  desc.features = postfx::Feature::VolumeCaustics | postfx::Feature::GodRays;
+  EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
+  EXPECT_EQ(fx, nullptr);
+  EXPECT_NE(std::string(postfx::lastError(nullptr)).find("VolumeCaustics needs ObjectCaustics"),
+            std::string::npos);
   desc.features = postfx::Feature::Caustics;
   desc.depthConvention = static_cast<postfx::DepthConvention>(7);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);

@@ -112,6 +112,35 @@ struct CasterMesh {
   CasterMaterial material;
 };
 
+// How Feature::VolumeCaustics draws each traced ray's in-scattered light into the view.
+enum class VolumeCausticsMethod : std::uint32_t {
+  // Each ray a beam whose cross-section is a Gaussian as wide as half the spacing of its
+  // neighbouring rays (interpolated from where they leave the caster to where they land, at
+  // least the pixel's footprint): a camera-facing quad per ray, the view ray's closest approach
+  // to the beam weighted by the 1D kernel (photon beams, beam x beam 1D). Smooth at any grid.
+  Beams,
+  // Each ray a one-pixel GL line (illumination rays drawn as lines): cheaper per ray, but the
+  // cone breaks into separate lines where the rays are sparser than the pixels.
+  Lines,
+};
+
+// The light a caster's rays scatter toward the camera in the water between the caster and where
+// they land (Feature::VolumeCaustics): single scattering with the god rays' model, so it fills
+// the shadow the host's shadow map cuts into the shafts (postfx/settings.h, GodRaySettings):
+//   L = sum over rays of P * phase * sigma_s * k(b) / sin(theta) * T_light * T_view * rho(depth)
+// P the ray's power (the sun's irradiance, or the light's intensity, times its grid cell's area
+// or solid angle, Fresnel, transmission, tint and the glass's absorption), phase =
+// GodRaySettings::intensity, sigma_s and sigma_t = absorption + scattering from WaterSurface,
+// T_light = exp(-sigma_t * the ray's path in water from the surface or the light),
+// T_view = exp(-sigma_t * the view ray's path in water), rho the god rays' surface and depth fade,
+// k the method's 1D kernel in the distance b between the view ray and the ray, theta their angle.
+// Beyond GodRaySettings::maxDistance from the camera nothing is added (as the shafts). Only the
+// part of a ray under the water level scatters; rays that land on no receiver are not drawn.
+struct VolumeCausticsSettings {
+  bool enabled = true;  // off: nothing is drawn and no extra ray data is written (0 ms)
+  VolumeCausticsMethod method = VolumeCausticsMethod::Beams;
+};
+
 // Per-frame tuning of the object caustics, a plain struct with defaults. Out-of-range values:
 // dispatch() returns InvalidArgument and draws nothing.
 struct ObjectCausticsSettings {
@@ -150,6 +179,9 @@ struct ObjectCausticsSettings {
   // effect never filtered; still casters under moving water are. Local lights: no filter.
   bool temporalFilter = false;
   float temporalWeight = 0.5f;  // history weight, [0, 0.95]
+  // Read only with Feature::VolumeCaustics: the rays' light in the water (48 more bytes per ray
+  // and colour channel while the feature is on).
+  VolumeCausticsSettings volume;
 };
 
 }  // namespace postfx

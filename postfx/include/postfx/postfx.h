@@ -59,6 +59,12 @@ enum class Feature : std::uint32_t {
   // postfx/reflected_caustics.h), timed as Pass::ReflectedCaustics. Without it nothing above the
   // level receives light from the plugin's seabed passes.
   ReflectedCaustics = 1u << 10,
+  // The light the object casters focus, seen in the water (ObjectCausticsSettings::volume,
+  // postfx/casters.h): every traced ray's in-scattered light along its way from the caster to
+  // where it lands, drawn after each light's object caustics and timed with them. Needs
+  // Feature::ObjectCaustics; reads the god rays' phase, fades and maxDistance (GodRaySettings,
+  // validated with this feature even without Feature::GodRays).
+  VolumeCaustics = 1u << 11,
   // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
   PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
 };

@@ -104,6 +104,7 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     }
     if (hasFeature(desc.features, Feature::ObjectCaustics)) {
       r = context->objectCaustics.init(detail::shaderDefines(desc), desc.maxLocalLights,
+                                       hasFeature(desc.features, Feature::VolumeCaustics),
                                        createError);
       if (r != Result::Ok) return r;
       present[int(Pass::ObjectCaustics)] = true;

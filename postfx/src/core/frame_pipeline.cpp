@@ -125,6 +125,7 @@ Result buildObjectBlocks(const Context& context, std::span<const ViewWork> work,
     views.sun = true;
     views.sunFrame = fitObjectLightFrame(first);
   }
+  views.volume = volumeCausticsOn(context.desc, first);
   for (int k = 0; k < plan.lightCount; ++k) {
     ObjectLightFrame view;
     fitLocalLightFrame(first, plan.lights[static_cast<std::size_t>(k)], view);

@@ -2,7 +2,10 @@
 
 #include <postfx/testing.h>
 
+#include <algorithm>
+
 #include "god_rays/godrays_constants.h"
+#include "object_caustics/object_caustics_frame.h"
 #include "reflected_caustics/reflected_layout.h"
 #include "seabed_caustics/local_water_layout.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
@@ -74,8 +77,19 @@ Terms terms(const CreateDesc& create, std::span<const ViewMemory> views) {
     const ObjectCausticsSettings& s = frame.objectCaustics.settings;
     // Front/back positions RGBA32F, normals RGBA16F, one D32F depth; where each ray lands and
     // its flux, RGBA32F, per colour channel when dispersion may split them.
+    // With the volume caustics, each ray's segment and power too (three more RGBA32F).
     const std::uint64_t channels = hasFeature(create.features, Feature::Dispersion) ? 3 : 1;
-    t.casterMaps = square(s.gridSize) * (16 + 8 + 16 + 8 + 4 + channels * 2 * 16);
+    const bool volume = volumeCausticsOn(create, frame);
+    const std::uint64_t layers = volume ? 5 : 2;
+    t.casterMaps = square(s.gridSize) * (16 + 8 + 16 + 8 + 4 + channels * layers * 16);
+    // The volume caustics' light, summed in RGBA32F at the largest view's size before it is
+    // added to the target.
+    if (volume) {
+      int width = 0, height = 0;
+      for (const ViewMemory& v : views)
+        width = std::max(width, v.width), height = std::max(height, v.height);
+      t.casterMaps += std::uint64_t(width) * std::uint64_t(height) * 16;
+    }
     // The sun's splats and two temporal histories, and one map all the local lights share,
     // RGBA32F.
     t.causticMap =

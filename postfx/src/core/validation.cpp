@@ -181,8 +181,13 @@ Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& 
 }
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (static_cast<std::uint32_t>(desc.features) >= (1u << 11)) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 12)) {
     error = "CreateDesc.features: unknown feature bits";
+    return Result::InvalidArgument;
+  }
+  if (hasFeature(desc.features, Feature::VolumeCaustics) &&
+      !hasFeature(desc.features, Feature::ObjectCaustics)) {
+    error = "CreateDesc.features: VolumeCaustics needs ObjectCaustics (it draws the casters' rays)";
     return Result::InvalidArgument;
   }
   if (!isDepthConvention(desc.depthConvention)) {
@@ -328,13 +333,21 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
     return fail(
         "viewExtinction Host with god rays enabled: a fog after dispatch would attenuate the "
         "shafts a second time (use ViewExtinction::Plugin and fog before dispatch)");
+  const bool volume = hasFeature(create.features, Feature::VolumeCaustics);
+  if (volume && frame.viewExtinction == ViewExtinction::Host &&
+      frame.objectCaustics.settings.volume.enabled)
+    return fail(
+        "viewExtinction Host with objectCaustics.settings.volume enabled: a fog after dispatch "
+        "would attenuate the in-scattered light a second time (use ViewExtinction::Plugin)");
   const Result r = validateCausticsSettings(create, frame.caustics, error);
   if (r != Result::Ok) return r;
   if (hasFeature(create.features, Feature::ReflectedCaustics)) {
     const Result reflected = validateReflectedCaustics(frame.reflectedCaustics, error);
     if (reflected != Result::Ok) return reflected;
   }
-  if (hasFeature(create.features, Feature::GodRays)) return validateGodRays(frame.godRays, error);
+  // The volume caustics scatter with the god rays' phase, fades and reach.
+  if (hasFeature(create.features, Feature::GodRays) || volume)
+    return validateGodRays(frame.godRays, error);
   return Result::Ok;
 }
 

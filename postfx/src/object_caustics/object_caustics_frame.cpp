@@ -191,6 +191,42 @@ ObjectLightFrame fitObjectLightFrame(const FrameDesc& frame) {
   return f;
 }
 
+bool volumeCausticsOn(const CreateDesc& create, const FrameDesc& frame) {
+  const glm::vec3 scattering = frame.water.scattering;
+  return hasFeature(create.features, Feature::VolumeCaustics) &&
+         frame.objectCaustics.settings.volume.enabled && frame.godRays.intensity > 0.0f &&
+         std::max({scattering.r, scattering.g, scattering.b}) > 0.0f &&
+         frame.viewExtinction == ViewExtinction::Plugin;
+}
+
+namespace {
+
+// The volume caustics' constants (postfx_object_caustics_block.h): the god rays' scattering,
+// phase, fades and reach, and what a ray's grid cell measures.
+void fillVolumeConstants(const FrameDesc& frame, const ObjectLightFrame& f, int height,
+                         shared::ObjectCausticsBlock& b) {
+  const ObjectCausticsFrame& objects = frame.objectCaustics;
+  const ObjectCausticsSettings& s = objects.settings;
+  const GodRaySettings& g = frame.godRays;
+  const LocalLight* light = f.local() ? &objects.lights[f.light] : nullptr;
+  const glm::dvec3 scale =
+      light != nullptr ? glm::dvec3(light->intensity) : glm::dvec3(frame.sun.irradiance);
+  const double cell = 2.0 * (light ? f.tanHalfGrid : f.halfGrid) / s.gridSize;
+  b.volumeLight =
+      glm::vec4(glm::vec3(glm::dvec3(frame.water.scattering) * double(g.intensity) * scale),
+                float(cell * cell));
+  const double cosT = std::max(-f.direction.y, 1e-3);
+  b.volumeExtinction = glm::vec4(frame.water.absorption + frame.water.scattering,
+                                 light == nullptr && f.underwater ? float(1.0 / cosT) : 0.0f);
+  b.volumeFade = glm::vec4(g.surfaceFadeDistance, g.depthFadeDistance, g.maxDistance, 1.0f);
+  const double focal = std::abs(frame.camera.projection[1][1]);
+  b.volumePixel =
+      glm::vec4(float(2.0 / (focal * double(height))),
+                s.volume.method == VolumeCausticsMethod::Lines ? 1.0f : 0.0f, 0.0f, 0.0f);
+}
+
+}  // namespace
+
 shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
                                                      const FrameDesc& frame,
                                                      const ObjectLightFrame& f, int width,
@@ -257,6 +293,7 @@ shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
     b.waterAbsorption = glm::vec4(glm::dvec3(frame.water.absorption) / cosT, 0.0);
     b.splatScale = glm::vec4(float(1.0 / texel), kMaxRoughSplatSigma, 0.0f, 0.0f);
   }
+  if (volumeCausticsOn(create, frame)) fillVolumeConstants(frame, f, height, b);
   const bool dispersion = hasFeature(create.features, Feature::Dispersion);
   if (frame.viewExtinction == ViewExtinction::Plugin)
     b.viewExtinction = glm::vec4(frame.water.absorption + frame.water.scattering, 0.0f);

@@ -69,6 +69,11 @@ bool castersInReceiverView(const ObjectCausticsFrame& objects);
 bool castersInReceiverView(const ObjectCausticsFrame& objects, const SunShadowMap& receivers,
                            std::uint64_t casters);
 
+// Whether the volume caustics draw this frame (Feature::VolumeCaustics, the volume's setting on,
+// light to scatter: the god rays' phase and some scattering); the rays' segments are then
+// written and each light's view draws them.
+bool volumeCausticsOn(const CreateDesc& create, const FrameDesc& frame);
+
 // The block of the sun's view, or of a local light's (light.local()).
 shared::ObjectCausticsBlock buildObjectCausticsBlock(const CreateDesc& create,
                                                      const FrameDesc& frame,

@@ -45,7 +45,7 @@ glkit::Texture makeTexture(GLenum format, int size, const char* name) {
 
 }  // namespace
 
-Result ObjectCausticsPass::init(const std::string& defines, int maxLocalLights,
+Result ObjectCausticsPass::init(const std::string& defines, int maxLocalLights, bool volume,
                                 std::string& error) {
   const Result r = buildPrograms(
       defines,
@@ -70,6 +70,29 @@ Result ObjectCausticsPass::init(const std::string& defines, int maxLocalLights,
          {GL_FRAGMENT_SHADER, "postfx/object_caustics/object_caustics_composite.frag"}}}},
       error);
   if (r != Result::Ok) return r;
+  if (volume) {
+    const glkit::ShaderStage vertex{GL_VERTEX_SHADER,
+                                    "postfx/object_caustics/volume_caustics.vert"};
+    const glkit::ShaderStage fragment{GL_FRAGMENT_SHADER,
+                                      "postfx/object_caustics/volume_caustics.frag"};
+    const Result v = buildPrograms(
+        defines,
+        {{volumeBeams_,
+          "postfx.volume_caustics.beams",
+          {vertex, fragment},
+          "#define POSTFX_VOLUME_LINES 0\n"},
+         {volumeLines_,
+          "postfx.volume_caustics.lines",
+          {vertex, fragment},
+          "#define POSTFX_VOLUME_LINES 1\n"},
+         {volumeResolve_,
+          "postfx.volume_caustics.resolve",
+          {kFullScreenVertex,
+           {GL_FRAGMENT_SHADER, "postfx/object_caustics/volume_caustics_resolve.frag"}}}},
+        error);
+    if (v != Result::Ok) return v;
+    volumeFbo_ = glkit::createFramebuffer("postfx.volume_caustics.light");
+  }
   meshVao_ = glkit::createVertexArray("postfx.object_caustics.mesh_vao");
   glEnableVertexArrayAttrib(meshVao_.id(), 0);
   glVertexArrayAttribBinding(meshVao_.id(), 0, 0);
@@ -129,6 +152,16 @@ void ObjectCausticsPass::ensureLandings(int size, int layers) {
   landingLayers_ = layers;
 }
 
+void ObjectCausticsPass::ensureVolumeLight(int width, int height) {
+  if (width == volumeWidth_ && height == volumeHeight_) return;
+  volumeLight_.reset();  // the old size goes first
+  volumeLight_ = glkit::createTexture(GL_TEXTURE_2D, "postfx.volume_caustics.light");
+  glTextureStorage2D(volumeLight_.id(), 1, GL_RGBA32F, width, height);
+  glNamedFramebufferTexture(volumeFbo_.id(), GL_COLOR_ATTACHMENT0, volumeLight_.id(), 0);
+  volumeWidth_ = width;
+  volumeHeight_ = height;
+}
+
 void ObjectCausticsPass::ensureMap(int size) {
   if (size == mapSize_) return;
   for (glkit::Texture* t : {&splatMap_, &history_[0], &history_[1]}) t->reset();
@@ -155,7 +188,11 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectCausticsV
   const ObjectCausticsSettings& s = frame.objectCaustics.settings;
   const shared::ObjectCausticsBlock& block = views.blocks[views.sun ? 0 : 1];
   dispersed_ = block.receiver.w > 0.5f;
-  ensureLandings(s.gridSize, dispersed_ ? 6 : 2);
+  volume_ = views.volume;
+  volumeMethod_ = s.volume.method;
+  // Each channel's landing and flux, then (volume caustics) each one's segment and power.
+  const int channels = dispersed_ ? 3 : 1;
+  ensureLandings(s.gridSize, channels * (volume_ ? 5 : 2));
   ensureGrid(s.gridSize);
   if (views.sun) ensureMap(s.mapSize);
   if (!views.lights.empty()) ensureLightMap(s.mapSize);
@@ -167,6 +204,19 @@ Result ObjectCausticsPass::prepare(const FrameDesc& frame, const ObjectCausticsV
     error = "objectCaustics: the driver could not allocate the caustic map (mapSize " +
             std::to_string(s.mapSize) + ")";
     return Result::OutOfMemory;
+  }
+  if (volume_) {
+    int width = 0, height = 0;
+    for (const ObjectCausticsTarget& target : targets)
+      width = std::max(width, target.rect.width), height = std::max(height, target.rect.height);
+    ensureVolumeLight(width, height);
+    if (glCheckNamedFramebufferStatus(volumeFbo_.id(), GL_DRAW_FRAMEBUFFER) !=
+        GL_FRAMEBUFFER_COMPLETE) {
+      volumeWidth_ = volumeHeight_ = 0;
+      error = "objectCaustics: the driver could not allocate the volume caustics' light (" +
+              std::to_string(width) + "x" + std::to_string(height) + ")";
+      return Result::OutOfMemory;
+    }
   }
   if (glkit::storedWidth(landings_) != s.gridSize) {
     error = "objectCaustics: the driver could not allocate the ray landings (gridSize " +
@@ -373,6 +423,38 @@ void ObjectCausticsPass::composite(const ObjectCausticsTarget& target, GLuint ma
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void ObjectCausticsPass::drawVolume(const ObjectCausticsTarget& target) {
+  // composite() left blending additive. The rays are summed in float at the view's size, then
+  // added to its rectangle of the target.
+  const ValidatedTextures& r = target.rect;
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(volumeFbo_.id(), GL_COLOR, 0, zero);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, volumeFbo_.id());
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(r.width), static_cast<float>(r.height));
+  glBindTextureUnit(POSTFX_UNIT_DEPTH, target.frame->depth.texture);
+  glBindSampler(POSTFX_UNIT_DEPTH, pointSampler_.id());
+  glBindTextureUnit(POSTFX_OBJECT_UNIT_LANDINGS, landings_.id());
+  glBindSampler(POSTFX_OBJECT_UNIT_LANDINGS, pointSampler_.id());
+  glBindVertexArray(emptyVao_.id());
+  const GLsizei rays = gridSize_ * gridSize_;
+  const GLsizei channels = dispersed_ ? 3 : 1;
+  if (volumeMethod_ == VolumeCausticsMethod::Lines) {
+    glLineWidth(1.0f);
+    glUseProgram(volumeLines_.id());
+    glDrawArraysInstanced(GL_LINES, 0, 2 * rays, channels);
+  } else {
+    glUseProgram(volumeBeams_.id());
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * rays, channels);
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_.id());
+  glViewportIndexedf(0, static_cast<float>(r.x), static_cast<float>(r.y),
+                     static_cast<float>(r.width), static_cast<float>(r.height));
+  glBindTextureUnit(POSTFX_OBJECT_UNIT_VOLUME_LIGHT, volumeLight_.id());
+  glBindSampler(POSTFX_OBJECT_UNIT_VOLUME_LIGHT, pointSampler_.id());
+  glUseProgram(volumeResolve_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 void ObjectCausticsPass::finishDraws() {
   glNamedFramebufferTexture(compositeFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
 }
@@ -415,6 +497,7 @@ void ObjectCausticsPass::drawSun(std::span<const ObjectCausticsTarget> targets) 
   for (std::size_t v = 0; v < targets.size(); ++v) {
     bindBlock(static_cast<int>(v * slotsPerView_));
     composite(targets[v], map_.texture, receiverDepth);
+    if (volume_) drawVolume(targets[v]);
   }
 }
 
@@ -432,6 +515,7 @@ void ObjectCausticsPass::drawLight(std::span<const ObjectCausticsTarget> targets
   for (std::size_t v = 0; v < targets.size(); ++v) {
     bindBlock(static_cast<int>(v * slotsPerView_) + k + 1);
     composite(targets[v], lightMap_.id(), receiverDepth);
+    if (volume_) drawVolume(targets[v]);
   }
   lightMapClip_ = localLightMapClip(view);
 }

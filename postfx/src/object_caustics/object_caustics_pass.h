@@ -33,6 +33,7 @@ namespace postfx::detail {
 struct ObjectCausticsViews {
   bool sun = false;
   ObjectLightFrame sunFrame;
+  bool volume = false;  // the volume caustics draw (volumeCausticsOn)
   std::vector<ObjectLightFrame> lights;
   // Camera view v's blocks from v * slotsPerView(): the sun's (slot 0) and light k's (k + 1).
   std::vector<shared::ObjectCausticsBlock> blocks;
@@ -49,7 +50,8 @@ struct ObjectCausticsTarget {
 class ObjectCausticsPass {
  public:
   // maxLocalLights: CreateDesc's; the uniform buffer holds a block for the sun and each light.
-  Result init(const std::string& defines, int maxLocalLights, std::string& error);
+  // volume: Feature::VolumeCaustics (its programs are built).
+  Result init(const std::string& defines, int maxLocalLights, bool volume, std::string& error);
 
   // Sizes the maps, checks every camera view's target, uploads the blocks. GlError with a
   // message when a framebuffer is incomplete. Call under a GlStateGuard.
@@ -60,7 +62,8 @@ class ObjectCausticsPass {
   void setDrawState();
   // Steps 1-3 for the sun's view once, step 4 into every camera view's target; then (each timed
   // on its own) for prepared light k: steps 1 and 2 once and 4 per camera view (a local light's
-  // map is not filtered temporally).
+  // map is not filtered temporally). With the volume caustics, after each view's step 4 the
+  // rays' in-scattered light into the same view.
   void drawSun(std::span<const ObjectCausticsTarget> targets);
   void drawLight(std::span<const ObjectCausticsTarget> targets, int k);
   // After the last draw: lets go of the host's target.
@@ -77,14 +80,23 @@ class ObjectCausticsPass {
   void ensureMap(int size);
   void ensureLightMap(int size);
   void ensureLandings(int size, int layers);
+  void ensureVolumeLight(int width, int height);
   void bindBlock(int slot);
   void drawCasterMaps(const FrameDesc& frame, const ObjectLightFrame& view);
   void traceRays(GLuint receiverDepth);
   void drawSplats(GLuint fbo, int mapSize);
   void filterTemporally(const FrameDesc& frame);
   void composite(const ObjectCausticsTarget& target, GLuint map, GLuint receiverDepth);
+  // The rays' in-scattered light into the target composite() just drew into.
+  void drawVolume(const ObjectCausticsTarget& target);
 
   glkit::Program caster_, trace_, splat_, temporal_, composite_;
+  // Feature::VolumeCaustics only: the rays drawn as beams, and as lines.
+  glkit::Program volumeBeams_, volumeLines_, volumeResolve_;
+  // Their light summed in float at the largest view's size, then added to each view's target.
+  glkit::Texture volumeLight_;
+  glkit::Framebuffer volumeFbo_;
+  int volumeWidth_ = 0, volumeHeight_ = 0;
   glkit::VertexArray meshVao_, emptyVao_;
   glkit::Buffer uniformBuffer_;
   GLintptr blockStride_ = 0;       // bytes between the blocks in uniformBuffer_ (offset alignment)
@@ -107,7 +119,9 @@ class ObjectCausticsPass {
   int gridSize_ = 0, mapSize_ = 0;
   int historyIndex_ = 0;
   bool historyValid_ = false;
-  bool dispersed_ = false;      // a caster is dispersed this frame: three rays per grid cell
+  bool dispersed_ = false;  // a caster is dispersed this frame: three rays per grid cell
+  bool volume_ = false;     // the volume caustics draw this frame
+  VolumeCausticsMethod volumeMethod_ = VolumeCausticsMethod::Beams;
   ObjectCausticMap map_;        // what the last frame published
   ObjectCausticMap placement_;  // this frame's placement (texture filled by draw)
   ObjectLightFrame light_;  // this frame's light-space fit (the casters are drawn relative to it)

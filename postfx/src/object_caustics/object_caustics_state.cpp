@@ -16,6 +16,7 @@ ObjectCausticsStateGuard::ObjectCausticsStateGuard() {
   programPointSize_ = glIsEnabled(GL_PROGRAM_POINT_SIZE);
   polygonOffsetFill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
   stencilTest_ = glIsEnabled(GL_STENCIL_TEST);
+  glGetFloatv(GL_LINE_WIDTH, &lineWidth_);
 }
 
 ObjectCausticsStateGuard::~ObjectCausticsStateGuard() {
@@ -30,6 +31,7 @@ ObjectCausticsStateGuard::~ObjectCausticsStateGuard() {
   restoreEnabled(GL_PROGRAM_POINT_SIZE, programPointSize_);
   restoreEnabled(GL_POLYGON_OFFSET_FILL, polygonOffsetFill_);
   restoreEnabled(GL_STENCIL_TEST, stencilTest_);
+  glLineWidth(lineWidth_);
 }
 
 }  // namespace postfx::detail

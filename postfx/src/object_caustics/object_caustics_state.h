@@ -21,6 +21,7 @@ class ObjectCausticsStateGuard {
   GLboolean primitiveRestart_ = GL_FALSE, primitiveRestartFixed_ = GL_FALSE;
   GLboolean programPointSize_ = GL_FALSE, polygonOffsetFill_ = GL_FALSE;
   GLboolean stencilTest_ = GL_FALSE;
+  GLfloat lineWidth_ = 1.0f;  // the volume caustics' lines
 };
 
 }  // namespace postfx::detail

@@ -170,6 +170,9 @@ Result validateObjectCaustics(const CreateDesc& create, const FrameDesc& frame,
     return fail("objectCaustics.settings.intensity must be in [0, 1e4]");
   if (!inRange(s.temporalWeight, 0.0, 0.95))
     return fail("objectCaustics.settings.temporalWeight must be in [0, 0.95]");
+  if (s.volume.method != VolumeCausticsMethod::Beams &&
+      s.volume.method != VolumeCausticsMethod::Lines)
+    return fail("objectCaustics.settings.volume.method is not a VolumeCausticsMethod");
   if (o.casterCount < 0 || o.casterCount > kMaxCasters)
     return fail("objectCaustics.casterCount must be in [0, " + std::to_string(kMaxCasters) +
                 "], got " + std::to_string(o.casterCount));

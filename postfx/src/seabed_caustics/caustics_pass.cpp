@@ -32,6 +32,7 @@ std::string shaderDefines(const CreateDesc& desc) {
        "\n";
   d += std::string("#define POSTFX_TRIPLANAR_WALLS ") + flag(Feature::TriplanarWalls) + "\n";
   d += std::string("#define POSTFX_LOCAL_WATER ") + flag(Feature::LocalWater) + "\n";
+  d += std::string("#define POSTFX_VOLUME_CAUSTICS ") + flag(Feature::VolumeCaustics) + "\n";
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
   d += "#define POSTFX_CASCADE_SLOTS " + std::to_string(waterCascadeSlots(desc)) + "\n";

@@ -46,6 +46,8 @@
 #define POSTFX_OBJECT_UNIT_SPLAT_RECEIVER_DEPTH 4
 // (the ray trace reads those five too), the splat where the trace found each ray lands,
 #define POSTFX_OBJECT_UNIT_LANDINGS 5
+// The volume caustics' summed light, added to the target (volume_caustics_resolve.frag).
+#define POSTFX_OBJECT_UNIT_VOLUME_LIGHT 6
 // the temporal filter this frame's splats and the filtered history,
 #define POSTFX_OBJECT_UNIT_CURRENT_MAP 0
 #define POSTFX_OBJECT_UNIT_HISTORY_MAP 1

@@ -23,10 +23,24 @@ void main() {
   vec2 centre;
   vec3 flux;
   float sigma;
-  bool lands = traceCell(cell, channel, centre, flux, sigma);
+  RaySegment segment;
+  bool lands = traceCell(cell, channel, centre, flux, sigma, segment);
   // NaN fails every comparison, Inf fails the bound: neither reaches the map.
   lands = lands && all(lessThan(abs(flux), vec3(1e30))) && all(lessThan(abs(centre), vec2(1e30))) &&
           sigma >= u.grid.z && sigma < 1e30;
   imageStore(landings, ivec3(cell, 2 * channel), lands ? vec4(centre, sigma, 1.0) : vec4(0.0));
   imageStore(landings, ivec3(cell, 2 * channel + 1), vec4(lands ? flux : vec3(0.0), 0.0));
+#if POSTFX_VOLUME_CAUSTICS
+  if (u.volumeFade.w > 0.5) {
+    // After every channel's two landing layers: this channel's start, end and power.
+    int base = (u.receiver.w > 0.5 ? 6 : 2) + 3 * channel;
+    bool drawn = lands && all(lessThan(abs(segment.start), vec3(1e30))) &&
+                 all(lessThan(abs(segment.end), vec3(1e30))) &&
+                 all(lessThan(abs(segment.power), vec3(1e30))) &&
+                 all(greaterThanEqual(segment.power, vec3(0.0)));
+    imageStore(landings, ivec3(cell, base), drawn ? vec4(segment.start, 1.0) : vec4(0.0));
+    imageStore(landings, ivec3(cell, base + 1), vec4(drawn ? segment.end : vec3(0.0), 0.0));
+    imageStore(landings, ivec3(cell, base + 2), vec4(drawn ? segment.power : vec3(0.0), 0.0));
+  }
+#endif
 }

@@ -195,13 +195,48 @@ vec3 localLightShare(vec3 entry, vec3 exitPoint, vec3 hit) {
   return vec3(cone * ratio * ratio * ratio / hitDistance2) * exp(-u.lightWater.rgb * wet);
 }
 
+// A ray's straight way through the water from where it leaves the caster to where it lands,
+// and the power it carries along it (the volume caustics'; anchor-relative metres).
+struct RaySegment {
+  vec3 start, end;
+  vec3 power;  // u.volumeLight's units: the light's scale times sigma_s and phase, times m^2 or sr
+};
+
+// The power of a ray carrying `flux` (Fresnel, transmission, tint, the glass's absorption) of
+// its cell, extinguished (sigma_t, as the god rays' sun path) from the water surface (the sun)
+// or the light to where it entered the caster at `entry`.
+vec3 segmentPower(vec3 entry, vec3 flux) {
+  float level = u.cameraOffset.w;
+  if (!localLight()) {
+    float path = max(level - entry.y, 0.0) * u.volumeExtinction.w;
+    return flux * u.volumeLight.rgb * u.volumeLight.w * exp(-u.volumeExtinction.rgb * path);
+  }
+  vec3 light = u.lightPosition.xyz, axis = u.lightDir.xyz;
+  vec3 toEntry = entry - light;
+  float distance = length(toEntry);
+  if (!(distance > 1e-9)) return vec3(0.0);
+  vec3 l = toEntry / distance;
+  // The cell's solid angle: the view's axial one times cos^3 off the axis.
+  float cosRay = max(dot(l, axis), 0.0);
+  float cone = 1.0;
+  if (u.spotAxis.w > 0.5)
+    cone = spotConeFalloff(acos(clamp(dot(l, u.spotAxis.xyz), -1.0, 1.0)), u.spotCone.x,
+                           u.spotCone.y);
+  float wet = submergedLength(distance, light.y - level, entry.y - level);
+  return flux * u.volumeLight.rgb * (u.volumeLight.w * cosRay * cosRay * cosRay * cone) *
+         exp(-u.volumeExtinction.rgb * wet);
+}
+
 // One ray through a grid cell: where it lands (map texels), the flux it carries there and the
-// splat width its roughness asks for (map texels). False: the cell misses the casters, the ray
-// is lost (total internal reflection) or it meets no receiver.
-bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out float sigma) {
+// splat width its roughness asks for (map texels), and its segment through the water. False:
+// the cell misses the casters, the ray is lost (total internal reflection) or it meets no
+// receiver.
+bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out float sigma,
+               out RaySegment segment) {
   centre = vec2(0.0);
   rayFlux = vec3(0.0);
   sigma = u.grid.z;
+  segment = RaySegment(vec3(0.0), vec3(0.0), vec3(0.0));
   vec4 front = texelFetch(frontPosition, cell, 0);
   if (!(front.w > 0.5)) return false;
   int caster = clamp(int(front.w + 0.5) - 1, 0, POSTFX_MAX_CASTERS - 1);
@@ -256,6 +291,7 @@ bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out f
   vec2 uv;
   if (!hitReceiver(origin, ray, iterations, hit) || !viewUv(u.mapClip, hit, uv)) return false;
   rayFlux = flux * channelMask * u.grid.w * localLightShare(front.xyz, origin, hit);
+  segment = RaySegment(origin, hit, segmentPower(front.xyz, flux * channelMask));
   centre = uv * u.grid.y;
   // Roughness: the ray's light spreads over a cone of angular deviation alpha, as wide on the
   // receiver as alpha times the distance travelled (casters.h, CasterMaterial::roughness).

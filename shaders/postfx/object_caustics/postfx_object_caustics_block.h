@@ -57,6 +57,18 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
   // local light, absorbed along its path in the trace instead); w: unused
   vec4 waterAbsorption;
   vec4 viewExtinction;  // rgb: sigma_t along the view ray (1/m), 0 with ViewExtinction::Host
+  // The volume caustics (Feature::VolumeCaustics), filled only when they draw this frame.
+  // rgb: sigma_s * phase (GodRaySettings::intensity) * the light's scale (the sun's irradiance
+  // or the light's intensity); w: a ray's grid cell: its area (m^2, the sun) or its solid angle
+  // on the view's axis (sr, a local light)
+  vec4 volumeLight;
+  // rgb: sigma_t (1/m); w: 1 / cos of the refracted sun's angle from the vertical (0: a local light)
+  vec4 volumeExtinction;
+  // x: god rays' surface fade (m), y: their depth fade (m, 0 none), z: maxDistance (m),
+  // w: 1 when the volume caustics draw this frame (the trace writes the rays' segments)
+  vec4 volumeFade;
+  // x: radians per pixel at the view's centre (vertical); y: 1 = lines, 0 = beams; zw: unused
+  vec4 volumePixel;
   // Per caster i (POSTFX_CASTER_VEC4S vec4s from i * POSTFX_CASTER_VEC4S):
   // [0] x: 0 refractive / 1 reflective, y: IOR relative to the outer medium (green),
   //     z: dispersion half spread of that relative IOR (0: one IOR), w: transmission;
@@ -66,7 +78,7 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
 #ifdef __cplusplus
 };
 static_assert(sizeof(ObjectCausticsBlock) ==
-                  5 * 64 + 18 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
+                  5 * 64 + 22 * 16 + POSTFX_CASTER_VEC4S * POSTFX_MAX_CASTERS * 16,
               "ObjectCausticsBlock must match its std140 layout");
 #else
 }
