@@ -25,7 +25,10 @@ render_all() {
     shift
     n=$((n + 1))
     echo "[$n] $name" >&2
-    "$sample" render "${size[@]}" --out "$dir/$name.exr" "$@" >/dev/null
+    # IDENTICAL_RENDERS_FLAGS: flags every render of this side adds (e.g. a new feature's off
+    # switch, when the side before the change did not have the feature).
+    # shellcheck disable=SC2086
+    "$sample" render "${size[@]}" --out "$dir/$name.exr" "$@" ${IDENTICAL_RENDERS_FLAGS:-} >/dev/null
   }
   for preset in shallow seabed sunward above waterline torch pool wake harbour; do
     run "preset_$preset" --preset "$preset"

@@ -166,6 +166,8 @@ int runReport(const Options& given) {
       volume.grids = {64, 256};
       volume.referenceRaysPerSide = 600;
       volume.timedFrames = 6;
+      volume.costWidth = 640;
+      volume.costHeight = 360;
     }
     info.width = volume.width;
     info.height = volume.height;

@@ -96,6 +96,93 @@ bool measureVolumeRows(const VolumeReportSettings& settings, std::vector<report:
         return false;
     }
   }
+  // The shafts and the cone together: the god rays (the shadow the ball casts in the host's
+  // shadow map included) and the volume caustics as a host draws them, against the god-ray
+  // reference of the same frame plus the traced beams.
+  {
+    std::fprintf(stderr, "report: god-ray reference of the ball's frame (1024 segments)\n");
+    validation::VolumeCausticOptions dense;
+    dense.godRays = true;
+    dense.volume = false;
+    dense.godRayReference = true;
+    validation::VolumeCausticRun shafts;
+    if (!validation::runVolumeCaustic(scene, {}, dense, shafts, error)) return false;
+    std::vector<glm::dvec3> whole(reference.size());
+    for (size_t i = 0; i < whole.size(); ++i) whole[i] = shafts.godRayReference[i] + reference[i];
+    struct Variant {
+      const char* name;
+      postfx::GodRayResolution resolution;
+      int samples;
+    };
+    const Variant variants[] = {
+        {"god rays + volume caustics (beams), quarter res", postfx::GodRayResolution::Quarter, 16},
+        {"god rays + volume caustics (beams), full res", postfx::GodRayResolution::Full, 32}};
+    for (const Variant& v : variants) {
+      std::fprintf(stderr, "report: %s\n", v.name);
+      validation::VolumeCausticOptions on;
+      on.godRays = true;
+      on.godRayResolution = v.resolution;
+      on.godRaySamples = v.samples;
+      on.timedFrames = settings.timedFrames;
+      validation::VolumeCausticRun run;
+      if (!validation::runVolumeCaustic(scene, {}, on, run, error)) return false;
+      const validation::ConeError cone = validation::coneError(run.light, whole, 0.0);
+      report::Row row;
+      row.pass = "volume_caustics_shafts";
+      row.method = v.name;
+      row.setting = std::to_string(v.samples) + " samples";
+      row.medianMs = run.medianMs;
+      row.floorMs = run.floorMs;
+      row.relativeRmse = cone.relativeRmse;
+      row.correlation = cone.correlation;
+      row.width = settings.width;
+      row.height = settings.height;
+      row.note =
+          "whole frame (the shafts, the ball's shadow in them and its cone) against the "
+          "god-ray reference plus the traced beams; time: the object caustics pass, the god "
+          "rays apart";
+      rows.push_back(row);
+    }
+  }
+  // Cost at the users' size: each method with the sun through the ball, then with four point
+  // lights (the same ball, each light's trace and volume timed on its own, summed).
+  if (settings.costWidth <= 0) return true;
+  for (int lights : {0, 4}) {
+    validation::VolumeCausticScene cost =
+        validation::glassSphereInWater(settings.costWidth, settings.costHeight);
+    if (lights > 0) {
+      cost.waterLevel = 100.0;  // the lights under water too
+      cost.pointLightDistance = 6.0;
+      cost.pointLightCount = lights;
+      cost.pointLightIntensity = glm::vec3(36.0f);  // the sun's irradiance at the ball
+    }
+    const std::string what = lights > 0 ? "four point lights" : "the sun";
+    validation::VolumeCausticRun without;
+    if (!validation::runVolumeCaustic(cost, {}, off, without, error)) return false;
+    for (const Method& m : methods) {
+      std::fprintf(stderr, "report: %s, %s, %dx%d\n", m.name, what.c_str(), settings.costWidth,
+                   settings.costHeight);
+      postfx::ObjectCausticsSettings s;
+      s.volume.method = m.method;
+      validation::VolumeCausticOptions on;
+      on.timedFrames = settings.timedFrames;
+      validation::VolumeCausticRun with;
+      if (!validation::runVolumeCaustic(cost, s, on, with, error)) return false;
+      report::Row row;
+      row.pass = "volume_caustics_cost";
+      row.method = std::string(m.name) + ", " + what;
+      row.setting = "grid " + std::to_string(s.gridSize);
+      row.medianMs = with.medianMs;
+      row.floorMs = with.floorMs;
+      row.width = settings.costWidth;
+      row.height = settings.costHeight;
+      char extra[160];
+      std::snprintf(extra, sizeof(extra), "the object caustics without the volume %.3g ms",
+                    without.medianMs);
+      row.note = extra;
+      rows.push_back(row);
+    }
+  }
   return true;
 }
 

@@ -16,6 +16,9 @@ struct VolumeReportSettings {
   std::vector<int> grids{64, 128, 256, 512};
   int referenceRaysPerSide = 1500;  // per seed, two seeds
   int timedFrames = 16;
+  // Cost rows at the size users run (no error: the reference is the 640x360 rows' job): the
+  // default settings with the sun through one caster, and with four point lights.
+  int costWidth = 1280, costHeight = 720;
   // Where the reference's and each method's light at the last grid go (volume_reference.exr,
   // volume_beams.exr, volume_lines.exr, linear RGB); "" writes none.
   std::string imageDir;

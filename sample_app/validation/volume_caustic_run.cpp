@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <deque>
 
+#include <godray_reference.h>
 #include <object_caustics_scene.h>
 #include <volume_caustics_reference.h>
 
@@ -108,8 +109,8 @@ bool runVolumeCaustic(const VolumeCausticScene& scene,
   frame.caustics.model = postfx::CausticsModel::RayDeviation;
   frame.godRays.enabled = options.godRays;
   frame.godRays.intensity = float(scene.phase);
-  frame.godRays.resolution = postfx::GodRayResolution::Full;
-  frame.godRays.sampleCount = 64;
+  frame.godRays.resolution = options.godRayResolution;
+  frame.godRays.sampleCount = options.godRaySamples;
   frame.godRays.gridSpacing = 0.2f;  // 64 samples reach ~13 m: past the wall
   frame.godRays.surfaceFadeDistance = float(scene.surfaceFade);
   frame.godRays.depthFadeDistance = float(scene.depthFade);
@@ -120,23 +121,41 @@ bool runVolumeCaustic(const VolumeCausticScene& scene,
   frame.objectCaustics.settings.volume.enabled = options.volume && settings.volume.enabled;
   if (options.hostExtinction) frame.viewExtinction = postfx::ViewExtinction::Host;
 
-  // A point light above the sphere: its receivers the floor seen from it.
-  std::optional<reference::LightReceiverMap> lightReceivers;
-  postfx::LocalLight light;
-  if (scene.pointLightDistance > 0.0) {
+  // Point lights above the sphere: each one's receivers the floor seen from it.
+  std::deque<reference::LightReceiverMap> lightReceivers;
+  std::vector<postfx::LocalLight> lights;
+  const int lightCount = scene.pointLightDistance > 0.0 ? std::max(scene.pointLightCount, 1) : 0;
+  for (int k = 0; k < lightCount; ++k) {
+    const double tilt = lightCount > 1 ? 10.0 * kPi / 180.0 : 0.0, turn = 0.5 * kPi * k;
+    const glm::dvec3 up(std::sin(tilt) * std::cos(turn), std::cos(tilt),
+                        std::sin(tilt) * std::sin(turn));
+    postfx::LocalLight light;
     light.type = postfx::LocalLightType::Point;
-    light.position = scene.sphere.centre + glm::dvec3(0.0, scene.pointLightDistance, 0.0);
+    light.position = scene.sphere.centre + up * scene.pointLightDistance;
     light.intensity = scene.pointLightIntensity;
     light.range = 1e6;
-    lightReceivers.emplace(light.position, glm::dvec3(0.0, -1.0, 0.0), 60.0, scene.planeY, 1024,
-                           1000.0);
-    light.receivers = lightReceivers->desc();
-    create.maxLocalLights = 1;
-    frame.objectCaustics.lights = &light;
-    frame.objectCaustics.lightCount = 1;
+    lightReceivers.emplace_back(light.position, -up, 60.0, scene.planeY, 1024, 1000.0);
+    light.receivers = lightReceivers.back().desc();
+    lights.push_back(light);
+  }
+  if (lightCount > 0) {
+    create.maxLocalLights = lightCount;
+    frame.objectCaustics.lights = lights.data();
+    frame.objectCaustics.lightCount = lightCount;
     frame.objectCaustics.sunCaustics = false;
   }
   const ReportTarget target(scene.width, scene.height);
+  if (options.godRays && options.godRayReference) {
+    frame.target = {target.texture(), GL_RGBA32F};
+    reference::GodRayInputs inputs;
+    if (!reference::captureGodRayInputs(create, frame, inputs, error)) {
+      glDeleteTextures(1, &flat);
+      return false;
+    }
+    reference::GodRayReferenceOptions march;
+    march.samples = 1024;
+    out.godRayReference = reference::renderGodRayReference(create, frame, inputs, march);
+  }
   bool ok = true;
   if (options.timedFrames <= 0) {
     postfx::Context* context = nullptr;
@@ -157,7 +176,11 @@ bool runVolumeCaustic(const VolumeCausticScene& scene,
     ok = runPass(create, frame, postfx::Pass::ObjectCaustics, target, options.timedFrames, run,
                  error);
     if (ok) {
-      out.medianMs = lightReceivers ? run.stats.objectLight(0).medianMs : run.medianMs;
+      out.medianMs = run.medianMs;
+      if (lightCount > 0) {
+        out.medianMs = 0.0;
+        for (int k = 0; k < lightCount; ++k) out.medianMs += run.stats.objectLight(k).medianMs;
+      }
       out.floorMs = run.floorMs;
       out.light.resize(run.image.size());
       for (size_t i = 0; i < run.image.size(); ++i)
@@ -210,7 +233,7 @@ ConeError coneError(const std::vector<glm::dvec3>& image, const std::vector<glm:
   double sa = 0, sr = 0, saa = 0, srr = 0, sar = 0, err = 0;
   for (size_t i = 0; i < reference.size(); ++i) {
     const double r = reference[i].g, a = image[i].g;
-    if (!(r >= cut) || !(cut > 0.0)) continue;
+    if (threshold > 0.0 && (!(r >= cut) || !(cut > 0.0))) continue;
     ++e.pixels;
     sa += a;
     sr += r;

@@ -25,8 +25,10 @@ struct VolumeCausticScene {
   double phase = 1.0 / (4.0 * 3.14159265358979323846);  // GodRaySettings::intensity
   double surfaceFade = 2.0, depthFade = 40.0;           // GodRaySettings' fades (m)
   // A point light straight above the sphere's centre, this far from it (m), instead of the sun
-  // (ObjectCausticsFrame::sunCaustics off); 0: the sun.
+  // (ObjectCausticsFrame::sunCaustics off); 0: the sun. pointLightCount > 1: that many, each
+  // tilted 10 degrees from the vertical, a quarter turn apart.
   double pointLightDistance = 0.0;
+  int pointLightCount = 1;
   glm::vec3 pointLightIntensity{1.0f};
   int width = 640, height = 360;
 };
@@ -43,12 +45,20 @@ struct VolumeCausticOptions {
   bool godRays = false;
   bool shadowless = false;
   bool hostExtinction = false;  // FrameDesc::viewExtinction = Host (refused with the volume on)
-  int timedFrames = 0;          // 0: one dispatch, untimed
+  // With godRays: the god-ray reference of the same frame too (a dense double-precision march of
+  // the shafts, ocean::reference::renderGodRayReference, 1024 segments per pixel) into
+  // VolumeCausticRun::godRayReference.
+  bool godRayReference = false;
+  postfx::GodRayResolution godRayResolution = postfx::GodRayResolution::Full;
+  int godRaySamples = 64;
+  int timedFrames = 0;  // 0: one dispatch, untimed
 };
 
 struct VolumeCausticRun {
-  std::vector<glm::dvec3> light;         // what the frame added, per pixel, GL order
-  double medianMs = 0.0, floorMs = 0.0;  // Pass::ObjectCaustics and the floor
+  std::vector<glm::dvec3> light;            // what the frame added, per pixel, GL order
+  std::vector<glm::dvec3> godRayReference;  // VolumeCausticOptions::godRayReference
+  // Pass::ObjectCaustics (with point lights: the sum of their own timings) and the floor
+  double medianMs = 0.0, floorMs = 0.0;
 };
 
 bool runVolumeCaustic(const VolumeCausticScene& scene,
@@ -61,7 +71,8 @@ std::vector<glm::dvec3> volumeCausticReference(const VolumeCausticScene& scene, 
                                                unsigned seed = 0, bool progress = true);
 
 // The plugin's volume light against the reference's inside the cone: the pixels where the
-// reference's green channel is at least `threshold` of its 99th percentile.
+// reference's green channel is at least `threshold` of its 99th percentile (every pixel for a
+// threshold of 0).
 struct ConeError {
   double relativeRmse = 0.0;  // sqrt(sum (a - r)^2 / sum r^2) over those pixels, green
   double fluxRatio = 0.0;     // sum a / sum r over those pixels

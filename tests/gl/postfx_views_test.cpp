@@ -168,6 +168,74 @@ TEST_F(PostfxViewsTest, ObjectCausticsSharedMapsMatchOwnContexts) {
   }
 }
 
+// Volume caustics in a split screen: the rays are traced once, each view draws them through its
+// own camera into its own viewport (their light summed at the view's size, then added at its
+// offset); each half matches a context of its own, bit for bit.
+TEST_F(PostfxViewsTest, VolumeCausticsSplitScreenHalvesMatchOwnContexts) {
+  using namespace postfxtest;
+  SceneSpec a = ObjectHost::defaultSpec();
+  a.width = 64;
+  a.height = 72;
+  SceneSpec b = a;
+  b.camera = {3.0, 3.0, 3.0};
+  b.lookDirection = {-0.6, -0.7, -0.6};
+  SceneSpec wide = a;
+  wide.width = 128;
+  const glm::dvec3 sun = sunAt(20.0, 30.0);
+  ObjectHost hostA(sun, 4.0, a), hostB(sun, 4.0, b), split(sun, 4.0, wide);
+  for (auto [from, x] : {std::pair{&hostA.scene, 0}, std::pair{&hostB.scene, 64}})
+    for (auto [src, dst] :
+         {std::pair{from->depth, split.scene.depth}, std::pair{from->normal, split.scene.normal},
+          std::pair{from->albedo, split.scene.albedo}})
+      glCopyImageSubData(src, GL_TEXTURE_2D, 0, 0, 0, 0, dst, GL_TEXTURE_2D, 0, x, 0, 0, 64, 72, 1);
+  const GlMesh mesh = makeSphereMesh(1.0, 32, 16);
+  const postfx::CasterMesh caster =
+      mesh.caster(translation({0.2, 1.5, 0.1}), postfx::CasterMaterial{});
+  postfx::ObjectCausticsSettings settings = sizedSettings(128, 256);
+  // The ball and its cone under the water.
+  auto underWater = [](postfx::FrameDesc f) {
+    f.water.level = 10.0;
+    return f;
+  };
+  const postfx::Feature volume = postfx::Feature::VolumeCaustics;
+  auto multi = makeObjectContext(volume), ownA = makeObjectContext(volume),
+       ownB = makeObjectContext(volume);
+  ViewPtr va = makeView(*multi), vb = makeView(*multi);
+  for (const ObjectHost* h : {&hostA, &hostB, &split}) h->scene.clearTarget(glm::vec4(0.0f));
+  const postfx::FrameDesc shared = underWater(split.frame(&caster, 1, settings));
+  postfx::ViewDesc views[] = {viewOf(va.get(), split.scene), viewOf(vb.get(), split.scene)};
+  views[0].camera = viewOf(nullptr, hostA.scene).camera;
+  views[1].camera = viewOf(nullptr, hostB.scene).camera;
+  views[0].viewport = {0, 0, 64, 72};
+  views[1].viewport = {64, 0, 64, 72};
+  ASSERT_EQ(postfx::dispatch(*multi, shared, views, 2), postfx::Result::Ok)
+      << postfx::lastError(multi.get());
+  ASSERT_EQ(postfx::dispatch(*ownA, underWater(hostA.frame(&caster, 1, settings))),
+            postfx::Result::Ok)
+      << postfx::lastError(ownA.get());
+  ASSERT_EQ(postfx::dispatch(*ownB, underWater(hostB.frame(&caster, 1, settings))),
+            postfx::Result::Ok);
+  const std::vector<glm::vec4> image = target(split.scene), imageA = target(hostA.scene),
+                               imageB = target(hostB.scene);
+  int differing = 0;
+  for (int y = 0; y < 72; ++y)
+    for (int x = 0; x < 64; ++x) {
+      differing += image[size_t(y * 128 + x)] != imageA[size_t(y * 64 + x)];
+      differing += image[size_t(y * 128 + 64 + x)] != imageB[size_t(y * 64 + x)];
+    }
+  EXPECT_EQ(differing, 0) << "pixels of the split target differ from the whole targets'";
+  // The volume drew into both views: without it each view's light is less.
+  settings.volume.enabled = false;
+  hostA.scene.clearTarget(glm::vec4(0.0f));
+  hostB.scene.clearTarget(glm::vec4(0.0f));
+  ASSERT_EQ(postfx::dispatch(*ownA, underWater(hostA.frame(&caster, 1, settings))),
+            postfx::Result::Ok);
+  ASSERT_EQ(postfx::dispatch(*ownB, underWater(hostB.frame(&caster, 1, settings))),
+            postfx::Result::Ok);
+  EXPECT_GT(added(imageA), added(target(hostA.scene)));
+  EXPECT_GT(added(imageB), added(target(hostB.scene)));
+}
+
 // A view's image does not change when another view is added, moved far away or removed.
 TEST_F(PostfxViewsTest, AnotherViewNeverChangesAView) {
   Scene a(seabedSpec({0.0, -2.0, 0.0}, {0.0, -0.6, -1.0}));
