@@ -1,5 +1,7 @@
 #include "godray_reference.h"
 
+#include "godray_participation.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -38,17 +40,6 @@ glm::dvec3 waterNormal(glm::dvec2 slopes) {
   const double sx = std::abs(slopes.x) <= kMaxSlope ? slopes.x : 0.0;
   const double sz = std::abs(slopes.y) <= kMaxSlope ? slopes.y : 0.0;
   return glm::normalize(glm::dvec3(-sx, 1.0, -sz));
-}
-
-double participation(double depthBelow, double surfaceFade, double depthFade) {
-  if (!(depthBelow > 0.0)) return 0.0;
-  double rho = 1.0;
-  if (surfaceFade > 0.0) {
-    const double t = std::clamp(depthBelow / surfaceFade, 0.0, 1.0);
-    rho = t * t * (3.0 - 2.0 * t);
-  }
-  if (depthFade > 0.0) rho *= std::exp(-depthBelow / depthFade);
-  return rho;
 }
 
 bool isSky(double depth, int convention) {
@@ -135,7 +126,7 @@ Frame foldFrame(const postfx::CreateDesc& create, const postfx::FrameDesc& f,
 // S(t) of the header's model at world point p, t metres from the camera (per channel).
 glm::dvec3 source(const Frame& f, const GodRayInputs& in, const glm::dvec3& p, double t) {
   const double depthBelow = f.level - p.y;
-  double rho = participation(depthBelow, f.surfaceFade, f.depthFade);
+  double rho = godRayParticipation(depthBelow, f.surfaceFade, f.depthFade);
   if (!(rho > 0.0)) return glm::dvec3(0.0);
   if (f.shadow) {
     const glm::dvec4 clip = f.lightClip * glm::dvec4(p + f.towardShadowLight * f.shadowBias, 1.0);

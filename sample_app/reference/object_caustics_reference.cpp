@@ -109,29 +109,18 @@ CausticReference traceOneIor(const SphereCaster& s, const glm::dvec3& towardSun,
   const glm::dvec3 weight = s.transmission * s.tint;
   const TraceFn fn = [&s, planeY, alpha, weight](const glm::dvec3& o, const glm::dvec3& d,
                                                  std::mt19937_64& rng) -> std::optional<Landing> {
-    const glm::dvec3 oc = o - s.centre;
-    const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
-    const double disc = b * b - c;
-    if (disc <= 0.0) return std::nullopt;
-    const glm::dvec3 p1 = o + d * (-b - std::sqrt(disc));
-    const glm::dvec3 n1 = (p1 - s.centre) / s.radius;
-    Landing none{p1, glm::dvec3(0.0)};
-    const double t1 = 1.0 - fresnel(-glm::dot(d, n1), s.ior);
+    const std::optional<SphereCrossing> x = crossSphere(s.centre, s.radius, s.ior, o, d);
+    if (!x) return std::nullopt;
+    Landing none{x->entry, glm::dvec3(0.0)};
+    const double t1 = x->entryTransmittance;
     if (s.thinWalled) {
-      const std::optional<glm::dvec3> hit = landOnPlane(p1, roughen(d, alpha, rng), planeY);
+      const std::optional<glm::dvec3> hit = landOnPlane(x->entry, roughen(d, alpha, rng), planeY);
       if (!hit) return none;
       return Landing{*hit, t1 * t1 * weight};
     }
-    const std::optional<glm::dvec3> in = refractRay(d, n1, 1.0 / s.ior);
-    if (!in) return none;
-    const double chord = -2.0 * glm::dot(p1 - s.centre, *in);
-    const glm::dvec3 p2 = p1 + *in * chord;
-    const glm::dvec3 n2 = (p2 - s.centre) / s.radius;
-    const std::optional<glm::dvec3> outRay = refractRay(*in, -n2, s.ior);
-    if (!outRay) return none;  // total internal reflection (never for a sphere)
-    const double t2 = 1.0 - fresnel(glm::dot(*in, n2), 1.0 / s.ior);
-    const std::optional<glm::dvec3> hit =
-        landOnPlane(p2, roughen(glm::normalize(*outRay), alpha, rng), planeY);
+    if (!x->refracted) return none;
+    const double t2 = x->exitTransmittance, chord = x->chord;
+    const std::optional<glm::dvec3> hit = landOnPlane(x->exit, roughen(x->out, alpha, rng), planeY);
     if (!hit) return none;
     return Landing{*hit, t1 * t2 * weight * glm::exp(-s.absorption * chord)};
   };

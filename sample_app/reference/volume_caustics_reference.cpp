@@ -8,22 +8,11 @@
 #include <random>
 #include <thread>
 
+#include "godray_participation.h"
 #include "object_caustics_optics.h"
 
 namespace ocean::reference {
 namespace {
-
-// The god rays' fade with depth (postfx_godrays.h, godRayParticipation), in double.
-double participation(double depthBelow, double surfaceFade, double depthFade) {
-  if (!(depthBelow > 0.0)) return 0.0;
-  double rho = 1.0;
-  if (surfaceFade > 0.0) {
-    const double t = std::clamp(depthBelow / surfaceFade, 0.0, 1.0);
-    rho = t * t * (3.0 - 2.0 * t);
-  }
-  if (depthFade > 0.0) rho *= std::exp(-depthBelow / depthFade);
-  return rho;
-}
 
 // Metres of the straight way from height ya to height yb (relative to the level) under water.
 double submerged(double length, double ya, double yb) {
@@ -33,32 +22,20 @@ double submerged(double length, double ya, double yb) {
 
 struct Segment {
   glm::dvec3 start, end, power;
+  glm::dvec3 entry;  // where the ray entered the sphere
 };
 
 // One ray `d` from `o` through the sphere to the floor; nothing when it misses either.
 std::optional<Segment> traceRay(const SphereCaster& s, const glm::dvec3& o, const glm::dvec3& d,
                                 double planeY) {
-  const glm::dvec3 oc = o - s.centre;
-  const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
-  const double disc = b * b - c;
-  if (disc <= 0.0) return std::nullopt;
-  const glm::dvec3 p1 = o + d * (-b - std::sqrt(disc));
-  const glm::dvec3 n1 = (p1 - s.centre) / s.radius;
-  const double t1 = 1.0 - fresnel(-glm::dot(d, n1), s.ior);
-  const std::optional<glm::dvec3> in = refractRay(d, n1, 1.0 / s.ior);
-  if (!in) return std::nullopt;
-  const double chord = -2.0 * glm::dot(p1 - s.centre, *in);
-  const glm::dvec3 p2 = p1 + *in * chord;
-  const glm::dvec3 n2 = (p2 - s.centre) / s.radius;
-  const std::optional<glm::dvec3> out = refractRay(*in, -n2, s.ior);
-  if (!out) return std::nullopt;
-  const double t2 = 1.0 - fresnel(glm::dot(*in, n2), 1.0 / s.ior);
-  const glm::dvec3 dir = glm::normalize(*out);
-  if (!(dir.y < -1e-12)) return std::nullopt;
-  const double t = (planeY - p2.y) / dir.y;
+  const std::optional<SphereCrossing> x = crossSphere(s.centre, s.radius, s.ior, o, d);
+  if (!x || !x->refracted || !(x->out.y < -1e-12)) return std::nullopt;
+  const double t = (planeY - x->exit.y) / x->out.y;
   if (!(t > 0.0)) return std::nullopt;
-  return Segment{p2, p2 + dir * t,
-                 t1 * t2 * s.transmission * s.tint * glm::exp(-s.absorption * chord)};
+  return Segment{x->exit, x->exit + x->out * t,
+                 x->entryTransmittance * x->exitTransmittance * s.transmission * s.tint *
+                     glm::exp(-s.absorption * x->chord),
+                 x->entry};
 }
 
 }  // namespace
@@ -98,13 +75,8 @@ std::vector<glm::dvec3> renderVolumeCausticReference(const SphereCaster& sphere,
         const glm::dvec3 o = start + right * a + up * b;
         const std::optional<Segment> seg = traceRay(sphere, o, d, planeY);
         if (!seg) continue;
-        // Where the ray entered the sphere: the light's water path from the surface to it.
-        const glm::dvec3 oc = o - sphere.centre;
-        const double bb = glm::dot(oc, d);
-        const glm::dvec3 entry =
-            o + d * (-bb - std::sqrt(std::max(
-                               bb * bb - glm::dot(oc, oc) + sphere.radius * sphere.radius, 0.0)));
-        const double toEntry = std::max(m.waterLevel - entry.y, 0.0) / cosT;
+        // The light's water path from the surface to where the ray entered the sphere.
+        const double toEntry = std::max(m.waterLevel - seg->entry.y, 0.0) / cosT;
         const glm::dvec3 power = seg->power * m.sunIrradiance * (cell * cell) *
                                  glm::exp(-m.sigmaT * toEntry) * m.sigmaS * m.phase;
         const glm::dvec3 along = seg->end - seg->start;
@@ -120,7 +92,7 @@ std::vector<glm::dvec3> renderVolumeCausticReference(const SphereCaster& sphere,
           const double qa = s + 0.5 * ds;
           s += ds;
           const double depthBelow = m.waterLevel - q.y;
-          const double rho = participation(depthBelow, m.surfaceFade, m.depthFade);
+          const double rho = godRayParticipation(depthBelow, m.surfaceFade, m.depthFade);
           if (!(rho > 0.0)) continue;
           const glm::dvec3 rel = q - cam.position;
           const glm::dvec3 v = worldToView * rel;
