@@ -196,8 +196,9 @@ TEST_F(PostfxFuzzTest, EveryFrameIsRefusedCleanlyOrDrawnFinite) {
        1, 1},
       {"forward [-1,1], xyz UNORM: caustics + object caustics + floor",
        Feature::Caustics | Feature::ObjectCaustics | postfx::testing::BenchmarkFloor, 2, 2},
-      {"reverse-Z, xyz: object caustics (dispersed glass) + god rays",
-       Feature::ObjectCaustics | Feature::GodRays | Feature::Dispersion, 0, 1},
+      {"reverse-Z, xyz: object caustics (dispersed glass) + their volume + god rays",
+       Feature::ObjectCaustics | Feature::VolumeCaustics | Feature::GodRays | Feature::Dispersion,
+       0, 1},
   };
   Rng rng(kSeed);
   Outcome outcomes[kGroupCount];
