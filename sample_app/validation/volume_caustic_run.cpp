@@ -83,6 +83,7 @@ bool runVolumeCaustic(const VolumeCausticScene& scene,
   create.depthConvention = postfx::DepthConvention::ReverseZ;
   create.normalEncoding = postfx::NormalEncoding::WorldXyz;
   create.waterTexture = postfx::WaterTextureType::Single2D;
+  create.memoryBudgetMiB = options.memoryBudgetMiB;
   GLuint flat = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &flat);
   glTextureStorage2D(flat, 1, GL_RG32F, 1, 1);

@@ -49,6 +49,7 @@ struct VolumeCausticOptions {
   // the shafts, ocean::reference::renderGodRayReference, 1024 segments per pixel) into
   // VolumeCausticRun::godRayReference.
   bool godRayReference = false;
+  int memoryBudgetMiB = 1024;  // CreateDesc::memoryBudgetMiB
   postfx::GodRayResolution godRayResolution = postfx::GodRayResolution::Full;
   int godRaySamples = 64;
   int timedFrames = 0;  // 0: one dispatch, untimed

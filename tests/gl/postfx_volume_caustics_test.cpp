@@ -266,6 +266,22 @@ TEST_F(PostfxVolumeCausticsTest, BadInputIsRefusedByName) {
   EXPECT_TRUE(ocean::validation::runVolumeCaustic(scene, {}, off, run, error)) << error;
 }
 
+TEST_F(PostfxVolumeCausticsTest, ItsMemoryCountsAgainstTheBudget) {
+  // At 640x360 and the default grid and map the object caustics need 17.3 MiB; the volume adds
+  // 48 bytes per ray (3 MiB) and a float texture of the view (3.5 MiB). A 20 MiB budget holds
+  // the first (18 MiB) and refuses the second (24 MiB) up front.
+  const VolumeCausticScene scene = ocean::validation::glassSphereInWater(640, 360);
+  VolumeCausticOptions tight;
+  tight.memoryBudgetMiB = 20;
+  VolumeCausticRun run;
+  std::string error;
+  EXPECT_FALSE(ocean::validation::runVolumeCaustic(scene, {}, tight, run, error));
+  EXPECT_NE(error.find("needs 24 MiB"), std::string::npos) << error;
+  tight.volume = false;
+  error.clear();
+  EXPECT_TRUE(ocean::validation::runVolumeCaustic(scene, {}, tight, run, error)) << error;
+}
+
 TEST_F(PostfxVolumeCausticsTest, ExtremeViewsStayFiniteAndBounded) {
   // The camera inside the cone at its focus, looking along it and across it; a sun at grazing
   // incidence; a ball touching the surface; no scattering at all.
