@@ -292,10 +292,19 @@ TEST_F(PostfxHostileStateTest, AnyHostStateGivesTheSameImageAndIsRestored) {
   settings.gridSize = 128;
   settings.mapSize = 256;
   const postfx::FrameDesc objectFrame = host.frame(&caster, 1, settings);
+  // Their volume caustics under the water: instanced quads (beams) and GL lines into a float
+  // texture, then added to the target.
+  auto volume = makeObjectContext(postfx::Feature::VolumeCaustics);
+  postfx::FrameDesc beamsFrame = host.frame(&caster, 1, settings);
+  beamsFrame.water.level = 10.0;
+  postfx::FrameDesc linesFrame = beamsFrame;
+  linesFrame.objectCaustics.settings.volume.method = postfx::VolumeCausticsMethod::Lines;
 
   const Case cases[] = {{"seabed + god rays (half)", full.get(), &seabed, seabedFrame},
                         {"physical + god rays (full)", physical.get(), &seabed, physicalFrame},
-                        {"object caustics", objects.get(), &host.scene, objectFrame}};
+                        {"object caustics", objects.get(), &host.scene, objectFrame},
+                        {"volume caustics (beams)", volume.get(), &host.scene, beamsFrame},
+                        {"volume caustics (lines)", volume.get(), &host.scene, linesFrame}};
   std::vector<Output> clean;
   for (const Case& c : cases) {
     clean.push_back(run(c));
