@@ -217,11 +217,19 @@ TEST_F(PostfxViewsTest, VolumeCausticsSplitScreenHalvesMatchOwnContexts) {
             postfx::Result::Ok);
   const std::vector<glm::vec4> image = target(split.scene), imageA = target(hostA.scene),
                                imageB = target(hostB.scene);
+  // Bit for bit, but for light below 1e-30: the object caustic map's farthest splat tails are
+  // denormal floats, which llvmpipe's threads flush or keep differently from run to run (seen
+  // at 1e-35 .. 1e-40 on the receivers of these views; the volume's own sum is cut at 1e-30).
+  auto flushed = [](glm::vec4 p) {
+    for (int c = 0; c < 4; ++c)
+      if (std::abs(p[c]) < 1e-30f) p[c] = 0.0f;
+    return p;
+  };
   int differing = 0;
   for (int y = 0; y < 72; ++y)
     for (int x = 0; x < 64; ++x) {
-      differing += image[size_t(y * 128 + x)] != imageA[size_t(y * 64 + x)];
-      differing += image[size_t(y * 128 + 64 + x)] != imageB[size_t(y * 64 + x)];
+      differing += flushed(image[size_t(y * 128 + x)]) != flushed(imageA[size_t(y * 64 + x)]);
+      differing += flushed(image[size_t(y * 128 + 64 + x)]) != flushed(imageB[size_t(y * 64 + x)]);
     }
   EXPECT_EQ(differing, 0) << "pixels of the split target differ from the whole targets'";
   // The volume drew into both views: without it each view's light is less.

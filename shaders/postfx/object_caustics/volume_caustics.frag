@@ -28,6 +28,7 @@ flat in float lineSlant;
 layout(location = 0) out vec4 outLight;
 
 const float kInvSqrtTwoPi = 0.39894228;
+const float kWithinThreeSigma = 0.99730020;  // erf(3 / sqrt 2): the 1D Gaussian within 3 sigma
 
 void main() {
   vec2 uv = gl_FragCoord.xy * u.viewport.xy;  // gl_FragCoord: in the view
@@ -73,7 +74,11 @@ void main() {
   // The pixel's own footprint as a box's variance (w^2 / 12) keeps a beam narrower than a pixel
   // from aliasing.
   float variance = nx * nx + ny * ny + footprint * footprint * (1.0 / 12.0);
-  float kernel = kInvSqrtTwoPi * inversesqrt(variance) * exp(-0.5 * b2 / variance);
+  // Cut at 3 sigma (the quad's reach), the rest of the Gaussian's weight given back: far tails
+  // would reach denormals, which a CPU rasteriser's threads round differently.
+  if (!(b2 <= 9.0 * variance)) discard;
+  float kernel = (kInvSqrtTwoPi / kWithinThreeSigma) * inversesqrt(variance) *
+                 exp(-0.5 * b2 / variance);
 #endif
   float level = cameraRelativeLevel();
   float depthBelow = level - onRay.y;
@@ -83,6 +88,7 @@ void main() {
   float viewPath = submergedViewLength(t, depthBelow, level);
   vec3 light = beamPower * (kernel * rho * inversesqrt(sin2)) *
                exp(-u.volumeExtinction.rgb * lightPath - u.viewExtinction.rgb * viewPath);
-  if (!(all(lessThan(light, vec3(1e30))) && light.r + light.g + light.b > 0.0)) discard;
+  // Nothing below 1e-30 (denormal products, as above); NaN and Inf never reach the sum.
+  if (!(all(lessThan(light, vec3(1e30))) && light.r + light.g + light.b > 1e-30)) discard;
   outLight = vec4(light, 0.0);
 }
