@@ -169,30 +169,52 @@ bool rayChannel(int channel, float spread, out vec3 mask, out float etaOffset) {
   return true;
 }
 
+// A local light's way to where a ray enters the caster: its unit direction (l), length, the
+// cosine off the view's axis, the spot's cone and how much of it lies under the water. Computed
+// once per ray for both what lands (localLightShare) and what scatters (segmentPower).
+struct LightPath {
+  bool valid;  // false for the sun, or a ray entering at the light itself
+  vec3 l;
+  float distance, cosRay, cone, wet;
+};
+
+LightPath lightPathTo(vec3 entry) {
+  LightPath p = LightPath(false, vec3(0.0), 0.0, 0.0, 0.0, 0.0);
+  if (!localLight()) return p;
+  vec3 light = u.lightPosition.xyz;
+  vec3 toEntry = entry - light;
+  p.distance = length(toEntry);
+  if (!(p.distance > 1e-9)) return p;
+  p.valid = true;
+  p.l = toEntry / p.distance;
+  p.cosRay = dot(p.l, u.lightDir.xyz);
+  p.cone = 1.0;
+  if (u.spotAxis.w > 0.5)
+    p.cone = spotConeFalloff(acos(clamp(dot(p.l, u.spotAxis.xyz), -1.0, 1.0)), u.spotCone.x,
+                             u.spotCone.y);
+  float level = u.cameraOffset.w;  // water level, anchor-relative
+  p.wet = submergedLength(p.distance, light.y - level, entry.y - level);
+  return p;
+}
+
 // What a local light's ray carries relative to the sun's normalisation (u.grid.w, the ray's
 // cell over a map texel), from where it enters the caster to where it lands: the cell's solid
 // angle over that of the map texel it lands in (cos^3 off the view's axis for each), the inverse
 // square of the distance it lands at (the map holds irradiance per unit intensity, on a surface
 // facing the light), the spot's cone, and Beer-Lambert along its path under water outside the
 // caster. 0 where that is undefined (a landing at the light or beside its view).
-vec3 localLightShare(vec3 entry, vec3 exitPoint, vec3 hit) {
+vec3 localLightShare(LightPath path, vec3 exitPoint, vec3 hit) {
   if (!localLight()) return vec3(1.0);
-  vec3 light = u.lightPosition.xyz, axis = u.lightDir.xyz;
-  vec3 toEntry = entry - light, toHit = hit - light;
-  float entryDistance = length(toEntry), hitDistance2 = dot(toHit, toHit);
-  if (!(entryDistance > 1e-9 && hitDistance2 > 1e-18)) return vec3(0.0);
-  vec3 l = toEntry / entryDistance;
-  float cosRay = dot(l, axis), cosHit = dot(toHit, axis) * inversesqrt(hitDistance2);
+  vec3 toHit = hit - u.lightPosition.xyz;
+  float hitDistance2 = dot(toHit, toHit);
+  if (!(path.valid && hitDistance2 > 1e-18)) return vec3(0.0);
+  float cosHit = dot(toHit, u.lightDir.xyz) * inversesqrt(hitDistance2);
   if (!(cosHit > 1e-4)) return vec3(0.0);
-  float ratio = cosRay / cosHit;
-  float cone = 1.0;
-  if (u.spotAxis.w > 0.5)
-    cone = spotConeFalloff(acos(clamp(dot(l, u.spotAxis.xyz), -1.0, 1.0)), u.spotCone.x,
-                           u.spotCone.y);
-  float level = u.cameraOffset.w;  // water level, anchor-relative
-  float wet = submergedLength(entryDistance, light.y - level, entry.y - level) +
-              submergedLength(length(hit - exitPoint), exitPoint.y - level, hit.y - level);
-  return vec3(cone * ratio * ratio * ratio / hitDistance2) * exp(-u.lightWater.rgb * wet);
+  float ratio = path.cosRay / cosHit;
+  float level = u.cameraOffset.w;
+  float wet =
+      path.wet + submergedLength(length(hit - exitPoint), exitPoint.y - level, hit.y - level);
+  return vec3(path.cone * ratio * ratio * ratio / hitDistance2) * exp(-u.lightWater.rgb * wet);
 }
 
 // A ray's straight way through the water from where it leaves the caster to where it lands,
@@ -204,27 +226,17 @@ struct RaySegment {
 
 // The power of a ray carrying `flux` (Fresnel, transmission, tint, the glass's absorption) of
 // its cell, extinguished (sigma_t, as the god rays' sun path) from the water surface (the sun)
-// or the light to where it entered the caster at `entry`.
-vec3 segmentPower(vec3 entry, vec3 flux) {
-  float level = u.cameraOffset.w;
+// or the light (`path`) to where it entered the caster at `entry`.
+vec3 segmentPower(LightPath path, vec3 entry, vec3 flux) {
   if (!localLight()) {
-    float path = max(level - entry.y, 0.0) * u.volumeExtinction.w;
-    return flux * u.volumeLight.rgb * u.volumeLight.w * exp(-u.volumeExtinction.rgb * path);
+    float depth = max(u.cameraOffset.w - entry.y, 0.0) * u.volumeExtinction.w;
+    return flux * u.volumeLight.rgb * u.volumeLight.w * exp(-u.volumeExtinction.rgb * depth);
   }
-  vec3 light = u.lightPosition.xyz, axis = u.lightDir.xyz;
-  vec3 toEntry = entry - light;
-  float distance = length(toEntry);
-  if (!(distance > 1e-9)) return vec3(0.0);
-  vec3 l = toEntry / distance;
+  if (!path.valid) return vec3(0.0);
   // The cell's solid angle: the view's axial one times cos^3 off the axis.
-  float cosRay = max(dot(l, axis), 0.0);
-  float cone = 1.0;
-  if (u.spotAxis.w > 0.5)
-    cone = spotConeFalloff(acos(clamp(dot(l, u.spotAxis.xyz), -1.0, 1.0)), u.spotCone.x,
-                           u.spotCone.y);
-  float wet = submergedLength(distance, light.y - level, entry.y - level);
-  return flux * u.volumeLight.rgb * (u.volumeLight.w * cosRay * cosRay * cosRay * cone) *
-         exp(-u.volumeExtinction.rgb * wet);
+  float cosRay = max(path.cosRay, 0.0);
+  return flux * u.volumeLight.rgb * (u.volumeLight.w * cosRay * cosRay * cosRay * path.cone) *
+         exp(-u.volumeExtinction.rgb * path.wet);
 }
 
 // One ray through a grid cell: where it lands (map texels), the flux it carries there and the
@@ -290,8 +302,9 @@ bool traceCell(ivec2 cell, int channel, out vec2 centre, out vec3 rayFlux, out f
   vec3 hit;
   vec2 uv;
   if (!hitReceiver(origin, ray, iterations, hit) || !viewUv(u.mapClip, hit, uv)) return false;
-  rayFlux = flux * channelMask * u.grid.w * localLightShare(front.xyz, origin, hit);
-  segment = RaySegment(origin, hit, segmentPower(front.xyz, flux * channelMask));
+  LightPath path = lightPathTo(front.xyz);
+  rayFlux = flux * channelMask * u.grid.w * localLightShare(path, origin, hit);
+  segment = RaySegment(origin, hit, segmentPower(path, front.xyz, flux * channelMask));
   centre = uv * u.grid.y;
   // Roughness: the ray's light spreads over a cone of angular deviation alpha, as wide on the
   // receiver as alpha times the distance travelled (casters.h, CasterMaterial::roughness).

@@ -62,7 +62,8 @@ layout(std140, binding = POSTFX_OBJECT_CAUSTICS_BLOCK_BINDING) uniform ObjectCau
   // or the light's intensity); w: a ray's grid cell: its area (m^2, the sun) or its solid angle
   // on the view's axis (sr, a local light)
   vec4 volumeLight;
-  // rgb: sigma_t (1/m); w: 1 / cos of the refracted sun's angle from the vertical (0: a local light)
+  // rgb: sigma_t (1/m); w: 1 / cos of the refracted sun's angle from the vertical (0: a local
+  // light)
   vec4 volumeExtinction;
   // x: god rays' surface fade (m), y: their depth fade (m, 0 none), z: maxDistance (m),
   // w: 1 when the volume caustics draw this frame (the trace writes the rays' segments)
