@@ -22,6 +22,12 @@ postfx_add_test(postfx_gl_tests
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
 
+postfx_add_test(postfx_work_account_tests
+  SOURCES gl/postfx_work_account_test.cpp
+  LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy
+  GL)
+target_include_directories(postfx_work_account_tests PRIVATE ${_postfx_private})
+
 postfx_add_test(postfx_reflected_caustics_tests
   SOURCES gl/postfx_reflected_caustics_test.cpp
   LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy

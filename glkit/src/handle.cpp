@@ -45,4 +45,10 @@ Query createQuery(GLenum target) {
   return Query(query);
 }
 
+Query genQuery() {
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  return Query(query);
+}
+
 }  // namespace glkit

@@ -25,7 +25,8 @@ std::string infoLog(GLuint object, bool isProgram) {
 }  // namespace
 
 Program buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStage> stages,
-                     std::string_view defines, std::string_view label, std::string& error) {
+                     std::string_view defines, std::string_view label, std::string& error,
+                     const SourceFilter& filter) {
   std::vector<GLuint> shaders;
   auto cleanup = [&shaders] {
     for (GLuint shader : shaders) glDeleteShader(shader);
@@ -36,6 +37,7 @@ Program buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderS
       cleanup();
       return Program();
     }
+    if (filter) filter(stage.type, source);
     const GLuint shader = glCreateShader(stage.type);
     shaders.push_back(shader);
     const char* text = source.c_str();

@@ -66,5 +66,8 @@ VertexArray createVertexArray(std::string_view label);
 // Immutable storage of `bytes` (glNamedBufferStorage), `data` may be null.
 Buffer createBuffer(GLsizeiptr bytes, const void* data, GLbitfield flags, std::string_view label);
 Query createQuery(GLenum target);
+// A query name whose object (and target) glBeginQuery makes: for targets some drivers
+// glCreateQueries refuses (Mesa 22's, the pipeline statistics of ARB_pipeline_statistics_query).
+Query genQuery();
 
 }  // namespace glkit

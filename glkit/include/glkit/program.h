@@ -2,6 +2,7 @@
 // Compiling and linking GL programs from a ShaderLibrary, with #defines chosen at creation.
 #include <epoxy/gl.h>
 
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -23,10 +24,15 @@ class Program : public Handle<GLuint, deleteProgram> {
   GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
 };
 
+// Rewrites one stage's preprocessed source before it is compiled (instrumentation).
+using SourceFilter = std::function<void(GLenum stage, std::string& source)>;
+
 // Builds a program; on failure returns an empty Program (nothing allocated) and sets `error` to
-// the compiler or linker log. `label` names the program for debuggers.
+// the compiler or linker log. `label` names the program for debuggers; `filter`, when given,
+// rewrites each stage's source first.
 Program buildProgram(const ShaderLibrary& library, std::initializer_list<ShaderStage> stages,
-                     std::string_view defines, std::string_view label, std::string& error);
+                     std::string_view defines, std::string_view label, std::string& error,
+                     const SourceFilter& filter = {});
 
 // Labels a GL object for debuggers (KHR_debug); a no-op for empty labels.
 void label(GLenum identifier, GLuint name, std::string_view text);

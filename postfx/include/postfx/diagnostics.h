@@ -9,6 +9,7 @@
 namespace postfx {
 
 struct Context;
+struct View;
 
 inline constexpr int kTimerRingDepth = 4;      // frames of timestamp pairs in flight
 inline constexpr int kTimerMedianWindow = 64;  // resolved frames the median is taken over
@@ -37,12 +38,58 @@ inline constexpr int kPassCount = 8;
 // Stable snake_case name, e.g. "god_rays" for Pass::GodRays; "unknown" outside the enum.
 const char* toString(Pass pass) noexcept;
 
+// The work account (CreateDesc::workAccount): what a pass asked of the GPU in a frame, in counts
+// that do not depend on the machine, for a cost model to turn into time on any GPU class
+// (docs/gpu_cost.md). Where each figure came from, as bits of WorkCounts::sources:
+enum WorkSource : std::uint32_t {
+  // vertices, primitives, fragments, computeInvocations: the driver's pipeline statistics
+  // (GL_ARB_pipeline_statistics_query, core in GL 4.6). Without them vertices and compute
+  // invocations are counted from the draw and dispatch sizes, primitives and fragments read 0.
+  kWorkFromPipelineStatistics = 1u << 0,
+  kWorkFromSamplesPassed = 1u << 1,  // samplesPassed, blendedSamples: GL_SAMPLES_PASSED
+  // Invocations, fetches and atomics counted in the shaders (testing::CountShaderWork): exact,
+  // but the frame's timings then include the counting.
+  kWorkCounted = 1u << 2,
+};
+
+// One draw, dispatch or clear's work in a frame, or the sum of a pass's.
+struct WorkCounts {
+  std::uint64_t draws = 0, dispatches = 0, clears = 0;  // GL calls
+  std::uint64_t vertices = 0;                           // vertex shader invocations
+  std::uint64_t primitivesSubmitted = 0;                // primitives the draws made
+  std::uint64_t primitives = 0;                         // primitives rasterised (after clipping)
+  // Fragment shader invocations. The driver's: a GPU counts each fragment shaded; Mesa's llvmpipe
+  // counts 16 for every 4x4 block a primitive touches. Counted: fragments shaded, helper lanes
+  // of 2x2 quads excluded.
+  std::uint64_t fragments = 0;
+  std::uint64_t computeInvocations = 0;
+  std::uint64_t samplesPassed = 0;   // fragments written (not discarded, depth test passed)
+  std::uint64_t blendedSamples = 0;  // of those, blended into their target (read and written)
+  // Texture and image reads (texture, textureLod, texelFetch, textureGather, imageLoad: one
+  // each, whatever the filter) and atomic operations: each shader's stated count per invocation
+  // on its full path (docs/gpu_cost.md; a test holds it to the counted one) times the driver's
+  // invocations, or counted.
+  std::uint64_t fetches = 0;
+  std::uint64_t fragmentFetches = 0;  // of those, the fragment stage's (2x2 quads repeat them)
+  std::uint64_t atomics = 0;
+  // Memory moved at least once: each texture and buffer read or written (size x format; the
+  // host's G-buffer and target within the view's rectangle), render targets per sample written
+  // (twice when blended), clears.
+  std::uint64_t bytesRead = 0, bytesWritten = 0;
+  std::uint32_t sources = 0;  // WorkSource bits
+};
+// Adds every count of `w` to `sum` (sources OR-ed): a pass's steps, or a frame's passes.
+WorkCounts& operator+=(WorkCounts& sum, const WorkCounts& w) noexcept;
+
 struct PassStats {
   bool present = false;       // the context has this pass (its feature was given at create())
   double lastMs = 0.0;        // GPU time of the most recent resolved frame; 0 when skipped
   double medianMs = 0.0;      // median over the last kTimerMedianWindow resolved frames
   bool skipped = false;       // the most recent resolved frame skipped this pass (nothing to do)
   std::uint32_t samples = 0;  // resolved frames in the median window (skipped ones count as 0 ms)
+  // With CreateDesc::workAccount: the sum of the pass's steps (workSteps) in the most recent
+  // resolved frame; all 0 without it, or when skipped.
+  WorkCounts work;
 };
 
 // Why a local light (ObjectCausticsFrame::lights) made no object caustics in a frame.
@@ -89,6 +136,34 @@ struct FrameStats {
 
 // Per-pass GPU timings, updated by each dispatch() from queries that have completed.
 const FrameStats& stats(const Context& context) noexcept;
+
+// One step of the work account: a draw, dispatch or clear of one of the plugin's programs.
+struct WorkStep {
+  const char* name = "";  // stable "<pass>.<step>", e.g. "god_rays.march" (docs/gpu_cost.md)
+  Pass pass = Pass::Caustics;
+  int light = -1;        // ObjectCausticsFrame::lights index of a local light's step, else -1
+  int targetBytes = 0;   // bytes per sample of the render targets it writes, 0 for none
+  bool blended = false;  // its render targets are blended (read-modify-write)
+  // Its GL program (labelled "postfx.<...>", glGetObjectLabel), 0 for a clear: its shaders'
+  // arithmetic is the driver's to report (docs/gpu_cost.md reads it from Mesa's NIR).
+  GlName program = 0;
+  // The shaders' stated fetches and atomics per invocation (docs/gpu_cost.md) times the step's
+  // invocations; statedBound: a data-dependent loop (a march, a blur the data sizes) stated at
+  // its longest. Counted (testing::CountShaderWork), work holds what they really did.
+  std::uint64_t statedFetches = 0, statedAtomics = 0;
+  bool statedBound = false;
+  WorkCounts work;
+};
+struct WorkSteps {
+  const WorkStep* steps = nullptr;
+  int count = 0;
+};
+// The steps of the most recent resolved frame, in the order they ran: the shared passes'
+// (TileIrradiance, LocalWater, ObjectCaustics, the lights) then the default view's for a
+// context, a view's own (postfx/views.h) for a view. Empty without CreateDesc::workAccount.
+// Valid until the next call on the context.
+WorkSteps workSteps(const Context& context) noexcept;
+WorkSteps workSteps(const View& view) noexcept;
 
 // The message of the last failed call on `context`, or, for null, of the last failed create()
 // on this thread: one sentence naming the field, its value and the accepted range or formats.

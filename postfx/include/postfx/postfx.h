@@ -65,6 +65,7 @@ enum class Feature : std::uint32_t {
   // Feature::ObjectCaustics; reads the god rays' phase, fades and maxDistance (GodRaySettings,
   // validated with this feature even without Feature::GodRays).
   VolumeCaustics = 1u << 11,
+  // 1u << 12: a testing hook, postfx/testing.h.
   // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
   PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
 };
@@ -116,6 +117,10 @@ struct CreateDesc {  // fixed for the context's life
   // per-light timers. A light runs the sun's own programs with its own block, so no shader is
   // compiled per light and 0 (default) costs nothing. Read only with Feature::ObjectCaustics.
   int maxLocalLights = 0;
+  // The work account (postfx/diagnostics.h: PassStats::work, workSteps()): each draw and
+  // dispatch counted by the driver's pipeline-statistics and samples-passed queries, read back
+  // with the timings, never waited for. Off by default: five queries per draw or dispatch.
+  bool workAccount = false;
 };
 
 struct Context;  // opaque

@@ -17,6 +17,11 @@ namespace postfx::testing {
 //    timed pass (glFinish): never in a shipping frame.
 inline constexpr Feature RawCausticOutput = static_cast<Feature>(1u << 5);
 inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
+// With CreateDesc::workAccount: every program counts its own invocations, texture fetches and
+// atomics, so that the work account's are exact (WorkSource::kWorkCounted), and each draw or
+// dispatch's counters are read back at once (the GPU is waited for: never in a shipping frame;
+// the frame's timings then include the counting). Without workAccount it does nothing.
+inline constexpr Feature CountShaderWork = static_cast<Feature>(1u << 12);
 
 // With RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last dispatched
 // target holding omega * (n.l) * shadow * fade (mean of R,G,B): the caustic factor with N.L,

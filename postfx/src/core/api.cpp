@@ -28,6 +28,15 @@ void mergeStats(Context& context) {
   const FrameStats& own = context.defaultView.timers.stats();
   for (int p = 0; p < kPassCount; ++p)
     if (detail::isViewPass(Pass(p))) merged.passes[p] = own.passes[p];
+  if (!context.desc.workAccount) return;
+  std::vector<WorkStep>& steps = context.mergedSteps;
+  try {
+    steps = context.timers.work().steps();
+    const std::vector<WorkStep>& view = context.defaultView.timers.work().steps();
+    steps.insert(steps.end(), view.begin(), view.end());
+  } catch (const std::bad_alloc&) {
+    steps.clear();  // the account is a diagnostic: never a reason to fail the host's frame
+  }
 }
 
 // A call on `context` (named `call` in its messages): the error cleared, a current GL context
@@ -115,7 +124,8 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     for (int p = 0; p < kPassCount; ++p) shared[p] = present[p] && !detail::isViewPass(Pass(p));
     context->timers.init(
         shared, hasFeature(desc.features, Feature::ObjectCaustics) ? desc.maxLocalLights : 0);
-    detail::initView(context->defaultView, present);
+    context->timers.initWork(desc.workAccount, hasFeature(desc.features, testing::CountShaderWork));
+    detail::initView(context->defaultView, desc, present);
     mergeStats(*context);
     out = context.release();
     return Result::Ok;
@@ -172,7 +182,7 @@ Result createView(Context& context, View*& out) noexcept {
   out = nullptr;
   return guarded(context, "createView", [&] {
     auto view = std::make_unique<View>();
-    detail::initView(*view, context.present);
+    detail::initView(*view, context.desc, context.present);
     context.views.push_back(std::move(view));
     out = context.views.back().get();
     return Result::Ok;
@@ -196,6 +206,15 @@ const FrameStats& stats(const View& view) noexcept {
 
 const FrameStats& stats(const Context& context) noexcept {
   return context.mergedStats;
+}
+
+WorkSteps workSteps(const Context& context) noexcept {
+  return {context.mergedSteps.data(), static_cast<int>(context.mergedSteps.size())};
+}
+
+WorkSteps workSteps(const View& view) noexcept {
+  const std::vector<WorkStep>& steps = view.timers.work().steps();
+  return {steps.data(), static_cast<int>(steps.size())};
 }
 
 ObjectCausticMap objectCausticMap(const Context& context) noexcept {

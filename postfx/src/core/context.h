@@ -43,6 +43,7 @@ struct Context {
   std::vector<std::unique_ptr<View>> views;  // createView()'s, alive
   // stats(context): the shared passes' timings with the default view's, merged when asked.
   mutable FrameStats mergedStats;
+  std::vector<WorkStep> mergedSteps;  // workSteps(context): the shared steps, then the view's
   std::string error;
 };
 

@@ -297,6 +297,7 @@ class TimedFrame {
 template <typename Work>
 void timedPass(GpuTimers& timers, bool floor, Pass pass, const char* group, Work&& work) {
   DebugGroup debugGroup(group);
+  WorkScope account(timers.work(), pass);
   if (floor) glFinish();
   timers.begin(pass);
   work();
@@ -350,14 +351,14 @@ void recordView(Context& context, ViewWork& w, const SharedWork& s, bool& tileDr
               [&] { context.caustics.drawCaustics(w.tile.caustics); });
   if (plan.godRays) {
     timedPass(timers, plan.floor, Pass::GodRays, "postfx.god_rays",
-              [&] { context.godRays.draw(w.frame, w.tile.godRays); });
+              [&] { context.godRays.draw(w.frame, w.tile.godRays, context.caustics.inputs()); });
   }
   if (plan.reflected) {
     // Its field samples the water through the seabed state's units; its light reads that
     // state's block and G-buffer.
     context.caustics.bindState(w.frame, w.textures, 0);
     timedPass(timers, plan.floor, Pass::ReflectedCaustics, "postfx.reflected_caustics",
-              [&] { context.reflected.draw(w.frame, w.textures); });
+              [&] { context.reflected.draw(w.frame, w.textures, context.caustics.inputs()); });
   }
   held.release();  // this view is done with its target
 }
@@ -416,6 +417,7 @@ void record(Context& context, std::span<ViewWork> work, SharedWork& s, HeldTarge
     // A local light's: timed in its own slot of the light timers.
     const int light = plan.lights[static_cast<std::size_t>(k)];
     DebugGroup debugGroup("postfx.object_caustics_light");
+    WorkScope account(context.timers.work(), Pass::ObjectCaustics, light);
     if (floor) glFinish();
     context.timers.beginLight(light);
     context.objectCaustics.drawLight(s.targets, k);

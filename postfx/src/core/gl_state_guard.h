@@ -44,9 +44,10 @@ class GlStateGuard {
   std::array<glkit::IndexedBufferBinding, kUniformBindings> uniformIndexed_{};
   GLint queryBuffer_ = 0;
   // SSBO bindings 0 (the irradiance pass's clamp count, the tile irradiance's accumulators), 1
-  // and 2 (the tile irradiance's spread: its blur buffer and slope statistics).
+  // and 2 (the tile irradiance's spread: its blur buffer and slope statistics), 3 (the counting
+  // shaders' counters, testing::CountShaderWork).
   GLint storageBuffer_ = 0;
-  static constexpr int kStorageBindings = 3;
+  static constexpr int kStorageBindings = 4;
   std::array<glkit::IndexedBufferBinding, kStorageBindings> storageIndexed_{};
   // The tile irradiance's resolve writes through image unit 0.
   struct ImageUnitState {

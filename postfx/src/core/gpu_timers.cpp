@@ -21,6 +21,7 @@ void GpuTimers::init(const std::array<bool, kPassCount>& present, int lights) {
 
 bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
   // All of a frame or none of it, so "last" always describes one frame.
+  if (!work_.available(slotIndex)) return false;
   for (int p = 0; p < kTimerCount; ++p) {
     const bool elapsed = slot.state[p] == SlotState::IssuedElapsed;
     if (!elapsed && slot.state[p] != SlotState::IssuedTimestamps) continue;
@@ -44,6 +45,7 @@ bool GpuTimers::tryResolve(Slot& slot, int slotIndex) {
       record(p, 0.0, true);
     }
   }
+  if (work_.enabled()) work_.resolve(slotIndex, stats_);
   ++stats_.framesResolved;
   return true;
 }
@@ -76,12 +78,14 @@ void GpuTimers::beginFrame() {
   // The ring is full of pending frames: give up on the oldest rather than wait for it.
   if (frame_ - oldest_ >= static_cast<std::uint64_t>(kTimerRingDepth)) {
     slots_[oldest_ % kTimerRingDepth].open = false;
+    work_.drop(static_cast<int>(oldest_ % kTimerRingDepth));
     ++oldest_;
     ++stats_.framesDropped;
   }
   Slot& slot = slots_[frame_ % kTimerRingDepth];
   slot.state.fill(SlotState::Empty);
   slot.open = true;
+  work_.beginFrame(static_cast<int>(frame_ % kTimerRingDepth));
 }
 
 void GpuTimers::begin(Pass pass) {

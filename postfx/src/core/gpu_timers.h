@@ -14,6 +14,8 @@
 #include <glkit/handle.h>
 #include <postfx/diagnostics.h>
 
+#include "core/work_account.h"
+
 namespace postfx::detail {
 
 class GpuTimers {
@@ -21,6 +23,10 @@ class GpuTimers {
   // Creates the query objects of the passes the context has, and of its first `lights` local
   // lights (DSA, no binding changes).
   void init(const std::array<bool, kPassCount>& present, int lights = 0);
+  // The work account of these timers' passes (CreateDesc::workAccount), read back with them.
+  void initWork(bool enabled, bool counted) { work_.init(enabled, counted); }
+  WorkLedger& work() { return work_; }
+  const WorkLedger& work() const { return work_; }
 
   // Reads every completed frame in order, then opens a slot for this frame. Binds
   // GL_QUERY_BUFFER to 0 while reading (so results land in client memory): call under a guard.
@@ -69,6 +75,7 @@ class GpuTimers {
   bool elapsedActive_ = false;
   std::array<Slot, kTimerRingDepth> slots_{};
   std::array<History, kTimerCount> history_{};
+  WorkLedger work_;
   std::uint64_t frame_ = 0;   // frames begun
   std::uint64_t oldest_ = 0;  // oldest frame not yet resolved or dropped
   FrameStats stats_;

@@ -35,8 +35,9 @@ constexpr bool isViewPass(Pass pass) {
          pass == Pass::GodRays || pass == Pass::ReflectedCaustics;
 }
 
-// Creates the view's timers for the passes the context has (`present`, indexed by Pass).
-void initView(View& view, const std::array<bool, kPassCount>& present);
+// Creates the view's timers (and work account) for the passes the context has (`present`,
+// indexed by Pass).
+void initView(View& view, const CreateDesc& desc, const std::array<bool, kPassCount>& present);
 
 }  // namespace detail
 }  // namespace postfx

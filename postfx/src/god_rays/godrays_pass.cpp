@@ -8,6 +8,8 @@
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 #include "core/shader_library.h"
+#include "seabed_caustics/caustics_pass.h"
+#include "seabed_caustics/lookup_work.h"
 
 namespace postfx::detail {
 Result GodRaysPass::init(const std::string& defines, std::string& error) {
@@ -97,14 +99,34 @@ Result GodRaysPass::prepare(const FrameDesc& frame, const ValidatedTextures& tex
   return Result::Ok;
 }
 
-void GodRaysPass::draw(const FrameDesc& frame, int tileVariant) {
+// godrays.frag on its full path (a ray that takes all sampleCount samples): the pixel's depth,
+// then per sample the shadow map, the seabed model's lookups at one projection
+// (lookup_work.h) and the local water's.
+StageWork GodRaysPass::marchWork(const FrameDesc& frame, int tileVariant,
+                                 const SeabedInputs& in) const {
+  int perSample = (in.shadow != 0 ? kShadowFetches : 0) + in.localFetches;
+  if (tileVariant == 0) {
+    perSample += waterSlopeFetches(in.cascades, 1) + (in.war ? kWindowFetches : 0);
+  } else {
+    const int index = (tileVariant - 1) % kTileVariants;
+    const bool physical = tileVariant - 1 >= kTileVariants;
+    perSample +=
+        tileIrradianceFetches(index % kTileMasks, index / kTileMasks + 1, in.cascades, in.slots) +
+        (physical ? kWindowFetches : 0);
+  }
+  return {1.0 + double(frame.godRays.sampleCount) * perSample, 0.0};
+}
+
+void GodRaysPass::draw(const FrameDesc& frame, int tileVariant, const SeabedInputs& inputs) {
+  const Step march{
+      "god_rays.march", {}, marchWork(frame, tileVariant, inputs), inputs.traffic(false)};
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_GODRAYS_BLOCK_BINDING, uniformBuffer_.id());
   const GLuint full = tileVariant > 0 ? tileFull_[tileVariant - 1].id() : full_.id();
   const GLuint reduced = tileVariant > 0 ? tileReduced_[tileVariant - 1].id() : reduced_.id();
   if (frame.godRays.resolution == GodRayResolution::Full) {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
     glUseProgram(full);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    work::drawArrays(march, GL_TRIANGLES, 0, 3);
     return;
   }
   // March at reduced size, unblended: every texel is written (light and distance).
@@ -113,7 +135,7 @@ void GodRaysPass::draw(const FrameDesc& frame, int tileVariant) {
                      static_cast<float>(view_->reducedHeight));
   glDisablei(GL_BLEND, 0);
   glUseProgram(reduced);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  work::drawArrays(march, GL_TRIANGLES, 0, 3);
   // Upsample, added into the view's rectangle of the target.
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glViewportIndexedf(0, static_cast<float>(viewport_[0]), static_cast<float>(viewport_[1]),
@@ -122,7 +144,13 @@ void GodRaysPass::draw(const FrameDesc& frame, int tileVariant) {
   glBindTextureUnit(POSTFX_UNIT_GODRAYS_REDUCED, view_->reduced.id());
   glBindSampler(POSTFX_UNIT_GODRAYS_REDUCED, reducedSampler_.id());
   glUseProgram(upsample_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // godrays_upsample.frag: the pixel's depth and two gathers of the reduced march.
+  work::drawArrays(
+      {"god_rays.upsample",
+       {},
+       {3.0, 0.0},
+       {Traffic::readLevel0(inputs.depth, inputs.share), Traffic::read(view_->reduced.id())}},
+      GL_TRIANGLES, 0, 3);
 }
 
 void GodRaysPass::finish() {

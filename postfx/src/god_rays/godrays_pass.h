@@ -15,10 +15,12 @@
 #include <postfx/postfx.h>
 
 #include "core/shared_math.h"
+#include "core/work_account.h"
 
 namespace postfx::detail {
 
 struct ValidatedTextures;
+struct SeabedInputs;
 
 // What one view (postfx/views.h) owns of the god-ray pass: its reduced-resolution march texture
 // (GodRaySettings::resolution below Full, its viewport's size divided, allocated on first use).
@@ -47,12 +49,14 @@ class GodRaysPass {
   // block; `view` and the rectangle are drawn with until the next prepare.
   Result prepare(const FrameDesc& frame, const ValidatedTextures& textures,
                  const shared::GodRaysBlock& block, GodRaysViewTextures& view, std::string& error);
-  // tileVariant: 0 for the RayDeviation march, else ensureTileProgram's.
-  void draw(const FrameDesc& frame, int tileVariant = 0);
+  // tileVariant: 0 for the RayDeviation march, else ensureTileProgram's. `inputs`: what the
+  // caustics pass's state bound (for the work account).
+  void draw(const FrameDesc& frame, int tileVariant, const SeabedInputs& inputs);
   void finish();  // lets go of the host's texture
 
  private:
   void ensureReduced(int width, int height, GodRaysViewTextures& view);
+  StageWork marchWork(const FrameDesc& frame, int tileVariant, const SeabedInputs& in) const;
 
   std::string defines_;
   glkit::Program full_, reduced_, upsample_;

@@ -9,6 +9,7 @@
 #include "core/host_target.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
 #include "object_caustics/object_caustics_state.h"
 
 namespace postfx::detail {
@@ -290,6 +291,8 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame, const ObjectLigh
   glBindVertexArray(meshVao_.id());
   const GLuint program = caster_.id();
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  // Two RGBA32F maps and a 32-bit depth per side.
+  const std::uint64_t mapBytes = std::uint64_t(gridSize_) * gridSize_ * (16 + 16 + 4);
   for (int side = 0; side < 2; ++side) {
     const bool back = side == 1;
     const GLuint fbo = back ? backFbo_.id() : frontFbo_.id();
@@ -297,6 +300,7 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame, const ObjectLigh
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clearDepth);
+    work::noteClear("object_caustics.caster_maps_clear", mapBytes);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
     glDepthFunc(back ? GL_GREATER : GL_LESS);
     glProgramUniform1i(program, kBackFaces, back ? 1 : 0);
@@ -323,14 +327,25 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame, const ObjectLigh
       } else {
         glDisableVertexArrayAttrib(meshVao_.id(), 1);
       }
+      // object_caustics_caster.vert / .frag: the mesh's attributes, no fetches.
+      const std::uint64_t indexBytes = m.indexBuffer == 0                                      ? 0
+                                       : static_cast<GLenum>(m.indexType) == GL_UNSIGNED_INT   ? 4
+                                       : static_cast<GLenum>(m.indexType) == GL_UNSIGNED_SHORT ? 2
+                                                                                               : 1;
+      const Step casterStep{"object_caustics.caster_maps",
+                            {},
+                            {},
+                            {Traffic::readBytes(std::uint64_t(m.vertexCount) * m.stride +
+                                                std::uint64_t(m.indexCount) * indexBytes)}};
       if (m.indexBuffer != 0) {
         glVertexArrayElementBuffer(meshVao_.id(), m.indexBuffer);
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.indexCount),
-                       static_cast<GLenum>(m.indexType),
-                       reinterpret_cast<const void*>(static_cast<std::intptr_t>(m.indexOffset)));
+        work::drawElements(
+            casterStep, GL_TRIANGLES, static_cast<GLsizei>(m.indexCount),
+            static_cast<GLenum>(m.indexType),
+            reinterpret_cast<const void*>(static_cast<std::intptr_t>(m.indexOffset)));
       } else {
         glVertexArrayElementBuffer(meshVao_.id(), 0);
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m.vertexCount));
+        work::drawArrays(casterStep, GL_TRIANGLES, 0, static_cast<GLsizei>(m.vertexCount));
       }
     }
   }
@@ -341,7 +356,7 @@ void ObjectCausticsPass::drawCasterMaps(const FrameDesc& frame, const ObjectLigh
   glDepthMask(GL_FALSE);
 }
 
-void ObjectCausticsPass::traceRays(GLuint receiverDepth) {
+void ObjectCausticsPass::traceRays(GLuint receiverDepth, int iterations) {
   const GLuint textures[] = {frontPosition_.id(), frontNormal_.id(), backPosition_.id(),
                              backNormal_.id(), receiverDepth};
   glBindTextures(POSTFX_OBJECT_UNIT_FRONT_POSITION, 5, textures);
@@ -352,14 +367,26 @@ void ObjectCausticsPass::traceRays(GLuint receiverDepth) {
                      GL_RGBA32F);
   glUseProgram(trace_.id());
   const GLuint rays = static_cast<GLuint>(gridSize_) * static_cast<GLuint>(gridSize_);
-  // One invocation per cell and colour channel (three when a caster is dispersed this frame).
-  glDispatchCompute((rays + 63) / 64, dispersed_ ? 3 : 1, 1);
+  // object_caustics_trace.comp per ray on its full path (through a glass caster onto a
+  // receiver): its cell's front position and normal, the back surface's 2 x 2 positions and
+  // normals (8) at the entry, at each of `iterations` probes and at the exit, the receiver depth
+  // at the entry, each probe and the landing. Data-dependent: a ray that misses the casters
+  // reads one texel, a mirror's skips the back.
+  const double fetches = 2.0 + 8.0 * (iterations + 2) + (iterations + 2);
+  const std::uint64_t casterBytes = std::uint64_t(gridSize_) * gridSize_ * 16 * 4;
+  work::dispatchCompute({"object_caustics.trace",
+                         {},
+                         {fetches, 0.0, true},
+                         {Traffic::readBytes(casterBytes), Traffic::read(receiverDepth),
+                          Traffic::write(landings_.id())}},
+                        (rays + 63) / 64, dispersed_ ? 3 : 1, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void ObjectCausticsPass::drawSplats(GLuint fbo, int mapSize) {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+  work::noteClear("object_caustics.map_clear", std::uint64_t(mapSize) * mapSize * 16);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
   const float size = static_cast<float>(mapSize);
   glViewportIndexedf(0, 0.0f, 0.0f, size, size);
@@ -373,7 +400,14 @@ void ObjectCausticsPass::drawSplats(GLuint fbo, int mapSize) {
   glUseProgram(splat_.id());
   // A dispersed caster needs one ray per colour channel: three instances, the shader drops the
   // extra rays of the others. Without dispersion the draw is the single grid it always was.
-  glDrawArraysInstanced(GL_POINTS, 0, gridSize_ * gridSize_, dispersed_ ? 3 : 1);
+  // object_caustics_splat.vert per ray on its full path (it lands, and so do its neighbours):
+  // its landing and flux, and the landings of its four neighbours that shape the splat; the
+  // fragment stage weighs a Gaussian, no fetches.
+  work::drawArrays({"object_caustics.splats",
+                    {6.0, 0.0},
+                    {},
+                    {Traffic::readBytes(std::uint64_t(gridSize_) * gridSize_ * 32)}},
+                   GL_POINTS, 0, gridSize_ * gridSize_, dispersed_ ? 3 : 1);
   glDisable(GL_PROGRAM_POINT_SIZE);
 }
 
@@ -395,7 +429,13 @@ void ObjectCausticsPass::filterTemporally(const FrameDesc& frame) {
   glBindSamplers(POSTFX_OBJECT_UNIT_CURRENT_MAP, 2, samplers);
   glProgramUniform1f(temporal_.id(), kHistoryWeight, historyValid_ ? s.temporalWeight : 0.0f);
   glUseProgram(temporal_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // object_caustics_temporal.frag per map texel: the 3 x 3 around it (its own read twice) and
+  // its history.
+  work::drawArrays({"object_caustics.temporal",
+                    {},
+                    {11.0, 0.0},
+                    {Traffic::read(splatMap_.id()), Traffic::read(history_[historyIndex_].id())}},
+                   GL_TRIANGLES, 0, 3);
   historyIndex_ = out;
   historyValid_ = true;
   map_ = placement_;
@@ -420,7 +460,18 @@ void ObjectCausticsPass::composite(const ObjectCausticsTarget& target, GLuint ma
   const GLuint samplers[] = {point, point, point, linear, point};
   glBindSamplers(POSTFX_UNIT_DEPTH, 5, samplers);
   glUseProgram(composite_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // object_caustics_composite.frag on its full path (a lit receiver inside the map): depth,
+  // normal, the receiver depth, the map, albedo.
+  const double share =
+      double(r.width) * r.height / std::max(1.0, double(r.targetWidth) * r.targetHeight);
+  work::drawArrays({"object_caustics.composite",
+                    {},
+                    {5.0, 0.0},
+                    {Traffic::readLevel0(frame.depth.texture, share),
+                     Traffic::readLevel0(frame.normal.texture, share),
+                     Traffic::readLevel0(frame.albedo.texture, share), Traffic::read(map),
+                     Traffic::read(receiverDepth)}},
+                   GL_TRIANGLES, 0, 3);
 }
 
 void ObjectCausticsPass::drawVolume(const ObjectCausticsTarget& target) {
@@ -429,6 +480,7 @@ void ObjectCausticsPass::drawVolume(const ObjectCausticsTarget& target) {
   const ValidatedTextures& r = target.rect;
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(volumeFbo_.id(), GL_COLOR, 0, zero);
+  work::noteClear("volume_caustics.clear", std::uint64_t(r.width) * r.height * 16);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, volumeFbo_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(r.width), static_cast<float>(r.height));
   glBindTextureUnit(POSTFX_UNIT_DEPTH, target.frame->depth.texture);
@@ -438,13 +490,23 @@ void ObjectCausticsPass::drawVolume(const ObjectCausticsTarget& target) {
   glBindVertexArray(emptyVao_.id());
   const GLsizei rays = gridSize_ * gridSize_;
   const GLsizei channels = dispersed_ ? 3 : 1;
+  // volume_caustics.vert per vertex on its full path: its ray's segment and power (three
+  // texels) and, for a beam, the segments of its four neighbours that shape its cross-section
+  // (two each); .frag per fragment (inside the kernel, in front of the surface): the pixel's
+  // depth.
+  const double share =
+      double(r.width) * r.height / std::max(1.0, double(r.targetWidth) * r.targetHeight);
+  const TrafficList beamTraffic{Traffic::readBytes(std::uint64_t(rays) * channels * 48),
+                                Traffic::readLevel0(target.frame->depth.texture, share)};
   if (volumeMethod_ == VolumeCausticsMethod::Lines) {
     glLineWidth(1.0f);
     glUseProgram(volumeLines_.id());
-    glDrawArraysInstanced(GL_LINES, 0, 2 * rays, channels);
+    work::drawArrays({"volume_caustics.lines", {3.0, 0.0}, {1.0, 0.0}, beamTraffic}, GL_LINES, 0,
+                     2 * rays, channels);
   } else {
     glUseProgram(volumeBeams_.id());
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * rays, channels);
+    work::drawArrays({"volume_caustics.beams", {11.0, 0.0}, {1.0, 0.0}, beamTraffic}, GL_TRIANGLES,
+                     0, 6 * rays, channels);
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, compositeFbo_.id());
   glViewportIndexedf(0, static_cast<float>(r.x), static_cast<float>(r.y),
@@ -452,7 +514,12 @@ void ObjectCausticsPass::drawVolume(const ObjectCausticsTarget& target) {
   glBindTextureUnit(POSTFX_OBJECT_UNIT_VOLUME_LIGHT, volumeLight_.id());
   glBindSampler(POSTFX_OBJECT_UNIT_VOLUME_LIGHT, pointSampler_.id());
   glUseProgram(volumeResolve_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // volume_caustics_resolve.frag: the pixel's summed light.
+  work::drawArrays({"volume_caustics.resolve",
+                    {},
+                    {1.0, 0.0},
+                    {Traffic::readBytes(std::uint64_t(r.width) * r.height * 16)}},
+                   GL_TRIANGLES, 0, 3);
 }
 
 void ObjectCausticsPass::finishDraws() {
@@ -489,7 +556,7 @@ void ObjectCausticsPass::drawSun(std::span<const ObjectCausticsTarget> targets) 
   bindBlock(0);
   const GLuint receiverDepth = frame.objectCaustics.receivers.depth.texture;
   drawCasterMaps(frame, light_);
-  traceRays(receiverDepth);
+  traceRays(receiverDepth, frame.objectCaustics.settings.iterations);
   drawSplats(splatFbo_.id(), mapSize_);
   glBindVertexArray(emptyVao_.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(mapSize_), static_cast<float>(mapSize_));
@@ -509,7 +576,7 @@ void ObjectCausticsPass::drawLight(std::span<const ObjectCausticsTarget> targets
   // The same caster maps, trace and splats as the sun's, through the light's perspective view
   // (its block); no temporal filter.
   drawCasterMaps(frame, view);
-  traceRays(receiverDepth);
+  traceRays(receiverDepth, frame.objectCaustics.settings.iterations);
   drawSplats(lightFbo_.id(), lightMapSize_);
   glBindVertexArray(emptyVao_.id());
   for (std::size_t v = 0; v < targets.size(); ++v) {

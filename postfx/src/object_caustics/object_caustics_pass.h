@@ -83,7 +83,7 @@ class ObjectCausticsPass {
   void ensureVolumeLight(int width, int height);
   void bindBlock(int slot);
   void drawCasterMaps(const FrameDesc& frame, const ObjectLightFrame& view);
-  void traceRays(GLuint receiverDepth);
+  void traceRays(GLuint receiverDepth, int iterations);
   void drawSplats(GLuint fbo, int mapSize);
   void filterTemporally(const FrameDesc& frame);
   void composite(const ObjectCausticsTarget& target, GLuint map, GLuint receiverDepth);

@@ -9,7 +9,9 @@
 #include "core/shader_library.h"
 #include "core/shared_math.h"
 #include "core/visibility.h"
+#include "core/work_account.h"
 #include "seabed_caustics/caustics_pass.h"
+#include "seabed_caustics/lookup_work.h"
 
 namespace postfx::detail {
 
@@ -61,15 +63,16 @@ void ReflectedCausticsPass::finish() {
   glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
-void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures& textures,
+                                 const SeabedInputs& inputs) {
   const ReflectedCausticsSettings& s = frame.reflectedCaustics;
   const bool onDepth = s.landing == ReflectedLanding::ViewDepth;
   ReflectedLayout onDepthLayout;
   if (onDepth) {
     onDepthLayout = reflectedLayout(frame);
-    receivers_.draw(frame, textures, onDepthLayout);
+    receivers_.draw(frame, textures, onDepthLayout, inputs);
   } else {
-    field_.draw(frame, textures);
+    field_.draw(frame, textures, inputs);
   }
   const ReflectedLayout& l = onDepth ? onDepthLayout : field_.layout();
   const glm::dvec3 sun = glm::normalize(frame.sun.direction);
@@ -104,7 +107,17 @@ void ReflectedCausticsPass::draw(const FrameDesc& frame, const ValidatedTextures
   glBindTextureUnit(POSTFX_UNIT_IRRADIANCE, onDepth ? receivers_.texture() : field_.texture());
   glBindSampler(POSTFX_UNIT_IRRADIANCE, onDepth ? 0 : sampler_.id());
   glUseProgram(program);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // reflected_caustics.frag on its full path (a lit pixel above the water): depth, normal,
+  // albedo, the shadow map, then on the view's depth the 5 x 5 light around the pixel and its
+  // own, and a gather of up to 13 x 13 pixels (depth and light each, as far as the light's
+  // spread reaches: data-dependent); on the height layers two layers' two lookups of up to four
+  // taps, three channels, each filtered and B-spline smoothed (5 fetches).
+  const int shadow = inputs.shadow != 0 ? kShadowFetches : 0;
+  const double fetches = 3 + shadow + (onDepth ? 26.0 + 13 * 13 * 2 : 2.0 * 2 * 4 * 3 * 5);
+  TrafficList traffic = inputs.traffic(true);
+  traffic.add(Traffic::read(onDepth ? receivers_.texture() : field_.texture()));
+  work::drawArrays({"reflected_caustics.light", {}, {fetches, 0.0, true}, traffic}, GL_TRIANGLES, 0,
+                   3);
 }
 
 bool reflectedCausticsHaveWork(const CreateDesc& create, const FrameDesc& frame) {

@@ -20,6 +20,8 @@
 
 namespace postfx::detail {
 
+struct SeabedInputs;
+
 class ReflectedCausticsPass {
  public:
   Result init(const CreateDesc& desc, std::string& error);
@@ -36,7 +38,8 @@ class ReflectedCausticsPass {
   Result prepare(const FrameDesc& frame, std::string& error);
   // Records the field for the view's camera and adds its light into the view's target, under
   // CausticsPass::bindState's state (restored here for the seabed passes' viewport).
-  void draw(const FrameDesc& frame, const ValidatedTextures& textures);
+  // `inputs`: what the caustics pass's state bound (for the work account).
+  void draw(const FrameDesc& frame, const ValidatedTextures& textures, const SeabedInputs& inputs);
   // Lets go of the host's texture.
   void finish();
 

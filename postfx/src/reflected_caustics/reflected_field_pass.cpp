@@ -10,6 +10,8 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
+#include "seabed_caustics/caustics_pass.h"
 #include "seabed_caustics/grid_layer_draw.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
@@ -86,11 +88,14 @@ Result ReflectedFieldPass::reserve(const FrameDesc& frame, std::string& error) {
   return Result::Ok;
 }
 
-void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& textures) {
+void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& textures,
+                              const SeabedInputs& inputs) {
   layout_ = reflectedLayout(frame);
   const ReflectedLayout& l = layout_;
   const float zero = 0.0f;
   glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);  // every channel's layers
+  const std::uint64_t levelBytes = textureBytes(texture_.id(), 4) * 3 / 4;  // R32F, level 0
+  work::noteClear("reflected_caustics.clear", levelBytes);
   const GLuint zeros[2] = {0, 0};  // never read, kept from wrapping around
   glNamedBufferSubData(clampCount_.id(), 0, sizeof(zeros), zeros);
 
@@ -142,11 +147,20 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
                        static_cast<float>(l.cell), static_cast<float>(l.height[k]));
     glUseProgram(compute);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
-    glDispatchCompute(groups, groups, 1);
+    // reflected_light_vertices.comp per grid point: each cascade's water, the shadow map.
+    const double points = double(pointsPerSide) * pointsPerSide;
+    work::dispatchCompute({"reflected_caustics.vertices",
+                           {},
+                           {perInvocation(water.cascadeCount + (inputs.shadow != 0 ? 1 : 0), points,
+                                          groups * groups * 256.0)},
+                           {Traffic::read(water.texture.texture), Traffic::read(inputs.shadow),
+                            Traffic::writeBuffer(gridPoints_.buffer())}},
+                          groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    drawGridLayer(framebuffer_.id(), texture_.id(), k, triangles_.id(), points_.id(),
-                  clampCount_.id(), pointsPerSide, l.layers);
+    drawGridLayer({"reflected_caustics.triangles", "reflected_caustics.points"}, framebuffer_.id(),
+                  texture_.id(), k, triangles_.id(), points_.id(), clampCount_.id(), pointsPerSide,
+                  l.layers);
   }
   for (GLuint b = 1; b < GLuint(kReflectedChannels); ++b) glDisablei(GL_BLEND, b);
   for (int c = 0; c < kReflectedChannels; ++c)
@@ -163,6 +177,7 @@ void ReflectedFieldPass::draw(const FrameDesc& frame, const ValidatedTextures& t
                         sun, 0.5 * glm::radians(double(frame.sun.angularDiameterDegrees)))});
   }
   glGenerateTextureMipmap(texture_.id());
+  work::noteClear("reflected_caustics.mipmaps", levelBytes / 3);
 }
 
 void ReflectedFieldPass::release() {

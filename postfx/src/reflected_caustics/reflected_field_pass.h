@@ -27,6 +27,8 @@
 
 namespace postfx::detail {
 
+struct SeabedInputs;
+
 class ReflectedFieldPass {
  public:
   Result init(const std::string& defines, std::string& error);
@@ -39,7 +41,7 @@ class ReflectedFieldPass {
   // Expects the water texture bound on its unit with its sampler (CausticsPass::bindState);
   // binds its own framebuffer, viewport, programs, vertex array, SSBO bindings 0, texture unit
   // POSTFX_UNIT_GRID_POINTS, and enables GL_PROGRAM_POINT_SIZE (the caller's guard restores).
-  void draw(const FrameDesc& frame, const ValidatedTextures& textures);
+  void draw(const FrameDesc& frame, const ValidatedTextures& textures, const SeabedInputs& inputs);
   // Frees the field (a frame without the pass holds none of its memory).
   void release();
 

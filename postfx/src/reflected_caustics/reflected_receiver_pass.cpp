@@ -9,7 +9,10 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
+#include "seabed_caustics/caustics_pass.h"
 #include "seabed_caustics/grid_layer_draw.h"
+#include "seabed_caustics/lookup_work.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
@@ -86,23 +89,26 @@ ReflectedReceiverPass::Grids ReflectedReceiverPass::grids(const ReflectedLayout&
 }
 
 void ReflectedReceiverPass::draw(const FrameDesc& frame, const ValidatedTextures& textures,
-                                 const ReflectedLayout& l) {
+                                 const ReflectedLayout& l, const SeabedInputs& inputs) {
   const Grids g = grids(l);
   const float zeros[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearTexSubImage(light_.id(), 0, 0, 0, 0, textures.width, textures.height, 1, GL_RGBA, GL_FLOAT,
                      zeros);
+  work::noteClear("reflected_caustics.clear", std::uint64_t(textures.width) * textures.height * 16);
   // The inner grid's window is the outer grid's hole: every water point lights once.
   const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
   const glm::dvec2 holeMin = l.windowOrigin - camera, holeMax = holeMin + l.windowSize;
-  drawGrid(frame, textures, g.level[1], 1, glm::vec4(holeMin.x, holeMin.y, holeMax.x, holeMax.y));
+  drawGrid(frame, textures, g.level[1], 1, glm::vec4(holeMin.x, holeMin.y, holeMax.x, holeMax.y),
+           inputs);
   // One buffer of grid points for both: the outer grid's draws read it before the window's rays
   // overwrite it (the barrier orders the two), and the slope statistics likewise.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  drawGrid(frame, textures, g.level[0], 0, glm::vec4(0.0f));
+  drawGrid(frame, textures, g.level[0], 0, glm::vec4(0.0f), inputs);
 }
 
 void ReflectedReceiverPass::drawGrid(const FrameDesc& frame, const ValidatedTextures& textures,
-                                     const Grid& grid, int index, const glm::vec4& hole) {
+                                     const Grid& grid, int index, const glm::vec4& hole,
+                                     const SeabedInputs& inputs) {
   const int pointsPerSide = grid.cells + 1;
   const WaterSurface& water = frame.water;
   const ReflectedCausticsSettings& s = frame.reflectedCaustics;
@@ -133,7 +139,19 @@ void ReflectedReceiverPass::drawGrid(const FrameDesc& frame, const ValidatedText
   glUseProgram(compute);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
   const GLuint groups = static_cast<GLuint>((pointsPerSide + 15) / 16);
-  glDispatchCompute(groups, groups, 1);
+  // reflected_receiver_rays.comp per grid point: each cascade's water, then its mirrored ray
+  // marched through the view's depth (data-dependent: up to 65 steps, a bisection of 8 where
+  // it passes behind a surface, the landing pixel's plane from 5 depths), the shadow map.
+  const int shadow = inputs.shadow != 0 ? kShadowFetches : 0;
+  work::dispatchCompute(
+      {"reflected_caustics.rays",
+       {},
+       {perInvocation(water.cascadeCount + shadow + 65 + 8 + 5,
+                      double(pointsPerSide) * pointsPerSide, groups * groups * 256.0),
+        0.0, true},
+       {Traffic::read(water.texture.texture), Traffic::readLevel0(inputs.depth, inputs.share),
+        Traffic::read(inputs.shadow), Traffic::writeBuffer(gridPoints_.buffer())}},
+      groups, groups, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 
   // Flat water's flux through one grid triangle, in flat mirror light times m^2: the sun's
@@ -157,10 +175,17 @@ void ReflectedReceiverPass::drawGrid(const FrameDesc& frame, const ValidatedText
   glBindTextureUnit(POSTFX_UNIT_GRID_POINTS, gridPoints_.view());
   glBindSampler(POSTFX_UNIT_GRID_POINTS, 0);
   const GLsizei triangles = 2 * GLsizei(grid.cells) * GLsizei(grid.cells);
+  // reflected_receiver_triangles.vert / _points.vert per vertex: its triangle's three grid
+  // points (two texels each); reflected_receiver_splat.frag per fragment: the pixel's depth.
+  const std::uint64_t gridBytes = std::uint64_t(pointsPerSide) * pointsPerSide * 32;
+  const TrafficList drawTraffic{Traffic::readBytes(gridBytes),
+                                Traffic::readLevel0(inputs.depth, inputs.share)};
   glUseProgram(triangles_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3 * triangles);
+  work::drawArrays({"reflected_caustics.landing_triangles", {6.0, 0.0}, {1.0, 0.0}, drawTraffic},
+                   GL_TRIANGLES, 0, 3 * triangles);
   glUseProgram(points_.id());
-  glDrawArrays(GL_POINTS, 0, 3 * triangles);
+  work::drawArrays({"reflected_caustics.landing_points", {6.0, 0.0}, {1.0, 0.0}, drawTraffic},
+                   GL_POINTS, 0, 3 * triangles);
 }
 
 void ReflectedReceiverPass::release() {

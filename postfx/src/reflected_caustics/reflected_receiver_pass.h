@@ -24,6 +24,8 @@
 
 namespace postfx::detail {
 
+struct SeabedInputs;
+
 class ReflectedReceiverPass {
  public:
   Result init(const std::string& defines, std::string& error);
@@ -37,7 +39,8 @@ class ReflectedReceiverPass {
   // blending ONE, ONE on buffer 0); binds its own framebuffer, viewport, programs, vertex
   // array, SSBO binding and grid-point unit, and enables GL_PROGRAM_POINT_SIZE (the caller's
   // guard restores).
-  void draw(const FrameDesc& frame, const ValidatedTextures& textures, const ReflectedLayout& l);
+  void draw(const FrameDesc& frame, const ValidatedTextures& textures, const ReflectedLayout& l,
+            const SeabedInputs& inputs);
   void release();
 
   GLuint texture() const { return light_.id(); }
@@ -65,7 +68,7 @@ class ReflectedReceiverPass {
   glkit::Texture light_;
   int width_ = 0, height_ = 0;
   void drawGrid(const FrameDesc& frame, const ValidatedTextures& textures, const Grid& grid,
-                int index, const glm::vec4& hole);
+                int index, const glm::vec4& hole, const SeabedInputs& inputs);
 
   GridPointBuffer gridPoints_;  // each grid's in turn
   CellSlopeStatistics slopes_;

@@ -4,11 +4,14 @@
 
 #include "core/host_target.h"
 
+#include <algorithm>
 #include <string>
 
 #include <glkit/texture.h>
 
 #include "core/shader_library.h"
+#include "core/work_instrumentation.h"
+#include "seabed_caustics/lookup_work.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 // bindState binds the G-buffer's three samplers in one call.
@@ -36,6 +39,7 @@ std::string shaderDefines(const CreateDesc& desc) {
   d += std::string("#define POSTFX_WATER_SINGLE_2D ") +
        (desc.waterTexture == WaterTextureType::Single2D ? "1" : "0") + "\n";
   d += "#define POSTFX_CASCADE_SLOTS " + std::to_string(waterCascadeSlots(desc)) + "\n";
+  if (hasFeature(desc.features, testing::CountShaderWork)) d += kCountWorkDefine;
   return d;
 }
 
@@ -155,14 +159,14 @@ void CausticsPass::ensureReduced(int width, int height, CausticsViewTextures& vi
                             0);
 }
 
-void CausticsPass::drawReducedLookups(const glkit::Program& program) {
+void CausticsPass::drawReducedLookups(const glkit::Program& program, int tileVariant) {
   // Under bindState's state, with the tile irradiance on its unit: its own target, unblended.
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, view_->reducedFramebuffer.id());
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(view_->reducedWidth),
                      static_cast<float>(view_->reducedHeight));
   glDisablei(GL_BLEND, 0);
   glUseProgram(program.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  work::drawArrays(lookupsStep(tileVariant), GL_TRIANGLES, 0, 3);
   // Back to bindState's: the upsample reads the lookups on the irradiance unit, texel by texel.
   glViewportIndexedf(0, static_cast<float>(viewport_.x), static_cast<float>(viewport_.y),
                      static_cast<float>(viewport_.width), static_cast<float>(viewport_.height));
@@ -242,6 +246,21 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   glBindVertexArray(vertexArray_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, POSTFX_CAUSTICS_BLOCK_BINDING, uniformBuffer_.id());
 
+  bound_ = {frame.depth.texture,
+            frame.normal.texture,
+            frame.albedo.texture,
+            frame.water.texture.texture,
+            hasFeature(desc_.features, Feature::ShadowMask) ? frame.shadow.depth.texture : 0u,
+            irradiance,
+            tile,
+            double(textures.width) * textures.height /
+                std::max(1.0, double(textures.targetWidth) * textures.targetHeight),
+            frame.water.texture.texture != 0
+                ? std::min(frame.water.cascadeCount, waterCascadeSlots(desc_))
+                : 0,
+            waterCascadeSlots(desc_),
+            frame.caustics.model == CausticsModel::WavefrontAreaRatio,
+            hasFeature(desc_.features, Feature::LocalWater) ? localWaterFetches(frame) : 0};
   glBindTextureUnit(POSTFX_UNIT_DEPTH, frame.depth.texture);
   glBindTextureUnit(POSTFX_UNIT_NORMAL, frame.normal.texture);
   glBindTextureUnit(POSTFX_UNIT_ALBEDO, frame.albedo.texture);
@@ -271,19 +290,73 @@ void CausticsPass::bindState(const FrameDesc& frame, const ValidatedTextures& te
   }
 }
 
+TrafficList SeabedInputs::traffic(bool gbuffer) const {
+  TrafficList t;
+  t.add(Traffic::readLevel0(depth, share));
+  if (gbuffer) {
+    t.add(Traffic::readLevel0(normal, share));
+    t.add(Traffic::readLevel0(albedo, share));
+  }
+  t.add(Traffic::read(water));
+  t.add(Traffic::read(shadow));
+  t.add(Traffic::read(irradiance));
+  t.add(Traffic::read(tile));
+  return t;
+}
+
+// caustics.frag on its full path (an underwater pixel facing the light, lit): the G-buffer's
+// three texels, the shadow map, then the model's lookups (lookup_work.h) and the local water's.
+// A reduced TileIrradiance variant reads one gather of the lookups instead of its own.
+Step CausticsPass::causticsStep(int tileVariant) const {
+  const bool shadow = hasFeature(desc_.features, Feature::ShadowMask);
+  int fetches = 3 + (shadow ? kShadowFetches : 0) + bound_.localFetches;
+  const int slots = bound_.slots;
+  if (tileVariant == 0) {
+    const int projections = hasFeature(desc_.features, Feature::TriplanarWalls) ? 3 : 1;
+    fetches += waterSlopeFetches(bound_.cascades, projections) + (bound_.war ? kWindowFetches : 0);
+  } else {
+    const int index = (tileVariant - 1) % kTileVariants;
+    const bool reduced = tileVariant > kTileVariants && tileVariant <= 2 * kTileVariants;
+    const bool physical = tileVariant > 2 * kTileVariants;
+    if (reduced)
+      fetches += 1;  // the gather of four lookups
+    else
+      fetches += tileIrradianceFetches(index % kTileMasks, index / kTileMasks + 1, bound_.cascades,
+                                       slots) +
+                 (physical ? kWindowFetches : 0);
+  }
+  return {"caustics.light", {}, {double(fetches), 0.0}, bound_.traffic(true)};
+}
+
+// tile_irradiance_reduced.frag per texel of half the view: depth, normal, the field's lookup.
+Step CausticsPass::lookupsStep(int tileVariant) const {
+  const int index = (tileVariant - 1) % kTileVariants;
+  const int fetches = 2 + tileIrradianceFetches(index % kTileMasks, index / kTileMasks + 1,
+                                                bound_.cascades, bound_.slots);
+  TrafficList t;
+  t.add(Traffic::readLevel0(bound_.depth, bound_.share));
+  t.add(Traffic::readLevel0(bound_.normal, bound_.share));
+  t.add(Traffic::read(bound_.water));
+  t.add(Traffic::read(bound_.tile));
+  return {"caustics.tile_lookups", {}, {double(fetches), 0.0}, t};
+}
+
 void CausticsPass::drawFloor() {
   if (floor_.id() == 0) return;
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, floorFramebuffer_.id());
   glUseProgram(floor_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // floor.frag: the G-buffer's three texels, each cascade once, the shadow map.
+  const bool shadow = hasFeature(desc_.features, Feature::ShadowMask);
+  const StageWork floor{double(3 + bound_.cascades + (shadow ? kShadowFetches : 0)), 0.0};
+  work::drawArrays({"floor.inputs", {}, floor, bound_.traffic(true)}, GL_TRIANGLES, 0, 3);
 }
 
 void CausticsPass::drawCaustics(int tileVariant) {
   if (tileVariant > kTileVariants && tileVariant <= 2 * kTileVariants)
-    drawReducedLookups(tileLookups_[tileVariant - 1 - kTileVariants]);
+    drawReducedLookups(tileLookups_[tileVariant - 1 - kTileVariants], tileVariant);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
   glUseProgram(tileVariant > 0 ? tileCaustics_[tileVariant - 1].id() : caustics_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  work::drawArrays(causticsStep(tileVariant), GL_TRIANGLES, 0, 3);
 }
 
 void CausticsPass::finish() {

@@ -16,6 +16,7 @@
 
 #include "core/shared_math.h"
 #include "core/validation.h"
+#include "core/work_account.h"
 
 namespace postfx::detail {
 
@@ -34,6 +35,19 @@ struct CausticsViewTextures {
 
 // The #defines of the context's features and conventions, for every postfx program.
 std::string shaderDefines(const CreateDesc& desc);
+
+// What CausticsPass::bindState bound for the passes under its state, for the work account.
+struct SeabedInputs {
+  GLuint depth = 0, normal = 0, albedo = 0, water = 0, shadow = 0, irradiance = 0, tile = 0;
+  double share = 1.0;    // the view's rectangle over the G-buffer's area
+  int cascades = 0;      // water cascades the lookups read
+  int slots = 1;         // cascade lookups compiled in (waterCascadeSlots)
+  bool war = false;      // the frame's model is WavefrontAreaRatio (its window is read)
+  int localFetches = 0;  // lookup_work.h's localWaterFetches with Feature::LocalWater, else 0
+  // The G-buffer's depth (and with `gbuffer` its normal and albedo) within the view, the water,
+  // the shadow map and the fields the lookups read.
+  TrafficList traffic(bool gbuffer) const;
+};
 
 class CausticsPass {
  public:
@@ -60,6 +74,7 @@ class CausticsPass {
   void bindState(const FrameDesc& frame, const ValidatedTextures& textures, GLuint irradiance,
                  GLuint tile = 0);
   void drawFloor();
+  const SeabedInputs& inputs() const { return bound_; }
   // tileVariant: 0 for the RayDeviation program (and WavefrontAreaRatio without a tile field),
   // else the variant ensureTileProgram returned (a reduced one draws its lookups first, then
   // blends them in: both inside the caustics pass's timing).
@@ -70,9 +85,12 @@ class CausticsPass {
   void clearRaw(const ValidatedTextures& textures, CausticsViewTextures& view);
 
  private:
+  Step causticsStep(int tileVariant) const;
+  Step lookupsStep(int tileVariant) const;
+
   void ensureRaw(const ValidatedTextures& textures, CausticsViewTextures& view);
   void ensureReduced(int width, int height, CausticsViewTextures& view);
-  void drawReducedLookups(const glkit::Program& program);
+  void drawReducedLookups(const glkit::Program& program, int tileVariant);
 
   CreateDesc desc_{};
   glkit::Program caustics_, floor_;
@@ -91,6 +109,7 @@ class CausticsPass {
   glkit::Sampler pointSampler_, waterMipSampler_, waterLinearSampler_;
   glkit::Sampler shadowForwardSampler_, shadowReverseSampler_, irradianceSampler_;
   glkit::Sampler tileSampler_;
+  SeabedInputs bound_;
   CausticsViewTextures* view_ = nullptr;  // the view prepare() set up
   ValidatedTextures viewport_;            // its rectangle in the target
 };

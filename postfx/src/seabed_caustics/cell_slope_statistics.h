@@ -28,10 +28,17 @@ class CellSlopeStatistics {
   // buffer bound at POSTFX_STORAGE_TILE_SPREAD. Expects the water texture bound on its unit.
   void measure(const FrameDesc& frame, const ValidatedTextures& textures, double cell);
 
+  // tile_irradiance_spread.comp's water fetches for one cascade of `points` grid cells per tile
+  // side on a water texture `waterSide` texels wide: up to TILE_SPREAD_SAMPLE_CELLS^2 of its
+  // cells, round(texels per cell)^2 texels each (at most TILE_SPREAD_MAX_CELL_TEXELS^2), shared by
+  // its TILE_SPREAD_PARTS x 256 invocations. Also the tile irradiance's own statistics.
+  static double cascadeFetches(double points, int waterSide);
+
  private:
   glkit::Program program_;
   glkit::Buffer buffer_;
   std::string label_;
+  std::string stepName_;  // "<pass>.spread_statistics", the work account's
 };
 
 }  // namespace postfx::detail

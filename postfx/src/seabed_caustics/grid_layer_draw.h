@@ -23,8 +23,14 @@ void setGridDrawUniforms(GLuint triangles, GLuint points, float maxIrradiance, i
 // `channelStride` > 0 the programs write two more channels (POSTFX_GRID_DRIFT), into layers
 // layer + channelStride and layer + 2 channelStride on attachments 1 and 2 (the framebuffer's
 // draw buffers set to all three).
-void drawGridLayer(GLuint framebuffer, GLuint texture, int layer, GLuint triangles, GLuint points,
-                   GLuint clampCount, int pointsPerSide, int channelStride = 0);
+// `names`: the two draws' work-account steps ("<pass>.triangles", "<pass>.points").
+struct GridStepNames {
+  const char* triangles;
+  const char* points;
+};
+void drawGridLayer(const GridStepNames& names, GLuint framebuffer, GLuint texture, int layer,
+                   GLuint triangles, GLuint points, GLuint clampCount, int pointsPerSide,
+                   int channelStride = 0);
 
 // Per cascade of `water`: the uv of the grid point at world `gridOrigin` (reduced modulo the tile
 // in double), the uv per grid `cell`, and the mip level whose texel matches the cell (finer

@@ -7,12 +7,14 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
 
 namespace postfx::detail {
 
 Result LayerSpread::init(const std::string& defines, const std::string& label, std::string& error) {
   label_ = label;
+  stepName_ = label.substr(label.find('.') + 1) + ".spread";
   const Result r = statistics_.init(defines, label, error);
   if (r != Result::Ok) return r;
   return buildPrograms(
@@ -71,7 +73,18 @@ void LayerSpread::draw(const FrameDesc& frame, const ValidatedTextures& textures
     glBindTextureUnit(POSTFX_UNIT_TILE_IRRADIANCE, from);
     glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, to, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glProgramUniform4i(blur, 0, d.resolution, direction, d.layers, 0);
-    glDispatchCompute(groups, groups, static_cast<GLuint>(d.layers));
+    // wavefront_area_ratio_spread.comp per texel: a Gaussian of 2r + 1 taps, r three times the
+    // layer's landing spread, at most an eighth of the side (data-dependent: a bound; one fetch
+    // where the layer has no spread).
+    const std::uint64_t bytes = std::uint64_t(d.resolution) * d.resolution * d.layers * 4;
+    const int radius = int(float(d.resolution) * shared::IRRADIANCE_FADE_BAND);
+    const double texels = double(d.resolution) * d.resolution;
+    work::dispatchCompute(
+        {stepName_.c_str(),
+         {},
+         {perInvocation(2.0 * radius + 1.0, texels, double(groups) * groups * 64.0), 0.0, true},
+         {Traffic::readBytes(bytes), Traffic::writeBytes(bytes)}},
+        groups, groups, static_cast<GLuint>(d.layers));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
   }

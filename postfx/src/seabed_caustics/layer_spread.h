@@ -49,6 +49,7 @@ class LayerSpread {
   glkit::Program blur_;
   glkit::Texture rows_;  // level 0 of every layer, blurred along rows
   std::string label_;
+  std::string stepName_;  // "<pass>.spread", the work account's
 };
 
 // Bytes LayerSpread::ensure(true, resolution, layers) allocates.

@@ -10,6 +10,7 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
 #include "seabed_caustics/grid_layer_draw.h"
 #include "seabed_caustics/wavefront_area_ratio_layout.h"
 
@@ -85,11 +86,14 @@ void LocalWaterPass::draw(const FrameDesc& frame, const ValidatedTextures& textu
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_CLAMP_COUNT, clampCount_.id());
   const float zero = 0.0f;
   glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+  const std::uint64_t levelBytes = textureBytes(texture_.id(), 4) * 3 / 4;  // R32F, level 0
+  work::noteClear("local_water.clear", levelBytes);
   const LocalWaterTexture layout = localWaterTexture(frame);
   for (int r = 0; r < frame.water.localWaterCount; ++r)
     drawRegion(frame, textures, r, layout.firstLayer[r]);
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
   glGenerateTextureMipmap(texture_.id());
+  work::noteClear("local_water.mipmaps", levelBytes / 3);
 }
 
 void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures& textures, int r,
@@ -156,10 +160,21 @@ void LocalWaterPass::drawRegion(const FrameDesc& frame, const ValidatedTextures&
                          float(l.windowCorner.x), float(l.windowCorner.y));
       glUseProgram(compute);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
-      glDispatchCompute(groups, groups, 1);
+      // local_water_vertices.comp per grid point: the cascades beneath (Add mode) and, for the
+      // joint field, the region's own surface.
+      const double points = double(l.pointsPerSide) * l.pointsPerSide;
+      work::dispatchCompute(
+          {"local_water.vertices",
+           {},
+           {perInvocation(cascades + (field == 0 ? 1 : 0), points, groups * groups * 256.0)},
+           {Traffic::read(region.texture.texture),
+            Traffic::read(cascades > 0 ? water.texture.texture : 0u),
+            Traffic::writeBuffer(gridPoints_.buffer())}},
+          groups, groups, 1);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-      drawGridLayer(framebuffer_.id(), texture_.id(), firstLayer + field * l.layers + k,
-                    triangles_.id(), points_.id(), clampCount_.id(), l.pointsPerSide);
+      drawGridLayer({"local_water.triangles", "local_water.points"}, framebuffer_.id(),
+                    texture_.id(), firstLayer + field * l.layers + k, triangles_.id(), points_.id(),
+                    clampCount_.id(), l.pointsPerSide);
     }
   }
 }

@@ -9,7 +9,9 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
 #include "seabed_caustics/caustics_constants.h"
+#include "seabed_caustics/cell_slope_statistics.h"
 
 namespace postfx::detail {
 namespace {
@@ -236,30 +238,50 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_TILE_ACCUMULATORS, accumulators_.id());
   glUseProgram(scatter);
   const GLuint pointGroups = static_cast<GLuint>((points + 7) / 8);
+  // tile_irradiance_scatter.comp per point: its water texel (and its four neighbours' with the
+  // footprint), then per depth layer its flux added to the 2 x 2 texels around its landing, or
+  // to the up to 5 x 5 its footprint covers (a bound: most cover 2 x 2 to 3 x 3).
+  const bool footprint = scatter == scatterFootprint_.id();
+  const double padded = double(pointGroups) * pointGroups * 64.0, inGrid = double(points) * points;
+  const Step scatterStep{
+      "tile_irradiance.scatter",
+      {},
+      {perInvocation(footprint ? 5.0 : 1.0, inGrid, padded),
+       perInvocation(double(l.layers) * (footprint ? 25 : 4), inGrid, padded), footprint},
+      {Traffic::read(frame.water.texture.texture), Traffic::writeBuffer(accumulators_.id())}};
   for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
     if (l.slot[c] < 0) continue;
     glProgramUniform1i(scatter, 0, c);
     glProgramUniform4f(scatter, 1, static_cast<float>(points), static_cast<float>(l.resolution),
                        static_cast<float>(water.tileSize[c]),
                        static_cast<float>(l.slot[c] * l.layers));
-    glDispatchCompute(pointGroups, pointGroups, 1);
+    work::dispatchCompute(scatterStep, pointGroups, pointGroups, 1);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   if (l.spread) {
-    drawSpread(frame, depths);
+    drawSpread(frame, depths, waterSide);
   } else {
     const GLuint resolve = resolve_.id();
     glUseProgram(resolve);
     glBindImageTexture(POSTFX_IMAGE_TILE_IRRADIANCE, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        GL_RGBA16F);
     const GLuint texelGroups = static_cast<GLuint>((l.resolution + 7) / 8);
+    // tile_irradiance_resolve.comp: buffer reads and image writes only.
+    const double share = 1.0 / std::max(l.cascadeCount, 1);
+    const Step resolveStep{"tile_irradiance.resolve",
+                           {},
+                           {},
+                           {Traffic::readBuffer(accumulators_.id(), share),
+                            Traffic::writeBuffer(accumulators_.id(), share),
+                            Traffic::writeBytes(std::uint64_t(l.resolution) * l.resolution *
+                                                std::uint64_t(l.groups) * 8)}};
     for (int c = 0; c < water.cascadeCount && c < kMaxCascades; ++c) {
       if (l.slot[c] < 0) continue;
       glProgramUniform4f(resolve, 0, static_cast<float>(l.resolution),
                          static_cast<float>(l.slot[c] * l.layers),
                          static_cast<float>(l.slot[c] * l.groups), tileClamp(frame));
-      glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.groups));
+      work::dispatchCompute(resolveStep, texelGroups, texelGroups, static_cast<GLuint>(l.groups));
     }
   }
   // The mip chain from the image writes, level by level (each dispatch reads the level the one
@@ -277,12 +299,19 @@ void TileIrradiancePass::draw(const FrameDesc& frame, const ValidatedTextures& t
                        GL_WRITE_ONLY, GL_RGBA16F);
     glProgramUniform2i(downsample, 0, side, level - 1);
     const GLuint groups = static_cast<GLuint>((side + 7) / 8);
-    glDispatchCompute(groups, groups, static_cast<GLuint>(textureLayers_));
+    // tile_irradiance_downsample.comp: the four finer texels of each coarser one.
+    const std::uint64_t texels = std::uint64_t(side) * side * std::uint64_t(textureLayers_);
+    work::dispatchCompute(
+        {"tile_irradiance.downsample",
+         {},
+         {perInvocation(4.0, double(side) * side, double(groups) * groups * 64.0)},
+         {Traffic::readBytes(4 * texels * 8), Traffic::writeBytes(texels * 8)}},
+        groups, groups, static_cast<GLuint>(textureLayers_));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   }
 }
 
-void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths) {
+void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths, int waterSide) {
   const TileIrradianceLayout& l = layout_;
   const WaterSurface& water = frame.water;
   const int cascades = std::min(water.cascadeCount, kMaxCascades);
@@ -294,8 +323,17 @@ void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths)
   const float points = static_cast<float>(l.resolution * frame.caustics.tilePointsPerTexel);
   glProgramUniform4f(statistics, 0, points, points, points, points);
   glUseProgram(statistics);
-  glDispatchCompute(static_cast<GLuint>(cascades), static_cast<GLuint>(shared::TILE_SPREAD_PARTS),
-                    1);
+  // tile_irradiance_spread.comp: CellSlopeStatistics::cascadeFetches per cascade.
+  {
+    const double perInvocation = CellSlopeStatistics::cascadeFetches(points, waterSide);
+    work::dispatchCompute({"tile_irradiance.spread_statistics",
+                           {},
+                           {perInvocation, 0.0},
+                           {Traffic::readBytes(static_cast<std::uint64_t>(
+                               perInvocation * cascades * shared::TILE_SPREAD_PARTS * 256 * 8))}},
+                          static_cast<GLuint>(cascades),
+                          static_cast<GLuint>(shared::TILE_SPREAD_PARTS), 1);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   // The blur: rows, columns and the diagonal, every cascade and layer in each dispatch.
@@ -314,10 +352,15 @@ void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths)
   glUseProgram(box);
   const int n = l.resolution;
   const GLuint lineGroups = static_cast<GLuint>((n + 63) / 64);
+  // tile_irradiance_spread_box.comp: one line of one layer per invocation, buffers only.
+  const Step boxStep{"tile_irradiance.spread_blur",
+                     {},
+                     {},
+                     {Traffic::readBuffer(blur_.id(), 0.5), Traffic::writeBuffer(blur_.id(), 0.5)}};
   for (int direction = 0; direction < 3; ++direction) {
     glProgramUniform4i(box, 0, n, direction, l.cascadeCount, l.layers);
-    glDispatchCompute(lineGroups, static_cast<GLuint>(l.layers),
-                      static_cast<GLuint>(l.cascadeCount));
+    work::dispatchCompute(boxStep, lineGroups, static_cast<GLuint>(l.layers),
+                          static_cast<GLuint>(l.cascadeCount));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   const GLuint pack = spreadPack_.id();
@@ -327,10 +370,18 @@ void TileIrradiancePass::drawSpread(const FrameDesc& frame, const float* depths)
                      GL_RGBA16F);
   glUseProgram(pack);
   const GLuint texelGroups = static_cast<GLuint>((n + 7) / 8);
-  glDispatchCompute(texelGroups, texelGroups, static_cast<GLuint>(l.cascadeCount * l.groups));
+  // tile_irradiance_spread_pack.comp: four layers of the blur into each RGBA16F texel.
+  work::dispatchCompute(
+      {"tile_irradiance.spread_pack",
+       {},
+       {},
+       {Traffic::readBuffer(blur_.id(), 0.5),
+        Traffic::writeBytes(std::uint64_t(n) * n * std::uint64_t(l.cascadeCount * l.groups) * 8)}},
+      texelGroups, texelGroups, static_cast<GLuint>(l.cascadeCount * l.groups));
   // Each accumulator was read by several texels: zeroed for the next frame only now.
   const GLuint zero = 0;
   glClearNamedBufferData(accumulators_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  work::noteClear("tile_irradiance.clear", static_cast<std::uint64_t>(accumulatorBytes_));
 }
 
 }  // namespace postfx::detail

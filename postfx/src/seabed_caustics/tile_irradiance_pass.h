@@ -100,7 +100,7 @@ class TileIrradiancePass {
 
  private:
   // The unresolved-slope spread: statistics, then per cascade the box passes of its blur.
-  void drawSpread(const FrameDesc& frame, const float* depths);
+  void drawSpread(const FrameDesc& frame, const float* depths, int waterSide);
 
   // scatter_ splits each point's flux bilinearly, scatterFootprint_ over its refracted footprint.
   glkit::Program scatter_, scatterFootprint_, resolve_, downsample_;

@@ -10,6 +10,7 @@
 #include "core/gl_sizes.h"
 #include "core/shader_library.h"
 #include "core/shared_math.h"
+#include "core/work_account.h"
 #include "seabed_caustics/caustics_constants.h"
 #include "seabed_caustics/grid_layer_draw.h"
 #include "seabed_caustics/tile_irradiance_pass.h"
@@ -109,6 +110,8 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
   const WavefrontAreaRatioLayout& l = layout_;
   const float zero = 0.0f;
   glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+  const std::uint64_t layerBytes = std::uint64_t(l.resolution) * l.resolution * 4;  // R32F
+  work::noteClear("wavefront_area_ratio.clear", layerBytes * std::uint64_t(l.layers));
 
   // A slot still pending after a whole ring of frames is dropped rather than waited for.
   ClampSlot& slot = clampSlots_[frame_ % clampSlots_.size()];
@@ -158,10 +161,18 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
                        static_cast<float>(l.cell), static_cast<float>(l.depth[k]));
     glUseProgram(compute);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, POSTFX_STORAGE_GRID_POINTS, gridPoints_.buffer());
-    glDispatchCompute(groups, groups, 1);
+    // wavefront_area_ratio_vertices.comp per grid point: each cascade's water (grid_water.glsl).
+    const double points = double(pointsPerSide) * pointsPerSide;
+    work::dispatchCompute(
+        {"wavefront_area_ratio.vertices",
+         {},
+         {perInvocation(water.cascadeCount, points, groups * groups * 256.0)},
+         {Traffic::read(water.texture.texture), Traffic::writeBuffer(gridPoints_.buffer())}},
+        groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    drawGridLayer(framebuffer_.id(), texture_.id(), k, triangles_.id(), points_.id(),
+    drawGridLayer({"wavefront_area_ratio.triangles", "wavefront_area_ratio.points"},
+                  framebuffer_.id(), texture_.id(), k, triangles_.id(), points_.id(),
                   slot.buffer.id(), pointsPerSide);
   }
   // The spread before the last layer is detached: dispatched after the detach, llvmpipe's
@@ -179,6 +190,8 @@ void WavefrontAreaRatioPass::draw(const FrameDesc& frame, const ValidatedTexture
   }
   glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
   glGenerateTextureMipmap(texture_.id());
+  // Each level read once and a third of it written again.
+  work::noteClear("wavefront_area_ratio.mipmaps", layerBytes * std::uint64_t(l.layers) / 3);
   // The fragment atomics must land before the buffer is read back. (The irradiance itself is a
   // framebuffer write, ordered before later draws that sample it without a barrier.)
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
