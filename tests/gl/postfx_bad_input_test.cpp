@@ -154,7 +154,7 @@ TEST_F(PostfxBadInputTest, EachCaseFailsCleanly) {
 TEST_F(PostfxBadInputTest, CreateRejectsUnknownAndInvalid) {
   postfx::Context* fx = reinterpret_cast<postfx::Context*>(0x1);
   postfx::CreateDesc desc;
-  desc.features = static_cast<postfx::Feature>(1u << 13);
+  desc.features = static_cast<postfx::Feature>(1u << 14);
   EXPECT_EQ(postfx::create(desc, fx), Result::InvalidArgument);
   EXPECT_EQ(fx, nullptr);
   EXPECT_NE(std::string(postfx::lastError(nullptr)).find("unknown feature"), std::string::npos);

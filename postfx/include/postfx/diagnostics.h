@@ -141,9 +141,10 @@ const FrameStats& stats(const Context& context) noexcept;
 struct WorkStep {
   const char* name = "";  // stable "<pass>.<step>", e.g. "god_rays.march" (docs/gpu_cost.md)
   Pass pass = Pass::Caustics;
-  int light = -1;        // ObjectCausticsFrame::lights index of a local light's step, else -1
-  int targetBytes = 0;   // bytes per sample of the render targets it writes, 0 for none
-  bool blended = false;  // its render targets are blended (read-modify-write)
+  int light = -1;       // ObjectCausticsFrame::lights index of a local light's step, else -1
+  int targetBytes = 0;  // bytes per sample of the render targets it writes, 0 for none
+  std::uint64_t viewportPixels = 0;  // a draw's viewport area, 0 for a dispatch or a clear
+  bool blended = false;              // its render targets are blended (read-modify-write)
   // Its GL program (labelled "postfx.<...>", glGetObjectLabel), 0 for a clear: its shaders'
   // arithmetic is the driver's to report (docs/gpu_cost.md reads it from Mesa's NIR).
   GlName program = 0;
@@ -152,6 +153,9 @@ struct WorkStep {
   // its longest. Counted (testing::CountShaderWork), work holds what they really did.
   std::uint64_t statedFetches = 0, statedAtomics = 0;
   bool statedBound = false;
+  // testing::TimeEachStep: the step alone by the CPU's clock, the GPU drained before and
+  // after it (ms); 0 without.
+  double drainedMs = 0.0;
   WorkCounts work;
 };
 struct WorkSteps {

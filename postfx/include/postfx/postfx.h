@@ -65,7 +65,7 @@ enum class Feature : std::uint32_t {
   // Feature::ObjectCaustics; reads the god rays' phase, fades and maxDistance (GodRaySettings,
   // validated with this feature even without Feature::GodRays).
   VolumeCaustics = 1u << 11,
-  // 1u << 12: a testing hook, postfx/testing.h.
+  // 1u << 12 and 1u << 13: testing hooks, postfx/testing.h.
   // Former name, kept so that a host compiles while it renames (CHANGELOG.md).
   PhysicalCaustics [[deprecated("renamed Feature::WavefrontAreaRatio")]] = WavefrontAreaRatio,
 };

@@ -22,6 +22,12 @@ inline constexpr Feature BenchmarkFloor = static_cast<Feature>(1u << 6);
 // dispatch's counters are read back at once (the GPU is waited for: never in a shipping frame;
 // the frame's timings then include the counting). Without workAccount it does nothing.
 inline constexpr Feature CountShaderWork = static_cast<Feature>(1u << 12);
+// With CreateDesc::workAccount: the GPU is drained before and after every step, and the step's
+// time by the CPU's clock kept (WorkStep::drainedMs): a step's own cost on a CPU rasteriser,
+// where the timer queries of a pass cannot separate its draws. The account's queries are left
+// out (they slow such a rasteriser's draws): its counts are the draw and dispatch sizes only.
+// Never in a shipping frame.
+inline constexpr Feature TimeEachStep = static_cast<Feature>(1u << 13);
 
 // With RawCausticOutput: a plugin-owned GL_R16F GL_TEXTURE_2D the size of the last dispatched
 // target holding omega * (n.l) * shadow * fade (mean of R,G,B): the caustic factor with N.L,

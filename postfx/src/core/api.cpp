@@ -124,7 +124,8 @@ Result create(const CreateDesc& desc, Context*& out) noexcept {
     for (int p = 0; p < kPassCount; ++p) shared[p] = present[p] && !detail::isViewPass(Pass(p));
     context->timers.init(
         shared, hasFeature(desc.features, Feature::ObjectCaustics) ? desc.maxLocalLights : 0);
-    context->timers.initWork(desc.workAccount, hasFeature(desc.features, testing::CountShaderWork));
+    context->timers.initWork(desc.workAccount, hasFeature(desc.features, testing::CountShaderWork),
+                             hasFeature(desc.features, testing::TimeEachStep));
     detail::initView(context->defaultView, desc, present);
     mergeStats(*context);
     out = context.release();

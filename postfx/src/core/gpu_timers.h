@@ -24,7 +24,7 @@ class GpuTimers {
   // lights (DSA, no binding changes).
   void init(const std::array<bool, kPassCount>& present, int lights = 0);
   // The work account of these timers' passes (CreateDesc::workAccount), read back with them.
-  void initWork(bool enabled, bool counted) { work_.init(enabled, counted); }
+  void initWork(bool enabled, bool counted, bool drained) { work_.init(enabled, counted, drained); }
   WorkLedger& work() { return work_; }
   const WorkLedger& work() const { return work_; }
 

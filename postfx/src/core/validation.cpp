@@ -181,7 +181,7 @@ Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& 
 }
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
-  if (static_cast<std::uint32_t>(desc.features) >= (1u << 13)) {
+  if (static_cast<std::uint32_t>(desc.features) >= (1u << 14)) {
     error = "CreateDesc.features: unknown feature bits";
     return Result::InvalidArgument;
   }

@@ -9,6 +9,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <initializer_list>
 #include <vector>
@@ -108,8 +109,9 @@ inline constexpr GLuint kWorkCounterBinding = 3;
 // the timers' ring, the steps recorded and their queries.
 class WorkLedger {
  public:
-  // `counted`: the context's programs count their own work (testing::CountShaderWork).
-  void init(bool enabled, bool counted);
+  // `counted`: the context's programs count their own work (testing::CountShaderWork);
+  // `drained`: each step is timed alone (testing::TimeEachStep).
+  void init(bool enabled, bool counted, bool drained);
   bool enabled() const { return enabled_; }
 
   void beginFrame(int slot);
@@ -130,6 +132,7 @@ class WorkLedger {
     int queries = -1;           // index into the frame's query sets, -1 for a clear
     std::uint32_t missing = 0;  // queries not issued (no pipeline statistics, or the host's)
     bool counted = false;       // counts[] read from the shaders' own counters
+    std::chrono::steady_clock::time_point start;  // testing::TimeEachStep
     std::uint32_t counts[9] = {};
   };
   Record& open(const Step& step, Pass pass, int light);
@@ -143,7 +146,7 @@ class WorkLedger {
     std::vector<std::array<glkit::Query, kQueriesPerStep>> queries;  // grows, reused
     int used = 0;
   };
-  bool enabled_ = false, counted_ = false, statistics_ = false;
+  bool enabled_ = false, counted_ = false, drained_ = false, statistics_ = false;
   int slot_ = 0;
   std::array<Frame, kTimerRingDepth> frames_{};
   std::vector<WorkStep> resolved_;
