@@ -72,3 +72,15 @@ postfx_add_test(sample_pool_reference_tests
 target_compile_definitions(sample_pool_reference_tests PRIVATE
   OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
 add_dependencies(sample_pool_reference_tests ocean_sample)
+# The cost model's terms, its GPU table and the NIR counts it reads (docs/gpu_cost.md).
+postfx_add_test(sample_cost_model_tests
+  SOURCES unit/cost_model_test.cpp
+  LIBS ocean_cost_model)
+# bench --work on every feature: counted work within each shader's statement, estimates labelled.
+postfx_add_test(sample_work_bench_tests
+  SOURCES unit/sample_work_bench_test.cpp
+  LIBS nlohmann_json::nlohmann_json)
+target_compile_definitions(sample_work_bench_tests PRIVATE
+  OCEAN_SAMPLE_EXE="$<TARGET_FILE:ocean_sample>")
+target_include_directories(sample_work_bench_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support)
+add_dependencies(sample_work_bench_tests ocean_sample)

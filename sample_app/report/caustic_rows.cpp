@@ -137,10 +137,12 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
     row.width = settings.width;
     row.height = settings.height;
     row.medianMs = run.medianMs;
+    row.estimatedMs = run.estimated(postfx::Pass::Caustics);
     row.floorMs = run.floorMs;
     if (v.prePass) {
       const double prePassMs = run.stats.pass(v.prePass->pass).medianMs;
       row.medianMs += prePassMs;
+      row.estimatedMs += run.estimated(v.prePass->pass);
       char cost[160];
       std::snprintf(cost, sizeof(cost), "incl. %s %.2f ms; ", v.prePass->label, prePassMs);
       row.note = cost;
@@ -148,6 +150,7 @@ bool measureOneSize(const postfx::FrameDesc& hostFrame, const CausticReportSetti
       const postfx::PassStats& tile = run.stats.pass(postfx::Pass::TileIrradiance);
       if (v.prePass->pass != postfx::Pass::TileIrradiance && !tile.skipped) {
         row.medianMs += tile.medianMs;
+        row.estimatedMs += run.estimated(postfx::Pass::TileIrradiance);
         std::snprintf(cost, sizeof(cost), "incl. tile pre-pass %.2f ms; ", tile.medianMs);
         row.note += cost;
       }

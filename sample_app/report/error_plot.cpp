@@ -28,7 +28,8 @@ const float kPalette[][3] = {{0.12f, 0.47f, 0.71f}, {1.00f, 0.50f, 0.05f}, {0.17
 class BuiltInDrawing {
  public:
   explicit BuiltInDrawing(const PlotLayout& layout)
-      : image_(OIIO::ImageSpec(layout.width, layout.height, 3, OIIO::TypeDesc::FLOAT)) {
+      : image_(OIIO::ImageSpec(layout.width, layout.height, 3, OIIO::TypeDesc::FLOAT)),
+        timeLabel_(layout.timeLabel) {
     const float white[3] = {1, 1, 1};
     algo::fill(image_, white);
     text(layout.width / 2, 24, layout.title, 18, algo::TextAlignX::Center);
@@ -70,8 +71,7 @@ class BuiltInDrawing {
     text(panel.left + panel.width / 2, panel.top - 28, panel.title, 16, algo::TextAlignX::Center);
     // OIIO draws no rotated text: the error definition sits above the plot area.
     text(panel.left, panel.top - 10, "y: " + panel.errorAxis, 12, algo::TextAlignX::Left);
-    text(panel.left + panel.width / 2, bottom + 40, "GPU time per frame (ms, median)", 13,
-         algo::TextAlignX::Center);
+    text(panel.left + panel.width / 2, bottom + 40, timeLabel_, 13, algo::TextAlignX::Center);
   }
 
   void drawPanel(const PlotPanel& panel) {
@@ -116,14 +116,15 @@ class BuiltInDrawing {
 
   OIIO::ImageBuf image_;
   bool labels_ = true;  // stays true while the font renders
+  std::string timeLabel_;
 };
 
 }  // namespace
 
 bool writeErrorPlot(const std::string& path, const std::string& title, const std::vector<Row>& rows,
-                    std::string& error, PlotBackend backend, std::string* used) {
+                    std::string& error, PlotBackend backend, std::string* used, TimeAxis axis) {
   PlotLayout layout;
-  if (!layoutErrorPlot(title, rows, layout, error)) return false;
+  if (!layoutErrorPlot(title, rows, layout, error, axis)) return false;
   OIIO::ImageBuf image;
   std::string drawnBy = "built-in";
   const std::string gnuplot = backend == PlotBackend::Auto ? findGnuplot() : "";

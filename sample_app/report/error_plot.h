@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "plot_layout.h"
 #include "report_table.h"
 
 namespace ocean::report {
@@ -16,8 +17,9 @@ enum class PlotBackend {
 
 // With gnuplot, its script is kept as `path` with the extension .gp. `used` (optional) says
 // which drawing was written: "gnuplot" or "built-in".
+// `axis`: the measured time or the cost model's estimate (plot_layout.h).
 bool writeErrorPlot(const std::string& path, const std::string& title, const std::vector<Row>& rows,
                     std::string& error, PlotBackend backend = PlotBackend::Auto,
-                    std::string* used = nullptr);
+                    std::string* used = nullptr, TimeAxis axis = TimeAxis::Measured);
 
 }  // namespace ocean::report

@@ -64,7 +64,7 @@ std::string gnuplotScript(const PlotLayout& layout) {
     << "set multiplot title " << quoted(layout.title) << " font \",14\"\n"
     << "set logscale xy\nset format x \"%g\"\nset format y \"%g\"\n"
     << "set grid xtics ytics mxtics mytics lc rgb \"#dddddd\"\n"
-    << "set xlabel \"GPU time per frame (ms, median)\"\n";
+    << "set xlabel " << quoted(layout.timeLabel) << "\n";
   for (size_t p = 0; p < layout.panels.size(); ++p) {
     const PlotPanel& panel = layout.panels[p];
     for (size_t i = 0; i < panel.series.size(); ++i) {

@@ -73,6 +73,7 @@ Row godRayRow(const char* method, int samples, const validation::PassRun& run,
   row.method = method;
   row.setting = std::to_string(samples) + " samples";
   row.medianMs = run.medianMs;
+  row.estimatedMs = run.estimated(postfx::Pass::GodRays);
   row.floorMs = run.floorMs;
   row.relativeRmse = stats.relativeRmse;
   row.correlation = stats.correlation;

@@ -139,6 +139,7 @@ bool measureLightRows(const ObjectCausticReportSettings& settings, int timedFram
     row.method = c.method;
     row.setting = c.setting;
     row.medianMs = run.medianMs;
+    row.estimatedMs = run.estimatedMs;
     row.floorMs = run.floorMs;
     row.relativeRmse = stats.relativeRmse;
     row.correlation = stats.correlation;
@@ -353,6 +354,7 @@ bool measureObjectCaustics(const validation::ReportTarget& target,
     row.method = v.method;
     row.setting = settingName(v);
     row.medianMs = run.medianMs;
+    row.estimatedMs = run.estimated(postfx::Pass::ObjectCaustics);
     row.floorMs = run.floorMs;
     row.relativeRmse = stats.relativeRmse;
     row.correlation = stats.correlation;

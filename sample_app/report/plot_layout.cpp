@@ -131,7 +131,10 @@ std::vector<const PlotPoint*> PlotPanel::paretoFront() const {
 }
 
 bool layoutErrorPlot(const std::string& title, const std::vector<Row>& rows, PlotLayout& layout,
-                     std::string& error) {
+                     std::string& error, TimeAxis axis) {
+  auto timeOf = [axis](const Row& row) {
+    return axis == TimeAxis::Measured ? row.medianMs : row.estimatedMs;
+  };
   std::vector<PanelRule> rules = panelRules(rows);
   std::vector<bool> claimed(rows.size(), false);
   for (size_t i = 0; i < rows.size(); ++i)
@@ -148,6 +151,9 @@ bool layoutErrorPlot(const std::string& title, const std::vector<Row>& rows, Plo
 
   layout = PlotLayout{};
   layout.title = title;
+  layout.timeLabel = axis == TimeAxis::Measured
+                         ? "GPU time per frame (ms, median)"
+                         : "ESTIMATED GPU time per frame, RTX 3060 class at 1920x1080 (ms)";
   for (const PanelRule& rule : rules) {
     PlotPanel panel;
     panel.title = rule.title;
@@ -155,7 +161,7 @@ bool layoutErrorPlot(const std::string& title, const std::vector<Row>& rows, Plo
     std::vector<double> times, errors;
     for (const Row& row : rows) {
       const double e = rule.error(row);
-      if (!rule.takes(row) || !(row.medianMs > 0.0) || !(e > 0.0) || !std::isfinite(e)) continue;
+      if (!rule.takes(row) || !(timeOf(row) > 0.0) || !(e > 0.0) || !std::isfinite(e)) continue;
       auto found = std::find_if(panel.series.begin(), panel.series.end(),
                                 [&](const PlotSeries& s) { return s.method == row.method; });
       if (found == panel.series.end()) {
@@ -163,7 +169,7 @@ bool layoutErrorPlot(const std::string& title, const std::vector<Row>& rows, Plo
         found = panel.series.end() - 1;
       }
       PlotPoint point;
-      point.ms = row.medianMs;
+      point.ms = timeOf(row);
       point.error = e;
       const size_t start = row.setting.find_first_of("0123456789");
       if (start != std::string::npos)

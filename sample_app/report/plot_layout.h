@@ -39,8 +39,13 @@ struct PlotPanel {
 struct PlotLayout {
   int width = 0, height = 0;  // canvas pixels
   std::string title;
+  std::string timeLabel;  // the x axis's
   std::vector<PlotPanel> panels;
 };
+
+// Which time the x axis shows: the one measured here (Row::medianMs, llvmpipe where no GPU is),
+// or the cost model's estimate on a GPU class (Row::estimatedMs, docs/gpu_cost.md).
+enum class TimeAxis { Measured, Estimated };
 
 // Label glyph metrics both renderers are set up to match (DejaVu Sans at this size).
 inline constexpr int kLabelFontPx = 11;
@@ -50,6 +55,6 @@ inline constexpr int kParetoRingPx = 9;  // radius of the ring that marks a Pare
 // Rows without a positive time and a positive finite error for their panel are left out.
 // False with a message when no row can be plotted.
 bool layoutErrorPlot(const std::string& title, const std::vector<Row>& rows, PlotLayout& layout,
-                     std::string& error);
+                     std::string& error, TimeAxis axis = TimeAxis::Measured);
 
 }  // namespace ocean::report

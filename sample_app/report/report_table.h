@@ -15,6 +15,9 @@ struct Row {
   std::string setting;  // what varies along the series, e.g. "16 samples"
   double medianMs = 0.0;
   double floorMs = 0.0;  // floor pass measured in the same run (same inputs and outputs)
+  // The cost model's ESTIMATE of the same work on the RTX 3060 class, its per-pixel steps at
+  // 1920x1080 (docs/gpu_cost.md; validation::PassRun::estimatedMs); NaN: not estimated.
+  double estimatedMs = kNotApplicable;
   // Error against the CPU reference over the compared pixels:
   double relativeRmse = kNotApplicable;  // sqrt(sum (x - r)^2 / sum r^2), absolute scale
   double affineRmse = kNotApplicable;    // the same after the best fit a x + b (methods whose
@@ -48,5 +51,11 @@ bool writeCsv(const std::string& path, const ReportInfo& info, const std::vector
               std::string& error);
 bool writeMarkdown(const std::string& path, const ReportInfo& info, const std::vector<Row>& rows,
                    const std::string& plotFile, std::string& error);
+
+// Whether any row has the cost model's estimate (Row::estimatedMs).
+bool anyEstimated(const std::vector<Row>& rows);
+// The file of the plot against the estimate beside `plotFile` ("x.png": "x_gpu_estimate.png"),
+// written where anyEstimated and linked by writeMarkdown.
+std::string estimatePlotFile(const std::string& plotFile);
 
 }  // namespace ocean::report

@@ -38,6 +38,7 @@ bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame,
                              : "ray deviation on a slope, along the light";
       row.setting = setting;
       row.medianMs = lookup->run.medianMs;
+      row.estimatedMs = lookup->run.estimated(postfx::Pass::Caustics);
       row.floorMs = lookup->run.floorMs;
       row.affineRmse = lookup->stats.affineRmse;  // omega has no absolute scale
       row.correlation = lookup->stats.correlation;
@@ -57,6 +58,7 @@ bool measureSlopedCaustics(const postfx::FrameDesc& hostFrame,
       row.method = "wavefront area ratio on a slope (check of the comparison)";
       row.setting = setting;
       row.medianMs = c.physical.run.medianMs;
+      row.estimatedMs = c.physical.run.estimated(postfx::Pass::Caustics);
       row.floorMs = c.physical.run.floorMs;
       row.relativeRmse = c.physical.stats.relativeRmse;
       row.affineRmse = c.physical.stats.affineRmse;  // the plot's slope panel compares on it

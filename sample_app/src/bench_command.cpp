@@ -15,7 +15,6 @@
 // rows views_<n>, against the same views drawn by one context each, rows contexts_<n>.
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -30,8 +29,10 @@
 #include "multi_view.h"
 #include "plugin_setup.h"
 #include "renderer.h"
+#include "shader_statistics.h"
 #include "view_flags.h"
 #include "water_bench.h"
+#include "work_bench.h"
 
 namespace ocean {
 namespace {
@@ -64,11 +65,14 @@ struct Row {
 
 int runBench(const Options& commandOptions) {
   std::string error;
+  // The work account's arithmetic comes from Mesa's dump of each program it links.
+  if (commandOptions.work) cost::requestMesaShaderDump();
   HeadlessSession session;
   if (!openHeadlessSession(commandOptions, /*debug=*/false, /*benchmarkFloor=*/true, session,
                            error)) {
     return commandFailed(error);
   }
+  if (commandOptions.work) return runWorkBench(session, commandOptions);
   // The variants start from the settings the preset is shown with.
   const Options options = withPresetCaustics(commandOptions, session.preset);
   Renderer& renderer = *session.renderer;
@@ -295,12 +299,7 @@ int runBench(const Options& commandOptions) {
   }
   std::fputs(waterTable.str().c_str(), stdout);
 
-  if (!options.json.empty()) {
-    std::ofstream file(options.json);
-    file << json.dump(2) << '\n';
-    if (!file) return commandFailed("cannot write '" + options.json + "'");
-  }
-  return 0;
+  return options.json.empty() ? 0 : writeResultFile(options.json, json.dump(2));
 }
 
 }  // namespace ocean

@@ -27,6 +27,7 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--no-caustics",
                                               "--no-god-rays",
                                               "--no-object-caustics",
+                                              "--volume-caustics",
                                               "--no-volume-caustics",
                                               "--volume-method",
                                               "--flat-local-water",
@@ -46,6 +47,7 @@ constexpr std::string_view kSceneOptions[] = {"--preset",
                                               "--max-receiver-depth",
                                               "--tile-depth-layers",
                                               "--god-rays-resolution",
+                                              "--god-ray-samples",
                                               "--triplanar-walls",
                                               "--camera-position",
                                               "--camera-look-at",
@@ -114,7 +116,8 @@ them, N up to 2^40, k/M/G suffixes) raises them.)";
 
 // Flags that say opposite things: given both, the one applied last would win unseen.
 constexpr std::pair<std::string_view, std::string_view> kContradictingFlags[] = {
-    {"--reflected-caustics", "--no-reflected-caustics"}};
+    {"--reflected-caustics", "--no-reflected-caustics"},
+    {"--volume-caustics", "--no-volume-caustics"}};
 
 struct CommandSpec {
   std::string_view name;
@@ -167,7 +170,7 @@ const std::vector<CommandSpec>& commands() {
        "each variant (caustics_all_cascades, caustics_triplanar_walls, god_rays[_half|_quarter]"
        "_<n>, wavefront_area_ratio_<n>[_tile_irradiance|_caustics], "
        "object_caustics_<map>_<grid>_<iterations>).",
-       {"--frames", "--json", "--only"},
+       {"--frames", "--json", "--only", "--work", "--gpu"},
        true,
        "",
        60,

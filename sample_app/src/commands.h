@@ -9,6 +9,8 @@ namespace ocean {
 
 // The one error line every command writes: "ocean_sample: <message>" on stderr. Returns 1.
 int commandFailed(const std::string& message);
+// Writes `text` and a newline to `path` (a command's --json): 0, or commandFailed's 1 naming it.
+int writeResultFile(const std::string& path, const std::string& text);
 
 int runRender(const Options& options);
 // render --views N > 1, --stereo or --cube-map: several views of one frame in one plugin dispatch.

@@ -1,5 +1,7 @@
 #include "option_values.h"
 
+#include <postfx/postfx.h>
+
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -308,6 +310,14 @@ const std::array kValueOptions{
                   error = "--god-rays-resolution must be full, half or quarter" + got(text);
                   return false;
                 }},
+    ValueOption{"--god-ray-samples", "N",
+                "god rays' samples per pixel (grid planes crossed), 4..64 (default: the plugin's 16)",
+                false,
+                [](std::string_view text, Options& o, std::string& error) {
+                  return intIn(text, postfx::kGodRaySampleCountRange.min,
+                               postfx::kGodRaySampleCountRange.max, o.godRaySamples,
+                               "--god-ray-samples", error);
+                }},
     ValueOption{"--camera-position", "X,Y,Z",
                 "camera position in metres (y up, water at y = 0); default: the preset's", false,
                 [](std::string_view text, Options& o, std::string& error) {
@@ -383,6 +393,14 @@ const std::array kValueOptions{
                   o.json = text;
                   return true;
                 }},
+    ValueOption{"--gpu", "NAMES",
+                "bench --work: the GPU classes to estimate for, comma-separated: gtx960m, "
+                "rtx3060, rtx4090 or all (default rtx3060)",
+                false,
+                [](std::string_view text, Options& o, std::string&) {
+                  o.gpu = text;  // checked against the class table when the bench starts
+                  return true;
+                }},
     ValueOption{"--only", "PREFIX", "run only the variant rows whose name starts with PREFIX",
                 false,
                 [](std::string_view text, Options& o, std::string&) {
@@ -455,8 +473,11 @@ const std::array kFlagOptions{
                [](Options& o) { o.godRays = false; }},
     FlagOption{"--no-object-caustics", "leave the glass and metal objects' caustics out",
                [](Options& o) { o.objectCaustics = false; }},
-    FlagOption{"--no-volume-caustics",
-               "leave out the light the glass objects focus, seen in the water",
+    FlagOption{"--volume-caustics",
+               "add the light the glass objects focus, seen in the water (over the GPU "
+               "budget with the object caustics: docs/gpu_cost.md)",
+               [](Options& o) { o.volumeCaustics = true; }},
+    FlagOption{"--no-volume-caustics", "leave out the light the glass objects focus (the default)",
                [](Options& o) { o.volumeCaustics = false; }},
     FlagOption{"--flat-local-water",
                "give the plugin the pool's or wake's regions flat (compare --flat's frame)",
@@ -481,6 +502,10 @@ const std::array kFlagOptions{
     FlagOption{"--no-overlay", "view: no overlay (timings in the title bar, as before it)",
                [](Options& o) { o.overlay = false; }},
     FlagOption{"--quick", "a smoke run in a few minutes", [](Options& o) { o.quick = true; }},
+    FlagOption{"--work",
+               "bench: each pass's work account (counted in its shaders) and estimated GPU time "
+               "(--gpu) beside its llvmpipe time and the CPU model's prediction of it",
+               [](Options& o) { o.work = true; }},
 };
 
 }  // namespace

@@ -43,17 +43,25 @@ struct Options {
   // render: a side-by-side stereo pair instead: two parallel eyes 6.4 cm apart about the camera,
   // each half the width, one dispatch (left eye on the left).
   bool stereo = false;
-  std::string screenshot;      // view: the window's last frame as PNG ("": none)
-  bool overlay = true;         // view: the Dear ImGui overlay (timings, live settings)
-  std::string json;            // bench: JSON output path
-  std::string only;            // bench: run only the variant rows whose name starts with this
+  std::string screenshot;  // view: the window's last frame as PNG ("": none)
+  bool overlay = true;     // view: the Dear ImGui overlay (timings, live settings)
+  std::string json;        // bench: JSON output path
+  std::string only;        // bench: run only the variant rows whose name starts with this
+  // bench --work: each pass's work account and its estimated GPU time on the GPU classes named
+  // by --gpu (comma-separated, docs/gpu_cost.md) instead of the timing variants.
+  bool work = false;
+  std::string gpu = "rtx3060";
+  // How the plugin's context keeps its work account (PluginSetup): off, the driver's queries,
+  // or counted in the shaders as well (testing::CountShaderWork).
+  // Timed: the driver's queries with each step timed alone (testing::TimeEachStep).
+  enum class WorkAccount { Off, Queries, Counted, Timed } workAccount = WorkAccount::Off;
   bool caustics = true;        // the plugin's seabed caustics
   bool godRays = true;         // the plugin's underwater god rays
   bool objectCaustics = true;  // the plugin's light-map caustics of glass and metal models
-  // The light those objects focus, seen in the water (Feature::VolumeCaustics): on with the
-  // object caustics unless --no-volume-caustics; --volume-method: 1 beams, 2 lines, 0 the
-  // plugin's default (beams).
-  bool volumeCaustics = true;
+  // The light those objects focus, seen in the water (Feature::VolumeCaustics): with
+  // --volume-caustics only, since with the object caustics it exceeds their GPU budget
+  // (docs/gpu_cost.md); --volume-method: 1 beams, 2 lines, 0 the plugin's default (beams).
+  bool volumeCaustics = false;
   int volumeMethod = 0;
   // The plugin is given the local water regions (pool, wake) with flat surfaces, the sample's
   // own drawing unchanged: with --caustics-model ray-deviation --tau 0, flat water's frame of
@@ -103,6 +111,7 @@ struct Options {
   int tileDepthLayers = 0;
   // God-ray march resolution divisor: 1 full, 2 half, 4 quarter; 0 keeps the plugin's default.
   int godRayResolution = 0;
+  int godRaySamples = 0;  // GodRaySettings::sampleCount; 0 keeps the plugin's default
   int waterResolution = 256;
   bool quick = false;  // report: a smoke run in a few minutes
   // Camera and sun over the preset's (each unset keeps the preset's value); see view_flags.h.

@@ -2,10 +2,13 @@
 
 #include <epoxy/gl.h>
 
+#include <array>
 #include <cstdio>
 
+#include <pass_runner.h>
 #include <pattern_comparison.h>
 
+#include "frame_estimate.h"
 #include "headless_session.h"
 #include "traced_caustics_pass.h"
 
@@ -16,16 +19,22 @@ double luminance(const float* rgba) {
   return 0.2126 * double(rgba[0]) + 0.7152 * double(rgba[1]) + 0.0722 * double(rgba[2]);
 }
 
-// The sweep's frame with `change` applied to its options, rendered once: the session for
-// whatever the caller reads of it.
-bool renderFrame(const Options& base, const PatternSweep& sweep, void (*change)(Options&),
-                 bool benchmarkFloor, HeadlessSession& session, std::string& error) {
+// The options of the sweep's frame with `change` applied.
+Options frameOptions(const Options& base, const PatternSweep& sweep, void (*change)(Options&)) {
   Options options = base;
   options.preset = sweep.preset;
   options.width = sweep.width;
   options.height = sweep.height;
   if (sweep.frame != nullptr) sweep.frame(options);
   if (change != nullptr) change(options);
+  return options;
+}
+
+// The sweep's frame with `change` applied to its options, rendered once: the session for
+// whatever the caller reads of it.
+bool renderFrame(const Options& base, const PatternSweep& sweep, void (*change)(Options&),
+                 bool benchmarkFloor, HeadlessSession& session, std::string& error) {
+  const Options options = frameOptions(base, sweep, change);
   if (!openHeadlessSession(options, /*debug=*/false, benchmarkFloor, session, error)) return false;
   const FrameInput input{session.preset.camera, session.preset.sun, options.timeSeconds};
   return session.renderer->render(input, error);
@@ -74,6 +83,11 @@ bool measurePatternSweep(const Options& base, const PatternSweep& sweep,
             sweep.reflected ? result.reflectedNoiseQuantile : result.noiseQuantile,
             result.converged};
 
+  // The estimates' class (PassRun::estimatedMs): the RTX 3060's at 1920x1080.
+  std::vector<cost::GpuClass> gpus;
+  if (validation::estimatingRuns() && !cost::selectGpuClasses("rtx3060", gpus, error)) return false;
+  const cost::GpuClass gpu = gpus.empty() ? cost::GpuClass{} : gpus[0];
+
   HeadlessSession flatSession;
   if (!renderFrame(base, sweep, sweep.flat, false, flatSession, error)) return false;
   const std::vector<double> flatLight = addedLight(flatSession.renderer->readRadiance(), baseFrame);
@@ -103,6 +117,13 @@ bool measurePatternSweep(const Options& base, const PatternSweep& sweep,
     row.setting = sweep.settingLabel + " " + std::to_string(value);
     row.medianMs = stats.pass(sweep.pass).medianMs;
     row.floorMs = stats.pass(postfx::Pass::Floor).medianMs;
+    if (validation::estimatingRuns()) {
+      std::array<double, postfx::kPassCount> estimated{};
+      if (!estimatePasses(measured, frameOptions(options, sweep, nullptr), gpu, 1920.0 * 1080.0,
+                          true, estimated, error))
+        return false;
+      row.estimatedMs = estimated[static_cast<int>(sweep.pass)];
+    }
     row.relativeRmse = c.relativeRmse;
     row.correlation = c.correlation;
     row.contrast = c.methodContrast;

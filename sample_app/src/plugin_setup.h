@@ -30,6 +30,11 @@ class PluginSetup {
   // the factor that makes its sun (the beam below the surface) that sun (reflectedIntensity).
   postfx::ReflectedCausticsSettings& reflectedCaustics() { return reflectedCaustics_; }
   const postfx::FrameStats& stats() const { return postfx::stats(*context_); }
+  // The work account's steps of the last resolved frame (Options::workAccount).
+  postfx::WorkSteps workSteps() const { return postfx::workSteps(*context_); }
+  // Each later dispatch's time by the CPU's clock (ms), the GL pipeline drained before and
+  // after it, appended to `out` (null: not measured). For bench --work on a CPU rasteriser.
+  void measureWallTime(std::vector<double>* out) { wallTimes_ = out; }
   // Several views in one dispatch (split-screen, a cube-map probe): the first frame gives what
   // they share (sun, water, casters, the receiver maps), each frame its camera, G-buffer, target
   // and sun shadow map. The plugin's views are made on first use, one per position in the list.
@@ -70,6 +75,7 @@ class PluginSetup {
   bool flatWater_ = false;
   GLuint flatWaterTexture_ = 0;
   std::vector<postfx::LocalWater> regions_;  // the scene's, changed by those two options
+  std::vector<double>* wallTimes_ = nullptr;
 };
 
 }  // namespace ocean

@@ -13,6 +13,7 @@
 #include <object_caustic_rows.h>
 #include <pass_runner.h>
 #include <report_table.h>
+#include <shader_statistics.h>
 #include <slope_rows.h>
 #include <source_revision.h>
 #include <stability_rows.h>
@@ -104,6 +105,10 @@ int runReport(const Options& given) {
   std::filesystem::create_directories(options.out, fsError);
   if (fsError) return commandFailed("cannot create '" + options.out + "': " + fsError.message());
 
+  // Every row is estimated on a GPU class too (docs/gpu_cost.md): the driver's dump of each
+  // program's arithmetic must be asked for before the GL context exists.
+  cost::requestMesaShaderDump();
+  validation::estimateRuns(true);
   std::string error;
   HeadlessSession session;
   if (!openHeadlessSession(options, /*debug=*/false, /*benchmarkFloor=*/false, session, error))
@@ -124,11 +129,20 @@ int runReport(const Options& given) {
   }
   const std::string dir = options.out + "/";
   std::vector<report::Row> rows;
+  // Beside the plot against llvmpipe's time, the same rows against the cost model's estimate.
+  auto writeEstimatePlot = [&](const std::string& plot, const std::string& title) {
+    return !report::anyEstimated(rows) ||
+           report::writeErrorPlot(report::estimatePlotFile(plot),
+                                  title + ", ESTIMATED on the RTX 3060 class at 1920x1080", rows,
+                                  error, report::PlotBackend::Auto, nullptr,
+                                  report::TimeAxis::Estimated);
+  };
   // One sweep's rows alone into <name>.{csv,md,png}.
   auto writeSection = [&](const char* name, const std::string& title) {
     const std::string stem = dir + name;
     if (!report::writeCsv(stem + ".csv", info, rows, error) ||
         !report::writeErrorPlot(stem + ".png", title + ", " + info.device, rows, error) ||
+        !writeEstimatePlot(stem + ".png", title) ||
         !report::writeMarkdown(stem + ".md", info, rows, std::string(name) + ".png", error))
       return false;
     std::fprintf(stderr, "report: wrote %s.{csv,md,png} (%zu rows)\n", stem.c_str(), rows.size());
@@ -203,6 +217,7 @@ int runReport(const Options& given) {
       (!report::writeCsv(dir + "error_vs_time.csv", info, rows, error) ||
        !report::writeErrorPlot(dir + "error_vs_time.png", "error against GPU time, " + info.device,
                                rows, error) ||
+       !writeEstimatePlot(dir + "error_vs_time.png", "error against GPU time") ||
        !report::writeMarkdown(dir + "error_vs_time.md", info, rows, "error_vs_time.png", error)))
     return commandFailed(error);
   if (!report::writeStabilityTables(dir, info, stability, stabilityRows, stabilityNote, error))

@@ -78,6 +78,7 @@ bool measureVolumeRows(const VolumeReportSettings& settings, std::vector<report:
       row.method = m.name;
       row.setting = "grid " + std::to_string(grid);
       row.medianMs = with.medianMs;
+      row.estimatedMs = with.estimatedMs;
       row.floorMs = with.floorMs;
       row.relativeRmse = e.relativeRmse;
       row.correlation = e.correlation;
@@ -132,6 +133,7 @@ bool measureVolumeRows(const VolumeReportSettings& settings, std::vector<report:
       row.method = v.name;
       row.setting = std::to_string(v.samples) + " samples";
       row.medianMs = run.medianMs;
+      row.estimatedMs = run.estimatedMs;
       row.floorMs = run.floorMs;
       row.relativeRmse = cone.relativeRmse;
       row.correlation = cone.correlation;
@@ -173,6 +175,7 @@ bool measureVolumeRows(const VolumeReportSettings& settings, std::vector<report:
       row.method = std::string(m.name) + ", " + what;
       row.setting = "grid " + std::to_string(s.gridSize);
       row.medianMs = with.medianMs;
+      row.estimatedMs = with.estimatedMs;
       row.floorMs = with.floorMs;
       row.width = settings.costWidth;
       row.height = settings.costHeight;

@@ -172,6 +172,7 @@ bool runOnHost(const LightCausticScene& scene, const postfx::ObjectCausticsSetti
   if (!runPass(create, frame, postfx::Pass::ObjectCaustics, target, timedFrames, run, error))
     return false;
   out.medianMs = sun ? run.medianMs : run.stats.objectLight(0).medianMs;
+  out.estimatedMs = run.estimated(postfx::Pass::ObjectCaustics);
   out.floorMs = run.floorMs;
   out.skip = run.stats.lightSkip[0];
   out.irradiance.resize(size_t(n) * n);

@@ -5,6 +5,7 @@
 // receiver map of the floor, the sun left out (ObjectCausticsFrame::sunCaustics = false). The
 // light added to the target, over the floor's white albedo, is the caustic's irradiance on the
 // floor: it meets ocean::reference::traceSphereFromLight in the same bins.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ reference::ReceiverBins sceneBins(const LightCausticScene& scene);
 struct LightCausticRun {
   std::vector<glm::dvec3> irradiance;    // per bin: the light added over the floor
   double medianMs = 0.0, floorMs = 0.0;  // the light's own timing, the floor pass's
+  double estimatedMs =
+      std::numeric_limits<double>::quiet_NaN();  // PassRun::estimatedMs of Pass::ObjectCaustics
+                                                 // (the light's work)
   postfx::LightSkip skip = postfx::LightSkip::None;
 };
 

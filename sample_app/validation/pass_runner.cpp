@@ -1,14 +1,57 @@
 #include "pass_runner.h"
 #include <postfx/testing.h>
 
+#include <gpu_cost.h>
 #include <object_caustics_metrics.h>
+#include <shader_statistics.h>
+
+#include <memory>
 
 namespace ocean::validation {
 namespace {
 
 constexpr int kWarmupFrames = 4;
+bool estimating = false;
+
+// PassRun::estimatedMs: `frame` counted once in a context of its own.
+void estimateRun(postfx::CreateDesc create, const postfx::FrameDesc& frame,
+                 postfx::testing::GodRaySampling sampling,
+                 const std::map<std::string, cost::ProgramStatistics>& programs, double viewPixels,
+                 PassRun& out) {
+  out.estimatedMs.fill(0.0);
+  std::vector<cost::GpuClass> gpus;
+  std::string error;
+  if (!cost::selectGpuClasses("rtx3060", gpus, error)) return;
+  create.features = create.features | postfx::testing::CountShaderWork;
+  create.workAccount = true;
+  postfx::Context* context = nullptr;
+  if (postfx::create(create, context) != postfx::Result::Ok) return;
+  postfx::testing::setGodRaySampling(*context, sampling);
+  bool ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
+  glFinish();
+  ok = ok && postfx::dispatch(*context, frame) == postfx::Result::Ok;
+  const postfx::WorkSteps steps = postfx::workSteps(*context);
+  for (int i = 0; ok && i < steps.count; ++i) {
+    const postfx::WorkStep& s = steps.steps[i];
+    const auto p = programs.find(cost::programLabel(s.program));
+    const cost::StepAlu alu =
+        p == programs.end() ? cost::StepAlu{} : cost::stepAlu(p->second, s.work);
+    const postfx::WorkStep at1080 = cost::atViewSize(s, viewPixels, 1920.0 * 1080.0);
+    out.estimatedMs[static_cast<int>(s.pass)] += cost::estimate(at1080, alu, gpus[0]).seconds * 1e3;
+  }
+  out.hasEstimate = ok && steps.count > 0;
+  postfx::destroy(context);
+}
 
 }  // namespace
+
+void estimateRuns(bool on) {
+  estimating = on;
+}
+
+bool estimatingRuns() {
+  return estimating;
+}
 
 ReportTarget::ReportTarget(int width, int height)
     : texture_(glkit::createTexture(GL_TEXTURE_2D, {})), width_(width), height_(height) {
@@ -19,8 +62,12 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pa
              const ReportTarget& target, int timedFrames, PassRun& out, std::string& error,
              postfx::testing::GodRaySampling sampling) {
   create.features = create.features | postfx::testing::BenchmarkFloor;
+  // Mesa's dump of the programs this context builds (where the caller asked for it): the
+  // arithmetic of the estimate.
+  auto dump = estimating ? std::make_unique<cost::ShaderDumpCapture>() : nullptr;
   postfx::Context* context = nullptr;
   if (postfx::create(create, context) != postfx::Result::Ok) {
+    dump.reset();
     error = std::string("postfx: ") + postfx::lastError(nullptr);
     return false;
   }
@@ -35,6 +82,10 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pa
     ok = postfx::dispatch(*context, frame) == postfx::Result::Ok;
     glFinish();
   }
+  const std::map<std::string, cost::ProgramStatistics> programs =
+      dump ? cost::labelled(cost::parseNirDump(dump->text()))
+           : std::map<std::string, cost::ProgramStatistics>{};
+  dump.reset();
   if (ok) {
     const postfx::FrameStats& stats = postfx::stats(*context);
     out.medianMs = stats.pass(pass).medianMs;
@@ -61,6 +112,9 @@ bool runPass(postfx::CreateDesc create, postfx::FrameDesc frame, postfx::Pass pa
       out.objectMap = ocean::reference::readObjectMap(out.objectMapPlacement);
   }
   postfx::destroy(context);
+  if (ok && estimating)
+    estimateRun(create, frame, sampling, programs, double(target.width()) * double(target.height()),
+                out);
   return ok;
 }
 

@@ -7,6 +7,8 @@
 
 #include <glkit/handle.h>
 
+#include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,18 @@ struct PassRun {
   // and texture 0 when the object caustics did not run.
   std::vector<glm::dvec3> objectMap;
   postfx::ObjectCausticMap objectMapPlacement;
+  // The cost model's ESTIMATE of each pass of the run (docs/gpu_cost.md), ms, on the RTX 3060
+  // class with its per-pixel steps at 1920x1080 (cost::atViewSize): the frame once more with
+  // the work counted in the shaders, their arithmetic from Mesa's dump of the timed context's
+  // programs (cost::requestMesaShaderDump before the GL context; without it, the invocations'
+  // overhead alone). A local light's work counts in Pass::ObjectCaustics.
+  // NaN where the run was not estimated (estimateRuns off, or the counted frame failed).
+  std::array<double, postfx::kPassCount> estimatedMs{};
+  bool hasEstimate = false;
+  double estimated(postfx::Pass pass) const {
+    return hasEstimate ? estimatedMs[static_cast<int>(pass)]
+                       : std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 // A GL_RGBA32F target of the frame's size, owned by the report.
@@ -41,6 +55,11 @@ class ReportTarget {
   glkit::Texture texture_;
   int width_, height_;
 };
+
+// Whether every later runPass also estimates its work (PassRun::estimatedMs; a second context
+// and frame each): the report turns it on, the tests leave it off.
+void estimateRuns(bool on);
+bool estimatingRuns();
 
 // `frame`'s target is replaced by `target`; BenchmarkFloor is added to `create.features`.
 // `sampling`: the god-ray test hook (postfx/testing.h) for the context.

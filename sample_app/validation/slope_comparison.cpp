@@ -37,6 +37,9 @@ bool runVariant(const postfx::FrameDesc& frame, postfx::Feature features, const 
   // run (the physical window runs both: the tile irradiance continues it).
   out.run.medianMs += out.run.stats.pass(postfx::Pass::WavefrontAreaRatio).medianMs +
                       out.run.stats.pass(postfx::Pass::TileIrradiance).medianMs;
+  out.run.estimatedMs[static_cast<int>(postfx::Pass::Caustics)] +=
+      out.run.estimated(postfx::Pass::WavefrontAreaRatio) +
+      out.run.estimated(postfx::Pass::TileIrradiance);
   out.binned = plane.binned(out.run.raw, scale);
   out.stats = compareWithReference(out.binned, truth);
   return true;

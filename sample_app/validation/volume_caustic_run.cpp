@@ -182,6 +182,7 @@ bool runVolumeCaustic(const VolumeCausticScene& scene,
         out.medianMs = 0.0;
         for (int k = 0; k < lightCount; ++k) out.medianMs += run.stats.objectLight(k).medianMs;
       }
+      out.estimatedMs = run.estimated(postfx::Pass::ObjectCaustics);
       out.floorMs = run.floorMs;
       out.light.resize(run.image.size());
       for (size_t i = 0; i < run.image.size(); ++i)

@@ -4,6 +4,7 @@
 // looking at a wall behind it (a plane G-buffer), so that the cone of light between the sphere
 // and the floor lies in the open water in front of the wall. The plugin's image and the CPU
 // reference (ocean::reference::renderVolumeCausticReference) of the same frame.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,9 @@ struct VolumeCausticRun {
   std::vector<glm::dvec3> godRayReference;  // VolumeCausticOptions::godRayReference
   // Pass::ObjectCaustics (with point lights: the sum of their own timings) and the floor
   double medianMs = 0.0, floorMs = 0.0;
+  double estimatedMs =
+      std::numeric_limits<double>::quiet_NaN();  // PassRun::estimatedMs of Pass::ObjectCaustics
+                                                 // (lights included)
 };
 
 bool runVolumeCaustic(const VolumeCausticScene& scene,

@@ -218,6 +218,59 @@ TEST_F(ReportPlotFile, TableNamesEachRowsSizeAndContrast) {
   EXPECT_NE(mdText.find("| 0.480 / 0.550 |"), std::string::npos) << mdText;
 }
 
+// The estimate's axis plots each row at its estimated GPU time, leaves out the rows never
+// estimated, and says it is an estimate; the table carries the estimate beside the measurement
+// and links the second plot.
+TEST_F(ReportPlotFile, EstimatedGpuTimeHasItsOwnAxisAndColumn) {
+  std::vector<Row> rows = {row("god_rays", "god rays", "8 samples", 40.0, 0.2, 0.1),
+                           row("god_rays", "god rays", "16 samples", 80.0, 0.1, 0.05),
+                           row("god_rays", "god rays", "32 samples", 160.0, 0.05, 0.02)};
+  rows[0].estimatedMs = 0.06;
+  rows[1].estimatedMs = 0.11;  // the 32-sample row was not estimated
+  ocean::report::PlotLayout measured, estimated;
+  std::string error;
+  ASSERT_TRUE(ocean::report::layoutErrorPlot("t", rows, measured, error)) << error;
+  ASSERT_TRUE(ocean::report::layoutErrorPlot("t", rows, estimated, error,
+                                             ocean::report::TimeAxis::Estimated))
+      << error;
+  ASSERT_EQ(estimated.panels.size(), 1u);
+  ASSERT_EQ(estimated.panels[0].series[0].points.size(), 2u);
+  EXPECT_DOUBLE_EQ(estimated.panels[0].series[0].points[1].ms, 0.11);
+  EXPECT_EQ(measured.panels[0].series[0].points.size(), 3u);
+  EXPECT_NE(estimated.timeLabel.find("ESTIMATED"), std::string::npos);
+  EXPECT_EQ(measured.timeLabel.find("ESTIMATED"), std::string::npos);
+  EXPECT_TRUE(ocean::report::anyEstimated(rows));
+  EXPECT_FALSE(ocean::report::anyEstimated({row("god_rays", "g", "1", 1.0, 0.1, 0.1)}));
+  EXPECT_EQ(ocean::report::estimatePlotFile("error_vs_time.png"), "error_vs_time_gpu_estimate.png");
+  EXPECT_EQ(ocean::report::estimatePlotFile("out.d/plot"), "out.d/plot_gpu_estimate");
+
+  ocean::report::ReportInfo info;
+  info.width = 320;
+  info.height = 180;
+  const fs::path csv = dir_ / "t.csv", md = dir_ / "t.md";
+  ASSERT_TRUE(ocean::report::writeCsv(csv.string(), info, rows, error)) << error;
+  ASSERT_TRUE(ocean::report::writeMarkdown(md.string(), info, rows, "p.png", error)) << error;
+  auto read = [](const fs::path& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string csvText = read(csv), mdText = read(md);
+  EXPECT_NE(csvText.find("floor_ratio,estimated_gpu_ms,"), std::string::npos) << csvText;
+  EXPECT_NE(csvText.find(",0.11,"), std::string::npos) << csvText;
+  EXPECT_NE(mdText.find("est. GPU ms"), std::string::npos) << mdText;
+  EXPECT_NE(mdText.find("| 0.110 |"), std::string::npos) << mdText;
+  EXPECT_NE(mdText.find("(p_gpu_estimate.png)"), std::string::npos) << mdText;
+  EXPECT_NE(mdText.find("not a measurement"), std::string::npos) << mdText;
+  // The built-in drawing writes the estimate's plot too.
+  const fs::path png = dir_ / "error_vs_time.png";
+  ASSERT_TRUE(ocean::report::writeErrorPlot(png.string(), "t", rows, error,
+                                            ocean::report::PlotBackend::BuiltIn, nullptr,
+                                            ocean::report::TimeAxis::Estimated))
+      << error;
+  OIIO::ImageBuf image(png.string());
+  EXPECT_TRUE(image.read()) << image.geterror();
+}
+
 // The table says when and from which code it was measured, so docs/measurements.md can quote it;
 // a run that knows neither says so rather than leaving the line out.
 TEST_F(ReportPlotFile, TableNamesItsDateAndCodeRevision) {

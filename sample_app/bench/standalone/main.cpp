@@ -4,12 +4,21 @@
 // one fresh plugin context per configuration with the benchmark floor beside it: each row is the
 // median GPU time of the configuration's passes and its ratio to the floor measured in the same
 // run (a full-screen pass reading the same inputs with no math), the number comparable across
-// machines. Prints a table; --json FILE writes the rows too.
+// machines. Prints a table; --json FILE writes the rows too. --work also runs each configuration
+// once with the work account counted in its shaders and prints, beside the measured time, each
+// GPU class's ESTIMATE of it (docs/gpu_cost.md; --gpu names the classes), the shaders'
+// arithmetic read from Mesa's dump here (--write-alu FILE keeps it) or from a file written so on
+// another machine (--alu FILE): a GPU's driver prints none.
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,7 +28,9 @@
 #include <postfx/water/ocean.h>
 #include <nlohmann/json.hpp>
 
+#include "gpu_cost.h"
 #include "seabed_gbuffer.h"
+#include "shader_statistics.h"
 
 namespace {
 
@@ -29,6 +40,9 @@ struct Options {
   int width = 1920, height = 1080, frames = postfx::kTimerMedianWindow;
   std::string json;
   std::string only;  // run only the rows whose name starts with this
+  bool work = false;
+  std::string gpu = "rtx3060";
+  std::string alu, writeAlu;  // program statistics: read from, written to
 };
 
 struct Config {
@@ -44,6 +58,7 @@ struct Row {
   std::string name;
   double ms = 0.0, floorMs = 0.0;
   std::vector<std::pair<std::string, double>> passes, shown;
+  std::vector<std::pair<std::string, double>> estimates;  // per GPU class, the counted passes'
 };
 
 bool parse(int argc, char** argv, Options& options, std::string& error) {
@@ -52,8 +67,12 @@ bool parse(int argc, char** argv, Options& options, std::string& error) {
     if (flag == "--help" || flag == "-h") {
       error =
           "usage: postfx_bench [--width W] [--height H] [--frames N] [--json FILE] [--only "
-          "PREFIX]";
+          "PREFIX] [--work [--gpu NAMES] [--alu FILE]] [--write-alu FILE]";
       return false;
+    }
+    if (flag == "--work") {
+      options.work = true;
+      continue;
     }
     if (i + 1 >= argc) {
       error = flag + " needs a value (try --help)";
@@ -67,6 +86,12 @@ bool parse(int argc, char** argv, Options& options, std::string& error) {
       options.json = value;
     } else if (flag == "--only") {
       options.only = value;
+    } else if (flag == "--gpu") {
+      options.gpu = value;
+    } else if (flag == "--alu") {
+      options.alu = value;
+    } else if (flag == "--write-alu") {
+      options.writeAlu = value;
     } else if (flag == "--width" && integer && number >= 16 && number <= 8192) {
       options.width = int(number);
     } else if (flag == "--height" && integer && number >= 16 && number <= 8192) {
@@ -148,18 +173,8 @@ std::vector<Config> configurations() {
   return configs;
 }
 
-bool run(const Config& config, const Options& options, const postfx::bench::SeabedGbuffer& gbuffer,
-         postfx::water::Ocean& ocean, Row& row, std::string& error) {
-  postfx::CreateDesc create;
-  create.features = config.features | postfx::testing::BenchmarkFloor;
-  create.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
-  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
-  create.maxWaterCascades = ocean.cascadeCount();
-  postfx::Context* fx = nullptr;
-  if (postfx::create(create, fx) != postfx::Result::Ok) {
-    error = std::string("postfx: ") + postfx::lastError(nullptr);
-    return false;
-  }
+postfx::FrameDesc describe(const Config& config, const postfx::bench::SeabedGbuffer& gbuffer,
+                           const postfx::water::Ocean& ocean) {
   const postfx::bench::SeabedView& view = gbuffer.view();
   postfx::FrameDesc frame;
   frame.depth = {gbuffer.depth(), GL_DEPTH_COMPONENT32F};
@@ -179,14 +194,35 @@ bool run(const Config& config, const Options& options, const postfx::bench::Seab
   }
   frame.caustics = config.caustics;
   frame.godRays = config.godRays;
+  return frame;
+}
+
+// A context for `config` (its features and `extra`), `frames` frames dispatched with the ocean
+// animating, the GPU drained before the last kTimerRingDepth (whose dispatches read the rest
+// back); `done` sees the context before it goes.
+bool dispatchFrames(const Config& config, postfx::Feature extra, bool workAccount, int frames,
+                    const postfx::bench::SeabedGbuffer& gbuffer, postfx::water::Ocean& ocean,
+                    const std::function<void(const postfx::Context&)>& done, std::string& error) {
+  postfx::CreateDesc create;
+  create.features = config.features | extra;
+  create.depthConvention = postfx::DepthConvention::ForwardZeroToOne;
+  create.normalEncoding = postfx::NormalEncoding::WorldXyz;
+  create.maxWaterCascades = ocean.cascadeCount();
+  create.workAccount = workAccount;
+  postfx::Context* fx = nullptr;
+  if (postfx::create(create, fx) != postfx::Result::Ok) {
+    error = std::string("postfx: ") + postfx::lastError(nullptr);
+    return false;
+  }
+  const postfx::FrameDesc frame = describe(config, gbuffer, ocean);
   GLuint framebuffer = 0;
   glCreateFramebuffers(1, &framebuffer);
   glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, gbuffer.target(), 0);
-  const int total = kWarmupFrames + options.frames + postfx::kTimerRingDepth;
+  const int total = frames + postfx::kTimerRingDepth;
   bool ok = true;
   for (int i = 0; i < total && ok; ++i) {
     // The measured frames' queries resolve in the last kTimerRingDepth ones (never stalled).
-    if (i == kWarmupFrames + options.frames) glFinish();
+    if (i == frames) glFinish();
     ok = ocean.update(i / 60.0, error) == postfx::water::Result::Ok;
     // A host's lighting pass fills the target before the plugin adds to it: here a clear through
     // a framebuffer, which also keeps 80 frames of added light from saturating the half floats.
@@ -199,20 +235,66 @@ bool run(const Config& config, const Options& options, const postfx::bench::Seab
       ok = false;
     }
   }
-  if (ok) {
-    const postfx::FrameStats& stats = postfx::stats(*fx);
-    row.name = config.name;
-    row.floorMs = stats.pass(postfx::Pass::Floor).medianMs;
-    for (const postfx::Pass pass : config.passes) {
-      row.passes.emplace_back(postfx::toString(pass), stats.pass(pass).medianMs);
-      row.ms += row.passes.back().second;
-    }
-    for (const postfx::Pass pass : config.shown)
-      row.shown.emplace_back(postfx::toString(pass), stats.pass(pass).medianMs);
-  }
+  if (ok) done(*fx);
   postfx::destroy(fx);
   glDeleteFramebuffers(1, &framebuffer);
   return ok;
+}
+
+// The configuration's time (its own floor beside it); with `programs`, the driver's dump of the
+// programs it builds is read into it (Mesa, after cost::requestMesaShaderDump).
+bool run(const Config& config, const Options& options, const postfx::bench::SeabedGbuffer& gbuffer,
+         postfx::water::Ocean& ocean, Row& row,
+         std::map<std::string, ocean::cost::ProgramStatistics>* programs, std::string& error) {
+  std::unique_ptr<ocean::cost::ShaderDumpCapture> capture;
+  if (programs != nullptr) capture = std::make_unique<ocean::cost::ShaderDumpCapture>();
+  return dispatchFrames(
+      config, postfx::testing::BenchmarkFloor, false, kWarmupFrames + options.frames, gbuffer,
+      ocean,
+      [&](const postfx::Context& fx) {
+        const postfx::FrameStats& stats = postfx::stats(fx);
+        row.name = config.name;
+        row.floorMs = stats.pass(postfx::Pass::Floor).medianMs;
+        for (const postfx::Pass pass : config.passes) {
+          row.passes.emplace_back(postfx::toString(pass), stats.pass(pass).medianMs);
+          row.ms += row.passes.back().second;
+        }
+        for (const postfx::Pass pass : config.shown)
+          row.shown.emplace_back(postfx::toString(pass), stats.pass(pass).medianMs);
+        // While the context lives: its programs' labels.
+        if (programs != nullptr)
+          for (auto& [label, p] : ocean::cost::labelled(ocean::cost::parseNirDump(capture->text())))
+            (*programs)[label] = p;
+      },
+      error);
+}
+
+// The configuration's work counted in one frame, estimated on `gpus`: its counted passes' steps.
+bool estimate(const Config& config, const postfx::bench::SeabedGbuffer& gbuffer,
+              postfx::water::Ocean& ocean, const std::vector<ocean::cost::GpuClass>& gpus,
+              const std::map<std::string, ocean::cost::ProgramStatistics>& programs, Row& row,
+              std::string& error) {
+  return dispatchFrames(
+      config, postfx::testing::CountShaderWork, true, 1, gbuffer, ocean,
+      [&](const postfx::Context& fx) {
+        const postfx::WorkSteps steps = postfx::workSteps(fx);
+        for (const ocean::cost::GpuClass& gpu : gpus) {
+          double ms = 0.0;
+          for (int i = 0; i < steps.count; ++i) {
+            const postfx::WorkStep& s = steps.steps[i];
+            if (std::find(config.passes.begin(), config.passes.end(), s.pass) ==
+                config.passes.end())
+              continue;
+            const auto p = programs.find(ocean::cost::programLabel(s.program));
+            const ocean::cost::StepAlu alu = p == programs.end()
+                                                 ? ocean::cost::StepAlu{}
+                                                 : ocean::cost::stepAlu(p->second, s.work);
+            ms += ocean::cost::estimate(s, alu, gpu).seconds * 1e3;
+          }
+          row.estimates.emplace_back(gpu.name, ms);
+        }
+      },
+      error);
 }
 
 }  // namespace
@@ -224,6 +306,25 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "postfx_bench: %s\n", error.c_str());
     return error.rfind("usage:", 0) == 0 ? 0 : 2;
   }
+  std::vector<ocean::cost::GpuClass> gpus;
+  if (options.work && !ocean::cost::selectGpuClasses(options.gpu, gpus, error)) {
+    std::fprintf(stderr, "postfx_bench: %s\n", error.c_str());
+    return 2;
+  }
+  // The shaders' arithmetic: from a file, else (Mesa) from the driver's dump of each program.
+  std::map<std::string, ocean::cost::ProgramStatistics> programs;
+  if (!options.alu.empty()) {
+    std::ifstream in(options.alu);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in || !ocean::cost::readStatistics(text.str(), programs, error)) {
+      std::fprintf(stderr, "postfx_bench: --alu %s: %s\n", options.alu.c_str(),
+                   in ? error.c_str() : "cannot read it");
+      return 2;
+    }
+  }
+  const bool dump = options.alu.empty() && (options.work || !options.writeAlu.empty());
+  if (dump) ocean::cost::requestMesaShaderDump();
   auto context = glcontext::HeadlessContext::create(false, error);
   if (!context) {
     std::fprintf(stderr, "postfx_bench: %s\n", error.c_str());
@@ -252,7 +353,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "postfx_bench: %s (%zu/%zu)\n", configs[k].name.c_str(), k + 1,
                  configs.size());
     Row row;
-    if (!run(configs[k], options, gbuffer, *ocean, row, error)) {
+    if (!run(configs[k], options, gbuffer, *ocean, row, dump ? &programs : nullptr, error) ||
+        (options.work && !estimate(configs[k], gbuffer, *ocean, gpus, programs, row, error))) {
       std::fprintf(stderr, "postfx_bench: %s: %s\n", configs[k].name.c_str(), error.c_str());
       return 1;
     }
@@ -272,10 +374,27 @@ int main(int argc, char** argv) {
       passes += text;
       entry["shown"][name] = ms;
     }
+    for (const auto& [gpu, ms] : row.estimates) {
+      char text[96];
+      std::snprintf(text, sizeof(text), "  ESTIMATE %s %.3f ms", gpu.c_str(), ms);
+      passes += text;
+      entry["estimate_ms"][gpu] = ms;
+    }
     std::printf("%-22s %10.3f %10.3f %8.2f %s\n", row.name.c_str(), row.ms, row.floorMs, ratio,
                 passes.c_str());
     std::fflush(stdout);
     json["rows"].push_back(entry);
+  }
+  if (options.work)
+    json["estimate"] = "roofline model, docs/gpu_cost.md: an estimate, not a measurement";
+  if (!options.writeAlu.empty()) {
+    std::ofstream file(options.writeAlu);
+    file << ocean::cost::writeStatistics(programs) << "\n";
+    if (!file || programs.empty()) {
+      std::fprintf(stderr, "postfx_bench: no program statistics for %s (Mesa's dump needed)\n",
+                   options.writeAlu.c_str());
+      return 1;
+    }
   }
   if (!options.json.empty()) {
     std::ofstream file(options.json);
