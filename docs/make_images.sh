@@ -25,7 +25,8 @@ size="--preset seabed --width 320 --height 180"
   --base "$work/base.exr" --flat "$work/flat.exr" --out docs/side_by_side.png
 
 echo "make_images: docs/torch.png"
-"$sample" render --preset torch --width 640 --height 360 --out docs/torch.png > /dev/null
+"$sample" render --preset torch --width 640 --height 360 --volume-caustics --out docs/torch.png \
+  > /dev/null
 
 echo "make_images: docs/pool.png and docs/pool_side_by_side.png (the pool, local water)"
 "$sample" render --preset pool --width 960 --height 540 --out docs/pool.png > /dev/null
