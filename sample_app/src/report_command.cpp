@@ -200,6 +200,9 @@ int runReport(const Options& given) {
     std::string localNote;
     if (!measureLocalWaterRows(given, localWater, rows, localNote, error))
       return commandFailed(error);
+    // The sweep's sessions each made their own context current and released it on closing:
+    // what follows draws in this command's.
+    session.context->makeCurrent();
     info.referenceNote += "\n\n" + localNote;
   }
 
