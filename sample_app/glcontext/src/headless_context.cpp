@@ -4,6 +4,17 @@
 
 namespace glcontext {
 
+namespace {
+// The contexts alive on the process's one display: eglTerminate invalidates every context on a
+// display, so only the last one to close may terminate it (a report's sweep opens and closes
+// sessions of its own inside the command's).
+int liveContexts = 0;
+
+void terminateUnlessInUse(EGLDisplay display) {
+  if (liveContexts == 0) eglTerminate(display);
+}
+}  // namespace
+
 std::unique_ptr<HeadlessContext> HeadlessContext::create(bool debug, std::string& error) {
   EGLDisplay display = EGL_NO_DISPLAY;
   if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
@@ -20,7 +31,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(bool debug, std::string
   }
   if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
     error = "EGL: desktop OpenGL API not available";
-    eglTerminate(display);
+    terminateUnlessInUse(display);
     return nullptr;
   }
   const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
@@ -40,18 +51,19 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(bool debug, std::string
                                         EGL_NO_CONTEXT, contextAttributes);
   if (context == EGL_NO_CONTEXT) {
     error = "EGL: could not create an OpenGL 4.5 core context";
-    eglTerminate(display);
+    terminateUnlessInUse(display);
     return nullptr;
   }
   if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
     error = "EGL: could not make the surfaceless context current";
     eglDestroyContext(display, context);
-    eglTerminate(display);
+    terminateUnlessInUse(display);
     return nullptr;
   }
   std::unique_ptr<HeadlessContext> result(new HeadlessContext());
   result->display_ = display;
   result->context_ = context;
+  ++liveContexts;
   if (debug) result->log_.install();
   return result;
 }
@@ -60,7 +72,8 @@ HeadlessContext::~HeadlessContext() {
   auto* display = static_cast<EGLDisplay>(display_);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, static_cast<EGLContext>(context_));
-  eglTerminate(display);
+  --liveContexts;
+  terminateUnlessInUse(display);
 }
 
 void HeadlessContext::makeCurrent() {
