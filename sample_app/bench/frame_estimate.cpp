@@ -46,16 +46,8 @@ bool estimatePasses(HeadlessSession& session, const Options& options, const cost
   if (!usePlugin(session, options, Options::WorkAccount::Counted, false, error) ||
       !renderFrames(session, options, 1, error))
     return false;
-  const postfx::WorkSteps steps = session.plugin->workSteps();
-  const double fromPixels = double(options.width) * double(options.height);
-  for (int i = 0; i < steps.count; ++i) {
-    const postfx::WorkStep& s = steps.steps[i];
-    const auto p = programs.find(cost::programLabel(s.program));
-    const cost::StepAlu alu =
-        p == programs.end() ? cost::StepAlu{} : cost::stepAlu(p->second, s.work);
-    out[static_cast<int>(s.pass)] +=
-        cost::estimate(cost::atViewSize(s, fromPixels, toPixels), alu, gpu).seconds * 1e3;
-  }
+  out = cost::passEstimatesMs(session.plugin->workSteps(), programs, gpu,
+                              double(options.width) * double(options.height), toPixels);
   return usePlugin(session, options, Options::WorkAccount::Off, floor, error);
 }
 

@@ -345,16 +345,12 @@ int runWorkBench(HeadlessSession& session, const Options& commandOptions) {
     for (const auto& [name, pass] : passes)
       for (const std::string& group : b.groups)
         if (name == group || name.rfind(group + " [", 0) == 0) measured += pass.measured;
-    for (const StepRow& row : m.counted) {
-      if (std::find(b.groups.begin(), b.groups.end(), row.group) == b.groups.end()) continue;
+    // The reference class's estimate: the step table's sums per feature, not estimated again.
+    for (const std::string& group : b.groups) {
+      const auto sums = featureMs.find(group);
+      if (sums == featureMs.end()) continue;
       present = true;
-      if (reference != gpus.end()) {
-        const auto program = m.programs.find(row.program);
-        const cost::StepAlu alu = program == m.programs.end()
-                                      ? cost::StepAlu{}
-                                      : cost::stepAlu(program->second, row.step.work);
-        estimate += cost::estimate(row.step, alu, *reference).seconds * 1e3;
-      }
+      if (reference != gpus.end()) estimate += sums->second[reference - gpus.begin()];
     }
     if (!present) continue;
     const double ratio = floorMs > 0.0 ? measured / floorMs : 0.0;

@@ -334,4 +334,18 @@ bool readStatistics(const std::string& text, std::map<std::string, ProgramStatis
   return true;
 }
 
+std::array<double, postfx::kPassCount> passEstimatesMs(
+    const postfx::WorkSteps& steps, const std::map<std::string, ProgramStatistics>& programs,
+    const GpuClass& gpu, double fromPixels, double toPixels) {
+  std::array<double, postfx::kPassCount> ms{};
+  for (int i = 0; i < steps.count; ++i) {
+    const postfx::WorkStep& s = steps.steps[i];
+    const auto p = programs.find(programLabel(s.program));
+    const StepAlu alu = p == programs.end() ? StepAlu{} : stepAlu(p->second, s.work);
+    ms[static_cast<int>(s.pass)] +=
+        estimate(atViewSize(s, fromPixels, toPixels), alu, gpu).seconds * 1e3;
+  }
+  return ms;
+}
+
 }  // namespace ocean::cost

@@ -7,6 +7,7 @@
 // the models charge the invocation overhead alone.
 #include <epoxy/gl.h>
 
+#include <array>
 #include <map>
 #include <string>
 
@@ -77,6 +78,13 @@ std::string programLabel(GLuint program);
 
 // A step's arithmetic per invocation from its program's statistics and its counted fetches.
 StepAlu stepAlu(const ProgramStatistics& program, const postfx::WorkCounts& work);
+
+// Each pass's estimated time (ms, indexed by postfx::Pass) on `gpu`: the sum of its steps, each
+// with its program's arithmetic (by label) and scaled from a view of `fromPixels` to `toPixels`
+// (atViewSize).
+std::array<double, postfx::kPassCount> passEstimatesMs(
+    const postfx::WorkSteps& steps, const std::map<std::string, ProgramStatistics>& programs,
+    const GpuClass& gpu, double fromPixels, double toPixels);
 
 // The statistics by label as JSON text and back, so that a machine without Mesa (a GPU's driver
 // prints no NIR) estimates with what llvmpipe compiled of the same programs

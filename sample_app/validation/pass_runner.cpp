@@ -31,14 +31,8 @@ void estimateRun(postfx::CreateDesc create, const postfx::FrameDesc& frame,
   glFinish();
   ok = ok && postfx::dispatch(*context, frame) == postfx::Result::Ok;
   const postfx::WorkSteps steps = postfx::workSteps(*context);
-  for (int i = 0; ok && i < steps.count; ++i) {
-    const postfx::WorkStep& s = steps.steps[i];
-    const auto p = programs.find(cost::programLabel(s.program));
-    const cost::StepAlu alu =
-        p == programs.end() ? cost::StepAlu{} : cost::stepAlu(p->second, s.work);
-    const postfx::WorkStep at1080 = cost::atViewSize(s, viewPixels, 1920.0 * 1080.0);
-    out.estimatedMs[static_cast<int>(s.pass)] += cost::estimate(at1080, alu, gpus[0]).seconds * 1e3;
-  }
+  if (ok)
+    out.estimatedMs = cost::passEstimatesMs(steps, programs, gpus[0], viewPixels, 1920.0 * 1080.0);
   out.hasEstimate = ok && steps.count > 0;
   postfx::destroy(context);
 }
