@@ -131,19 +131,31 @@ inline GlSnapshot snapshotGlState() {
   ints("active_texture", GL_ACTIVE_TEXTURE, 1);
   GLint active = 0;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-  for (GLuint unit = 0; unit < 8; ++unit) {
+  // Every target's binding on the plugin's units and the next ones (glBindTextureUnit(u, 0)
+  // clears all of a unit's targets, not only the one a pass used).
+  static constexpr struct {
+    const char* name;
+    GLenum binding;
+  } kTargets[] = {{"texture_1d", GL_TEXTURE_BINDING_1D},
+                  {"texture_1d_array", GL_TEXTURE_BINDING_1D_ARRAY},
+                  {"texture_2d", GL_TEXTURE_BINDING_2D},
+                  {"texture_2d_array", GL_TEXTURE_BINDING_2D_ARRAY},
+                  {"texture_2d_multisample", GL_TEXTURE_BINDING_2D_MULTISAMPLE},
+                  {"texture_2d_multisample_array", GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY},
+                  {"texture_3d", GL_TEXTURE_BINDING_3D},
+                  {"texture_cube", GL_TEXTURE_BINDING_CUBE_MAP},
+                  {"texture_cube_array", GL_TEXTURE_BINDING_CUBE_MAP_ARRAY},
+                  {"texture_rectangle", GL_TEXTURE_BINDING_RECTANGLE},
+                  {"texture_buffer", GL_TEXTURE_BINDING_BUFFER}};
+  for (GLuint unit = 0; unit < 16; ++unit) {
     glActiveTexture(GL_TEXTURE0 + unit);
-
-    GLint t2 = 0, ta = 0, tc = 0, t3 = 0, sampler = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &t2);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &ta);
-    glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &tc);
-    glGetIntegerv(GL_TEXTURE_BINDING_3D, &t3);
+    for (const auto& target : kTargets) {
+      GLint bound = 0;
+      glGetIntegerv(target.binding, &bound);
+      s[indexedName(target.name, unit)] = {bound};
+    }
+    GLint sampler = 0;
     glGetIntegerv(GL_SAMPLER_BINDING, &sampler);
-    s[indexedName("texture_2d", unit)] = {t2};
-    s[indexedName("texture_2d_array", unit)] = {ta};
-    s[indexedName("texture_cube", unit)] = {tc};
-    s[indexedName("texture_3d", unit)] = {t3};
     s[indexedName("sampler", unit)] = {sampler};
   }
   glActiveTexture(static_cast<GLenum>(active));
@@ -158,6 +170,11 @@ inline GlSnapshot snapshotGlState() {
     indexed("ubo_size", GL_UNIFORM_BUFFER_SIZE, i, 1);
     indexed("ssbo", GL_SHADER_STORAGE_BUFFER_BINDING, i, 1);
     indexed("ssbo_start", GL_SHADER_STORAGE_BUFFER_START, i, 1);
+  }
+  for (GLuint i = 0; i < 4; ++i) {
+    indexed("image_texture", GL_IMAGE_BINDING_NAME, i, 1);
+    indexed("image_access", GL_IMAGE_BINDING_ACCESS, i, 1);
+    indexed("image_format", GL_IMAGE_BINDING_FORMAT, i, 1);
   }
   ints("pack_alignment", GL_PACK_ALIGNMENT, 1);
   ints("unpack_alignment", GL_UNPACK_ALIGNMENT, 1);

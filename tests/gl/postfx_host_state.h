@@ -73,13 +73,16 @@ class HostState {
     glBindBuffer(GL_QUERY_BUFFER, ubo_);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, ubo_);
     glCreateSamplers(2, samplers_);
-    for (GLuint unit = 0; unit < 8; ++unit) {
+    makeEveryTarget();
+    // A texture of every target on every unit, the plugin's and the next ones: a pass that
+    // unbinds a whole unit (glBindTextureUnit(unit, 0)) or binds past its units shows here.
+    for (GLuint unit = 0; unit < kBoundUnits; ++unit) {
       glActiveTexture(GL_TEXTURE0 + unit);
-      glBindTexture(GL_TEXTURE_2D, color_);
-      if (unit % 2 == 0) glBindTexture(GL_TEXTURE_2D_ARRAY, array_);
-      if (unit % 3 == 0) glBindTexture(GL_TEXTURE_CUBE_MAP, cube_);
+      for (int t = 0; t < kTargets; ++t) glBindTexture(kTargetList[t], targets_[t]);
       glBindSampler(unit, samplers_[unit % 2]);
     }
+    for (GLuint image = 0; image < 4; ++image)
+      glBindImageTexture(image, color_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glActiveTexture(GL_TEXTURE6);
     glPixelStorei(GL_PACK_ALIGNMENT, 8);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
@@ -127,13 +130,13 @@ class HostState {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glBindBuffer(GL_QUERY_BUFFER, 0);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    for (GLuint unit = 0; unit < 8; ++unit) {
+    for (GLuint unit = 0; unit < kBoundUnits; ++unit) {
       glActiveTexture(GL_TEXTURE0 + unit);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-      glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+      for (int t = 0; t < kTargets; ++t) glBindTexture(kTargetList[t], 0);
       glBindSampler(unit, 0);
     }
+    for (GLuint image = 0; image < 4; ++image)
+      glBindImageTexture(image, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
     glActiveTexture(GL_TEXTURE0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -143,6 +146,7 @@ class HostState {
     glDeleteFramebuffers(2, fbos_);
     const GLuint textures[] = {color_, array_, cube_};
     glDeleteTextures(3, textures);
+    glDeleteTextures(kTargets, targets_);
     glDeleteProgram(program_);
     glDeleteVertexArrays(1, &vao_);
     const GLuint buffers[] = {ubo_, ssbo_};
@@ -151,12 +155,56 @@ class HostState {
     active_ = false;
   }
 
+ public:
+  // Units that get a texture of every target (the plugin uses [0, 8)).
+  static constexpr GLuint kBoundUnits = 12;
+  static constexpr int kTargets = 11;
+  static constexpr GLenum kTargetList[kTargets] = {
+      GL_TEXTURE_1D,        GL_TEXTURE_1D_ARRAY,       GL_TEXTURE_2D,
+      GL_TEXTURE_2D_ARRAY,  GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_2D_MULTISAMPLE_ARRAY,
+      GL_TEXTURE_3D,        GL_TEXTURE_CUBE_MAP,       GL_TEXTURE_CUBE_MAP_ARRAY,
+      GL_TEXTURE_RECTANGLE, GL_TEXTURE_BUFFER};
+
  private:
+  // One small texture of each target (the buffer texture over the host's SSBO).
+  void makeEveryTarget() {
+    for (int t = 0; t < kTargets; ++t) {
+      const GLenum target = kTargetList[t];
+      glCreateTextures(target, 1, &targets_[t]);
+      const GLuint id = targets_[t];
+      switch (target) {
+        case GL_TEXTURE_1D:
+          glTextureStorage1D(id, 1, GL_RGBA8, 4);
+          break;
+        case GL_TEXTURE_1D_ARRAY:
+        case GL_TEXTURE_2D:
+        case GL_TEXTURE_RECTANGLE:
+        case GL_TEXTURE_CUBE_MAP:
+          glTextureStorage2D(id, 1, GL_RGBA8, 4, 4);
+          break;
+        case GL_TEXTURE_2D_MULTISAMPLE:
+          glTextureStorage2DMultisample(id, 4, GL_RGBA8, 4, 4, GL_TRUE);
+          break;
+        case GL_TEXTURE_2D_MULTISAMPLE_ARRAY:
+          glTextureStorage3DMultisample(id, 4, GL_RGBA8, 4, 4, 2, GL_TRUE);
+          break;
+        case GL_TEXTURE_CUBE_MAP_ARRAY:
+          glTextureStorage3D(id, 1, GL_RGBA8, 4, 4, 6);
+          break;
+        case GL_TEXTURE_BUFFER:
+          glTextureBuffer(id, GL_RGBA8, ssbo_);
+          break;
+        default:  // 2D array, 3D
+          glTextureStorage3D(id, 1, GL_RGBA8, 4, 4, 2);
+      }
+    }
+  }
+
   static constexpr const char* kFragment =
       "#version 450 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
   bool active_ = false;
   GLuint fbos_[2] = {}, color_ = 0, array_ = 0, cube_ = 0, program_ = 0, vao_ = 0, ubo_ = 0,
-         ssbo_ = 0, samplers_[2] = {};
+         ssbo_ = 0, samplers_[2] = {}, targets_[kTargets] = {};
 };
 
 }  // namespace postfxtest

@@ -1,7 +1,11 @@
 // The plugin drops into a host frame without disturbing it: every piece of GL state a host may
 // have set is exactly as it was after dispatch(), whether the pass ran, was skipped or failed.
 #include <gtest/gtest.h>
+#include <postfx/local_water.h>
 #include <postfx/testing.h>
+
+#include <functional>
+#include <vector>
 
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
@@ -62,6 +66,65 @@ TEST_F(PostfxStateTest, EveryHostStateSurvivesDispatch) {
     sum += double(p.r);
   EXPECT_GT(sum, 1.0);
   postfx::destroy(fx);
+  glDeleteTextures(1, &water);
+}
+
+// Contexts whose passes bind textures the seabed test above does not: local water with no region
+// (its lookup unit is unbound, the bug that once cleared a host's cube map on unit 7), with a
+// region, and the physical model with full-resolution god rays. The host has a texture of every
+// target on every unit (postfx_host_state.h).
+TEST_F(PostfxStateTest, EveryTargetOnEveryUnitSurvivesEachPass) {
+  postfxtest::Scene scene(postfxtest::SceneSpec{});
+  const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
+  GLuint flat = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &flat);
+  glTextureStorage2D(flat, 1, GL_RGBA32F, 16, 16);
+  const std::vector<float> zeros(16 * 16 * 4, 0.0f);
+  glTextureSubImage2D(flat, 0, 0, 0, 16, 16, GL_RGBA, GL_FLOAT, zeros.data());
+  postfx::LocalWater region;
+  region.centre = {0.0, -4.0};
+  region.size = {4.0, 4.0};
+  region.texture = {flat, GL_RGBA32F};
+  region.gridResolution = 32;
+  region.depthLayers = 2;
+
+  struct Case {
+    const char* name;
+    postfx::Feature features;
+    std::function<void(postfx::FrameDesc&)> edit;
+  };
+  const Case cases[] = {
+      {"local water, no region", postfx::Feature::Caustics | postfx::Feature::LocalWater,
+       [](postfx::FrameDesc&) {}},
+      {"local water, one region",
+       postfx::Feature::Caustics | postfx::Feature::LocalWater | postfx::Feature::GodRays,
+       [&region](postfx::FrameDesc& f) {
+         f.water.localWater = &region;
+         f.water.localWaterCount = 1;
+       }},
+      {"physical model, full-res god rays",
+       postfx::Feature::Caustics | postfx::Feature::GodRays | postfx::Feature::WavefrontAreaRatio,
+       [](postfx::FrameDesc& f) {
+         f.caustics.model = postfx::CausticsModel::WavefrontAreaRatio;
+         f.caustics.gridResolution = 64;
+         f.godRays.resolution = postfx::GodRayResolution::Full;
+       }}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    postfx::Context* fx = nullptr;
+    postfx::CreateDesc desc;
+    desc.features = c.features;
+    ASSERT_EQ(postfx::create(desc, fx), postfx::Result::Ok) << postfx::lastError(nullptr);
+    postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3);
+    c.edit(frame);
+    host_.set();
+    const GlSnapshot before = postfxtest::snapshotGlState();
+    EXPECT_EQ(postfx::dispatch(*fx, frame), postfx::Result::Ok) << postfx::lastError(fx);
+    expectSameState(before, postfxtest::snapshotGlState(), c.name);
+    host_.reset();
+    postfx::destroy(fx);
+  }
+  glDeleteTextures(1, &flat);
   glDeleteTextures(1, &water);
 }
 

@@ -19,6 +19,26 @@ static_assert(POSTFX_STORAGE_GRID_POINTS == 0 && POSTFX_STORAGE_CLAMP_COUNT == 0
               "GlStateGuard saves shader-storage bindings 0-2 and image unit 0 only");
 
 namespace postfx::detail {
+namespace {
+
+struct TargetBinding {
+  GLenum target, binding;
+};
+// Every texture target of GL 4.5 with the query that reads its binding on the active unit.
+constexpr TargetBinding kTargets[GlStateGuard::kTargetCount] = {
+    {GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
+    {GL_TEXTURE_1D_ARRAY, GL_TEXTURE_BINDING_1D_ARRAY},
+    {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D},
+    {GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY},
+    {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE},
+    {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY},
+    {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D},
+    {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP},
+    {GL_TEXTURE_CUBE_MAP_ARRAY, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY},
+    {GL_TEXTURE_RECTANGLE, GL_TEXTURE_BINDING_RECTANGLE},
+    {GL_TEXTURE_BUFFER, GL_TEXTURE_BINDING_BUFFER}};
+
+}  // namespace
 
 GlStateGuard::GlStateGuard() {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
@@ -30,9 +50,8 @@ GlStateGuard::GlStateGuard() {
   // Per-unit bindings can only be queried through the active unit; it is restored below.
   for (int unit = 0; unit < kUnitCount; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &units_[unit].texture2d);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &units_[unit].texture2dArray);
-    glGetIntegerv(GL_TEXTURE_BINDING_BUFFER, &units_[unit].textureBuffer);
+    for (int t = 0; t < kTargetCount; ++t)
+      glGetIntegerv(kTargets[t].binding, &units_[unit].textures[t]);
     glGetIntegerv(GL_SAMPLER_BINDING, &units_[unit].sampler);
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));
@@ -76,9 +95,8 @@ GlStateGuard::~GlStateGuard() {
   glBindVertexArray(static_cast<GLuint>(vertexArray_));
   for (int unit = 0; unit < kUnitCount; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(units_[unit].texture2d));
-    glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(units_[unit].texture2dArray));
-    glBindTexture(GL_TEXTURE_BUFFER, static_cast<GLuint>(units_[unit].textureBuffer));
+    for (int t = 0; t < kTargetCount; ++t)
+      glBindTexture(kTargets[t].target, static_cast<GLuint>(units_[unit].textures[t]));
     glBindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(units_[unit].sampler));
   }
   glActiveTexture(static_cast<GLenum>(activeTexture_));

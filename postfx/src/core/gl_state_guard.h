@@ -21,8 +21,11 @@ void restoreEnabledi(GLenum cap, GLuint index, GLboolean on);
 
 class GlStateGuard {
  public:
-  // Texture units whose 2D / 2D-array / buffer bindings and sampler the passes rebind.
+  // Texture units the passes rebind. Every target's binding on each is saved, not only the
+  // targets the plugin uses: glBindTextureUnit(unit, 0) unbinds all of a unit's targets, so a
+  // host's cube map or 3D texture on the unit would be lost.
   static constexpr int kUnitCount = POSTFX_UNIT_COUNT;
+  static constexpr int kTargetCount = 11;
 
   GlStateGuard();
   ~GlStateGuard();
@@ -31,7 +34,8 @@ class GlStateGuard {
 
  private:
   struct UnitState {
-    GLint texture2d, texture2dArray, textureBuffer, sampler;
+    std::array<GLint, kTargetCount> textures;
+    GLint sampler;
   };
 
   GLint drawFramebuffer_ = 0, readFramebuffer_ = 0;
