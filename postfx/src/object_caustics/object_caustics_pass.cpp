@@ -366,7 +366,7 @@ void ObjectCausticsPass::traceRays(GLuint receiverDepth, int iterations) {
   glBindImageTexture(POSTFX_IMAGE_OBJECT_LANDINGS, landings_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                      GL_RGBA32F);
   glUseProgram(trace_.id());
-  const GLuint rays = static_cast<GLuint>(gridSize_) * static_cast<GLuint>(gridSize_);
+  const GLuint cellGroups = (static_cast<GLuint>(gridSize_) + 7) / 8;
   // object_caustics_trace.comp per ray on its full path (through a glass caster onto a
   // receiver): its cell's front position and normal, the back surface's 2 x 2 positions and
   // normals (8) at the entry, at each of `iterations` probes and at the exit, the receiver depth
@@ -379,7 +379,7 @@ void ObjectCausticsPass::traceRays(GLuint receiverDepth, int iterations) {
                          {fetches, 0.0, true},
                          {Traffic::readBytes(casterBytes), Traffic::read(receiverDepth),
                           Traffic::write(landings_.id())}},
-                        (rays + 63) / 64, dispersed_ ? 3 : 1, 1);
+                        cellGroups, cellGroups, dispersed_ ? 3 : 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

@@ -8,7 +8,10 @@
 
 #include "postfx/object_caustics/object_caustics_trace.glsl"
 
-layout(local_size_x = 64) in;
+// 8 x 8 cells a group, the grid's cells along x and y and the colour channel along z: a 1D
+// dispatch of 64 cells a group would need 65,536 groups at the 2048 grid, one past the
+// GL_MAX_COMPUTE_WORK_GROUP_COUNT GL guarantees (65,535).
+layout(local_size_x = 8, local_size_y = 8) in;
 
 // Layer 2c: (centre in map texels, splat sigma, 1 where the ray lands, else 0); layer 2c + 1:
 // its flux. c: the colour channel (0 only without dispersion).
@@ -16,10 +19,9 @@ layout(binding = POSTFX_IMAGE_OBJECT_LANDINGS, rgba32f) uniform writeonly image2
 
 void main() {
   int size = int(u.grid.x);
-  int index = int(gl_GlobalInvocationID.x);
-  if (index >= size * size) return;
-  int channel = int(gl_GlobalInvocationID.y);
-  ivec2 cell = ivec2(index % size, index / size);
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(cell, ivec2(size)))) return;
+  int channel = int(gl_GlobalInvocationID.z);
   vec2 centre;
   vec3 flux;
   float sigma;
