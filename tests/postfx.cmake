@@ -18,6 +18,7 @@ postfx_add_test(postfx_gl_tests
           gl/postfx_bench_test.cpp gl/postfx_godrays_test.cpp gl/postfx_godrays_field_test.cpp
           gl/postfx_cascade_skip_test.cpp gl/postfx_caustics_lookup_test.cpp
           gl/postfx_refusal_test.cpp gl/postfx_local_water_test.cpp
+          gl/postfx_tutorial_gbuffer_test.cpp
   LIBS postfx_test_scene postfx gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_gl_tests PRIVATE ${_postfx_private})
@@ -44,7 +45,7 @@ postfx_add_test(postfx_object_caustics_tests
           gl/postfx_object_caustics_lights_contract_test.cpp gl/postfx_object_caustics_lights_util.cpp
           gl/postfx_object_caustics_lights_test.cpp gl/postfx_object_caustics_lights_stability_test.cpp
           gl/postfx_object_caustics_lights_cost_test.cpp gl/postfx_object_caustics_work_test.cpp
-          gl/postfx_views_test.cpp
+          gl/postfx_views_test.cpp gl/postfx_range_ends_test.cpp
   LIBS postfx_test_scene postfx ocean_reference gbuffer glm::glm postfx::epoxy
   GL)
 target_include_directories(postfx_object_caustics_tests PRIVATE ${_postfx_private})

@@ -392,6 +392,13 @@ TEST_F(PostfxViewsTest, ARefusedViewLeavesEveryTargetUntouched) {
     for (const Scene* s : {&a, &b, &c})
       for (const glm::vec4& p : target(*s)) ASSERT_EQ(p, marker) << "a target was drawn into";
   }
+  // A field every view shares is the frame's to fix: its refusal names no view.
+  postfx::FrameDesc badTau = shared;
+  badTau.caustics.tau = -1.0f;
+  const std::vector<postfx::ViewDesc> all = {viewOf(va.get(), a), viewOf(vb.get(), b)};
+  EXPECT_EQ(postfx::dispatch(*fx, badTau, all.data(), 2), postfx::Result::InvalidArgument);
+  EXPECT_EQ(std::string(postfx::lastError(fx.get())).rfind("caustics.tau", 0), 0u)
+      << postfx::lastError(fx.get());
   const postfx::ViewDesc one = viewOf(va.get(), a);
   EXPECT_EQ(postfx::dispatch(*fx, shared, &one, 0), postfx::Result::InvalidArgument);
   EXPECT_EQ(postfx::dispatch(*fx, shared, nullptr, 1), postfx::Result::InvalidArgument);

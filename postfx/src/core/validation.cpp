@@ -2,6 +2,7 @@
 
 #include "core/convention_checks.h"
 #include "core/gl_enum_names.h"
+#include "core/texture_format.h"
 #include "god_rays/godrays_validation.h"
 #include "reflected_caustics/reflected_validation.h"
 #include "seabed_caustics/caustics_validation.h"
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <initializer_list>
 #include <sstream>
 #include <utility>
@@ -48,6 +50,37 @@ std::string number(double value) {
   std::ostringstream s;
   s << value;
   return s.str();
+}
+
+std::string valueText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+std::string valueText(const glm::vec3& value) {
+  // Appended, not "(" + string: GCC 12 warns falsely (-Wrestrict) on that operator+.
+  std::string text = "(";
+  text += valueText(double(value.x));
+  text += ", ";
+  text += valueText(double(value.y));
+  text += ", ";
+  text += valueText(double(value.z));
+  text += ")";
+  return text;
+}
+
+std::string notAnEnum(const std::string& field, long long value, const char* type,
+                      const char* accepted) {
+  std::string text = field;
+  text += " ";
+  text += std::to_string(value);
+  text += " is not a ";
+  text += type;
+  text += " (";
+  text += accepted;
+  text += ")";
+  return text;
 }
 
 namespace {
@@ -145,32 +178,57 @@ Result checkShadowTexture(const CreateDesc& create, const FrameDesc& frame, std:
 Result checkTexture(const char* field, const TextureRef& ref, std::initializer_list<GLenum> targets,
                     std::initializer_list<GLenum> formats, TextureFacts& facts,
                     std::string& error) {
+  // A renderbuffer's name is also a texture's in GL's separate namespaces (LearnOpenGL's
+  // G-buffer depth is a renderbuffer): say so whatever the texture of that name is.
+  const bool renderbuffer = ref.texture != 0 && glIsRenderbuffer(ref.texture) == GL_TRUE;
+  const std::string renderbufferHint =
+      renderbuffer ? std::string("; ") + std::to_string(ref.texture) +
+                         " is also a renderbuffer's name: the plugin samples its inputs, so "
+                         "each must be a texture (attach a texture with "
+                         "glNamedFramebufferTexture instead of the renderbuffer)"
+                   : std::string();
+  const std::string fix = std::string("; allocate it as one with glTextureStorage2D(texture, 1, ") +
+                          glEnumName(*formats.begin()) + ", width, height)";
   if (!queryTexture(ref.texture, facts)) {
-    error = std::string(field) + ": texture " + std::to_string(ref.texture) +
-            " is not a texture name (required)";
+    error = std::string(field) + ": " + std::to_string(ref.texture) + " is not a texture name" +
+            (renderbuffer ? " but a renderbuffer's: the plugin samples its inputs, so each must "
+                            "be a texture (attach one with glNamedFramebufferTexture instead)"
+                          : " (a texture is required)");
     return Result::MissingTexture;
   }
   if (facts.width <= 0 || facts.height <= 0) {
-    error = std::string(field) + ": texture level 0 has no storage";
+    error = std::string(field) + ": texture " + std::to_string(ref.texture) +
+            " has no storage at level 0 (give it some with glTextureStorage2D)" + renderbufferHint;
     return Result::MissingTexture;
   }
   if (std::find(targets.begin(), targets.end(), static_cast<GLenum>(facts.target)) ==
       targets.end()) {
     error = std::string(field) + ": texture target " + formatName(facts.target) +
-            " is not accepted here";
+            " is not accepted here (" + formatList(targets) + ")" + renderbufferHint;
     return Result::UnsupportedFormat;
   }
-  if (ref.format != 0 && ref.format != static_cast<GLenum>(facts.format)) {
-    error = std::string(field) + ": declared format " + formatName(ref.format) +
-            " but the texture's internal format is " + formatName(facts.format);
+  const GLenum reported = static_cast<GLenum>(facts.format);
+  const GLenum sized = effectiveSizedFormat(ref.texture, reported);
+  // A declaration matches the name GL reports or the sized format an unsized one stands for.
+  if (ref.format != 0 && ref.format != reported && ref.format != sized) {
+    error = std::string(field) + ": TextureRef::format declares " + formatName(ref.format) +
+            " but texture " + std::to_string(ref.texture) + "'s internal format is " +
+            formatName(reported) +
+            (sized != 0 && sized != reported ? " (" + formatName(sized) + ")" : std::string()) +
+            "; pass the texture the declaration names, or declare 0 to skip this check" +
+            renderbufferHint;
     return Result::UnsupportedFormat;
   }
-  if (std::find(formats.begin(), formats.end(), static_cast<GLenum>(facts.format)) ==
-      formats.end()) {
-    error = std::string(field) + ": internal format " + formatName(facts.format) +
-            " is not supported for this input";
+  if (std::find(formats.begin(), formats.end(), sized) == formats.end()) {
+    std::string what = "internal format " + formatName(reported);
+    if (isUnsizedFormat(reported))
+      what += sized != 0 ? " (unsized; its components are " + formatName(sized) + "'s)"
+                         : " (unsized, with components no accepted format has)";
+    error = std::string(field) + ": " + what + " is not accepted here (" + formatList(formats) +
+            ")" + fix + renderbufferHint;
     return Result::UnsupportedFormat;
   }
+  facts.format = static_cast<GLint>(sized);
   return Result::Ok;
 }
 
@@ -182,7 +240,10 @@ Result checkDepthTexture(const char* field, const TextureRef& ref, std::string& 
 
 Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
   if (static_cast<std::uint32_t>(desc.features) >= (1u << 14)) {
-    error = "CreateDesc.features: unknown feature bits";
+    char bits[16];
+    std::snprintf(bits, sizeof bits, "0x%x", static_cast<unsigned>(desc.features) & ~0x3fffu);
+    error = std::string("CreateDesc.features: unknown feature bits ") + bits +
+            " (the known ones are 0x1-0x2000, postfx::Feature)";
     return Result::InvalidArgument;
   }
   if (hasFeature(desc.features, Feature::VolumeCaustics) &&
@@ -191,18 +252,19 @@ Result validateCreateDesc(const CreateDesc& desc, std::string& error) {
     return Result::InvalidArgument;
   }
   if (!isDepthConvention(desc.depthConvention)) {
-    error = "CreateDesc.depthConvention " + std::to_string(static_cast<int>(desc.depthConvention)) +
-            " is not a DepthConvention";
+    error = notAnEnum("CreateDesc.depthConvention", static_cast<long long>(desc.depthConvention),
+                      "DepthConvention", "ReverseZ, ForwardZeroToOne or ForwardNegOneToOne");
     return Result::InvalidArgument;
   }
   if (!isNormalEncoding(desc.normalEncoding)) {
-    error = "CreateDesc.normalEncoding " + std::to_string(static_cast<int>(desc.normalEncoding)) +
-            " is not a NormalEncoding";
+    error = notAnEnum("CreateDesc.normalEncoding", static_cast<long long>(desc.normalEncoding),
+                      "NormalEncoding", "Octahedral, WorldXyz or WorldXyzUnorm");
     return Result::InvalidArgument;
   }
   if (desc.waterTexture != WaterTextureType::Array2D &&
       desc.waterTexture != WaterTextureType::Single2D) {
-    error = "CreateDesc.waterTexture is not a WaterTextureType";
+    error = notAnEnum("CreateDesc.waterTexture", static_cast<long long>(desc.waterTexture),
+                      "WaterTextureType", "Array2D or Single2D");
     return Result::InvalidArgument;
   }
   if (desc.waterTexture == WaterTextureType::Array2D &&
@@ -270,9 +332,10 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
     return fail("sun.direction must be finite with a length in " + rangeText(kSunLengthRange) +
                 " (it is normalised)");
   if (!within(sun.irradiance, kIrradianceRange))
-    return fail("sun.irradiance must be in " + rangeText(kIrradianceRange));
+    return fail("sun.irradiance" + mustBeIn(sun.irradiance, kIrradianceRange));
   if (!within(sun.angularDiameterDegrees, kSunAngularDiameterRange))
-    return fail("sun.angularDiameterDegrees must be in " + rangeText(kSunAngularDiameterRange));
+    return fail("sun.angularDiameterDegrees" +
+                mustBeIn(sun.angularDiameterDegrees, kSunAngularDiameterRange));
 
   const WaterSurface& water = frame.water;
   if (!std::isfinite(water.level)) return fail("water.level is not finite");
@@ -289,27 +352,27 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
                 "] (CreateDesc.maxWaterCascades), got " + std::to_string(water.cascadeCount));
   for (int c = 0; c < water.cascadeCount; ++c)
     if (!within(water.tileSize[c], kTileSizeRange))
-      return fail("water.tileSize[" + std::to_string(c) + "] must be in " +
-                  rangeText(kTileSizeRange) + " m");
+      return fail("water.tileSize[" + std::to_string(c) + "]" +
+                  mustBeIn(water.tileSize[c], kTileSizeRange, " m"));
   for (int c = 0; c < water.cascadeCount; ++c) {
     if (!within(water.rmsLaplacian[c], kWaveStatisticRange))
-      return fail("water.rmsLaplacian[" + std::to_string(c) + "] must be in " +
-                  rangeText(kWaveStatisticRange) + " 1/m");
+      return fail("water.rmsLaplacian[" + std::to_string(c) + "]" +
+                  mustBeIn(water.rmsLaplacian[c], kWaveStatisticRange, " 1/m"));
     if (!within(water.longestWavelength[c], kWaveStatisticRange))
-      return fail("water.longestWavelength[" + std::to_string(c) + "] must be in " +
-                  rangeText(kWaveStatisticRange) + " m");
+      return fail("water.longestWavelength[" + std::to_string(c) + "]" +
+                  mustBeIn(water.longestWavelength[c], kWaveStatisticRange, " m"));
   }
-  if (!within(water.ior, kIorRange)) return fail("water.ior must be in " + rangeText(kIorRange));
+  if (!within(water.ior, kIorRange)) return fail("water.ior" + mustBeIn(water.ior, kIorRange));
   if (hasFeature(create.features, Feature::Dispersion) && !within(water.iorRgb, kIorRange))
-    return fail("water.iorRgb must be in " + rangeText(kIorRange));
+    return fail("water.iorRgb" + mustBeIn(water.iorRgb, kIorRange));
   if (!within(water.absorption, kWaterCoefficientRange))
-    return fail("water.absorption must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
+    return fail("water.absorption" + mustBeIn(water.absorption, kWaterCoefficientRange, " 1/m"));
   // Scattering is read by the god rays and, with ViewExtinction::Plugin, by every pass's
   // view-path extinction: a negative value there would amplify the light exponentially.
   if ((hasFeature(create.features, Feature::GodRays) ||
        frame.viewExtinction == ViewExtinction::Plugin) &&
       !within(water.scattering, kWaterCoefficientRange))
-    return fail("water.scattering must be in " + rangeText(kWaterCoefficientRange) + " 1/m");
+    return fail("water.scattering" + mustBeIn(water.scattering, kWaterCoefficientRange, " 1/m"));
   if (const Result local = validateLocalWaterValues(create, water, error); local != Result::Ok)
     return local;
 
@@ -317,17 +380,20 @@ Result validateFrameValues(const CreateDesc& create, const FrameDesc& frame, std
     const SunShadowMap& shadow = frame.shadow;
     if (!finite(shadow.worldToLightClip)) return fail("shadow.worldToLightClip is not finite");
     if (!isDepthConvention(shadow.depthConvention))
-      return fail("shadow.depthConvention is not a DepthConvention");
+      return fail(notAnEnum("shadow.depthConvention",
+                            static_cast<long long>(shadow.depthConvention), "DepthConvention",
+                            "ReverseZ, ForwardZeroToOne or ForwardNegOneToOne"));
     if (!within(shadow.bias, kShadowBiasRange))
-      return fail("shadow.bias must be in " + rangeText(kShadowBiasRange) + " m");
+      return fail("shadow.bias" + mustBeIn(shadow.bias, kShadowBiasRange, " m"));
     if (!within(shadow.normalOffsetTexels, kShadowNormalOffsetRange))
-      return fail("shadow.normalOffsetTexels must be in " + rangeText(kShadowNormalOffsetRange) +
-                  " texels");
+      return fail("shadow.normalOffsetTexels" +
+                  mustBeIn(shadow.normalOffsetTexels, kShadowNormalOffsetRange, " texels"));
   }
 
   if (frame.viewExtinction != ViewExtinction::Plugin &&
       frame.viewExtinction != ViewExtinction::Host)
-    return fail("viewExtinction is not a ViewExtinction");
+    return fail(notAnEnum("viewExtinction", static_cast<long long>(frame.viewExtinction),
+                          "ViewExtinction", "Plugin or Host"));
   if (frame.viewExtinction == ViewExtinction::Host &&
       hasFeature(create.features, Feature::GodRays) && frame.godRays.enabled)
     return fail(

@@ -34,6 +34,23 @@ std::string rangeText(Range<T> r) {
   text += "]";
   return text;
 }
+// The value as a refusal prints it: %g-like, six significant digits ("-1e+30", "nan", "0.5").
+std::string valueText(double value);
+std::string valueText(const glm::vec3& value);
+// " must be in [min, max]<unit>, got <value>": the tail of every out-of-range refusal, so that
+// each names the accepted range and what it was handed. `unit` starts with its space (" m").
+template <typename T, typename V>
+std::string mustBeIn(const V& value, Range<T> r, const char* unit = "") {
+  std::string text = " must be in ";
+  text += rangeText(r);
+  text += unit;
+  text += ", got ";
+  text += valueText(value);
+  return text;
+}
+// "<field> <value> is not a <type> (<accepted>)": the refusal of an enum out of its values.
+std::string notAnEnum(const std::string& field, long long value, const char* type,
+                      const char* accepted);
 // Whether the value (every component of a vector) lies in the range; NaN never does.
 template <typename T>
 bool within(double value, Range<T> r) {

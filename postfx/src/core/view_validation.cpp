@@ -5,8 +5,23 @@
 
 namespace postfx::detail {
 
+namespace {
+
+// Whether a refusal is about one of the view's own inputs (its G-buffer, target, camera, shadow
+// map, viewport, or a constant made from its camera), rather than a frame field every view
+// shares: only the former is the view's to fix, so only it names the view.
+bool aboutTheView(const std::string& error) {
+  for (const char* field :
+       {"depth", "normal", "albedo", "target", "camera", "shadow", "viewport", "frame:"})
+    if (error.rfind(field, 0) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
 Result prefixed(Result r, std::string& error, int index, bool listed) {
-  if (r != Result::Ok && listed) error = "views[" + std::to_string(index) + "]: " + error;
+  if (r != Result::Ok && listed && aboutTheView(error))
+    error = "views[" + std::to_string(index) + "]: " + error;
   return r;
 }
 

@@ -12,8 +12,9 @@
 
 namespace postfx::detail {
 
-// "views[i]: " before a message about one view of a multi-view dispatch (`listed`); nothing for
-// a plain dispatch(context, frame). Returns r.
+// "views[i]: " before a message about one view's own inputs in a multi-view dispatch (`listed`);
+// nothing before one about a field the views share (water, sun, settings), nor for a plain
+// dispatch(context, frame). Returns r.
 Result prefixed(Result r, std::string& error, int index, bool listed);
 
 // The list itself: its length in [1, kMaxViews], every view non-null, a live view of `context`

@@ -26,9 +26,9 @@ Result checkLight(int index, const LocalLight& light, std::string& error) {
     if (!(std::abs(light.position[a]) <= kMaxWorldCoordinate))
       return fail(".position must lie within +-" + worldExtentText() + " m of the origin");
   if (!within(light.intensity, kLightIntensityRange))
-    return fail(".intensity must be in " + rangeText(kLightIntensityRange) + " per channel");
+    return fail(".intensity" + mustBeIn(light.intensity, kLightIntensityRange, " per channel"));
   if (!within(light.range, kLightRangeRange))
-    return fail(".range must be in " + rangeText(kLightRangeRange) + " m, got " +
+    return fail(".range" + mustBeIn(light.range, kLightRangeRange, " m, got ") +
                 number(light.range));
   if (light.type == LocalLightType::Spot) {
     // The squared length must be finite too: the normalisation divides by its root.
@@ -43,7 +43,7 @@ Result checkLight(int index, const LocalLight& light, std::string& error) {
                   number(kSpotConeAngleRange.min) + ", " + number(kSpotConeAngleRange.max) +
                   ") degrees, got " + number(angle));
     if (!within(light.coneSoftness, kSpotConeSoftnessRange))
-      return fail(".coneSoftness must be in " + rangeText(kSpotConeSoftnessRange) + ", got " +
+      return fail(".coneSoftness" + mustBeIn(light.coneSoftness, kSpotConeSoftnessRange, ", got ") +
                   number(light.coneSoftness));
   }
   return checkReceivers(field + ".receivers", light.receivers, error);

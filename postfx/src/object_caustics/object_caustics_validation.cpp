@@ -120,21 +120,24 @@ Result checkCaster(int index, const CasterMesh& m, std::string& error) {
     return fail(": boundsMin/boundsMax must be finite with min <= max");
   const CasterMaterial& mat = m.material;
   if (mat.type != CasterMaterialType::Refractive && mat.type != CasterMaterialType::Reflective)
-    return fail(".material.type is not a CasterMaterialType");
+    return fail(notAnEnum(".material.type", static_cast<long long>(mat.type), "CasterMaterialType",
+                          "Refractive or Reflective"));
   if (!inRange(mat.ior, 1.0, 3.0))
-    return fail(".material.ior must be in [1, 3], got " + std::to_string(mat.ior));
+    return fail(".material.ior must be in [1, 3], got " + valueText(mat.ior));
   if (!inRange(mat.absorption, 0.0, 1e4))
-    return fail(".material.absorption must be in [0, 1e4] per metre");
-  if (!inRange(mat.reflectance, 0.0, 1.0)) return fail(".material.reflectance must be in [0, 1]");
+    return fail(".material.absorption must be in [0, 1e4] per metre, got " +
+                valueText(mat.absorption));
+  if (!inRange(mat.reflectance, 0.0, 1.0))
+    return fail(".material.reflectance must be in [0, 1], got " + valueText(mat.reflectance));
   if (!inRange(mat.transmission, 0.0, 1.0))
-    return fail(".material.transmission must be in [0, 1], got " +
-                std::to_string(mat.transmission));
-  if (!inRange(mat.tint, 0.0, 1.0)) return fail(".material.tint must be in [0, 1]");
+    return fail(".material.transmission must be in [0, 1], got " + valueText(mat.transmission));
+  if (!inRange(mat.tint, 0.0, 1.0))
+    return fail(".material.tint must be in [0, 1], got " + valueText(mat.tint));
   if (!inRange(mat.roughness, 0.0, 1.0))
-    return fail(".material.roughness must be in [0, 1], got " + std::to_string(mat.roughness));
+    return fail(".material.roughness must be in [0, 1], got " + valueText(mat.roughness));
   if (!inRange(mat.dispersion, 0.0, kMaxCasterDispersion))
-    return fail(".material.dispersion must be in [0, " + std::to_string(kMaxCasterDispersion) +
-                "], got " + std::to_string(mat.dispersion));
+    return fail(".material.dispersion must be in [0, " + valueText(kMaxCasterDispersion) +
+                "], got " + valueText(mat.dispersion));
   return Result::Ok;
 }
 
@@ -163,16 +166,22 @@ Result validateObjectCaustics(const CreateDesc& create, const FrameDesc& frame,
     return fail("objectCaustics.settings.exitIterations must be in [1, 8], got " +
                 std::to_string(s.exitIterations));
   if (!inRange(s.splatRadius, 0.5, 8.0))
-    return fail("objectCaustics.settings.splatRadius must be in [0.5, 8] texels");
+    return fail("objectCaustics.settings.splatRadius must be in [0.5, 8] texels, got " +
+                valueText(s.splatRadius));
   if (!inRange(s.footprintScale, 1.0, 8.0))
-    return fail("objectCaustics.settings.footprintScale must be in [1, 8]");
+    return fail("objectCaustics.settings.footprintScale must be in [1, 8], got " +
+                valueText(s.footprintScale));
   if (!inRange(s.intensity, 0.0, 1e4))
-    return fail("objectCaustics.settings.intensity must be in [0, 1e4]");
+    return fail("objectCaustics.settings.intensity must be in [0, 1e4], got " +
+                valueText(s.intensity));
   if (!inRange(s.temporalWeight, 0.0, 0.95))
-    return fail("objectCaustics.settings.temporalWeight must be in [0, 0.95]");
+    return fail("objectCaustics.settings.temporalWeight must be in [0, 0.95], got " +
+                valueText(s.temporalWeight));
   if (s.volume.method != VolumeCausticsMethod::Beams &&
       s.volume.method != VolumeCausticsMethod::Lines)
-    return fail("objectCaustics.settings.volume.method is not a VolumeCausticsMethod");
+    return fail(notAnEnum("objectCaustics.settings.volume.method",
+                          static_cast<long long>(s.volume.method), "VolumeCausticsMethod",
+                          "Beams or Lines"));
   if (o.casterCount < 0 || o.casterCount > kMaxCasters)
     return fail("objectCaustics.casterCount must be in [0, " + std::to_string(kMaxCasters) +
                 "], got " + std::to_string(o.casterCount));
@@ -208,9 +217,10 @@ Result checkReceivers(const std::string& field, const SunShadowMap& rec, std::st
   if (!(std::abs(glm::determinant(rec.worldToLightClip)) > 1e-300))
     return fail(".worldToLightClip is not invertible");
   if (!isDepthConvention(rec.depthConvention))
-    return fail(".depthConvention is not a DepthConvention");
+    return fail(notAnEnum(".depthConvention", static_cast<long long>(rec.depthConvention),
+                          "DepthConvention", "ReverseZ, ForwardZeroToOne or ForwardNegOneToOne"));
   if (!within(rec.bias, kShadowBiasRange))
-    return fail(".bias must be in " + rangeText(kShadowBiasRange) + " m");
+    return fail(".bias" + mustBeIn(rec.bias, kShadowBiasRange, " m"));
   return checkDepthTexture((field + ".depth").c_str(), rec.depth, error);
 }
 

@@ -115,6 +115,8 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     const double texelsPerMetre = std::max(water.width, water.height) / tile;
     b.cascadeOblique[c] = glm::vec4(tileFraction(obliqueU, tile), tileFraction(obliqueV, tile),
                                     std::log2(texelsPerMetre), 0.0);
+    // log2(wavelength / 2) as log2(wavelength) - 1: half of the smallest subnormal rounds to 0,
+    // whose log is -Inf (a valid 5e-324 m once refused the frame as a float overflow).
     // Paraxial focusing: a curvature kappa modulates the irradiance at path length L by
     // L * (1 - 1/n) * kappa, and L = depth / up.y along the unperturbed refracted sun.
     const double laplacian = surface.rmsLaplacian[c];
@@ -122,7 +124,7 @@ shared::CausticsBlock buildCausticsBlock(const CreateDesc& create, const FrameDe
     b.cascadeSkip[c] = glm::vec4(
         laplacian > 0.0 ? static_cast<float>((1.0 - 1.0 / double(surface.ior)) * laplacian / upY)
                         : -1.0f,
-        wavelength > 0.0 ? static_cast<float>(std::log2(0.5 * wavelength)) : 1e30f, 0.0f, 0.0f);
+        wavelength > 0.0 ? static_cast<float>(std::log2(wavelength) - 1.0) : 1e30f, 0.0f, 0.0f);
   }
   if (tileIrradianceActive(frame)) {
     const TileIrradianceLayout l = tileIrradianceLayout(frame);

@@ -12,31 +12,36 @@ Result validateCausticsSettings(const CreateDesc& create, const CausticsSettings
     error = std::move(message);
     return Result::InvalidArgument;
   };
-  auto outside = [&fail](const char* field, auto range, const char* unit) {
-    return fail(std::string("caustics.") + field + " must be in " + rangeText(range) + unit);
+  auto outside = [&fail](const char* field, const auto& value, auto range, const char* unit) {
+    return fail(std::string("caustics.") + field + mustBeIn(value, range, unit));
   };
-  if (!within(s.tau, kTauRange)) return outside("tau", kTauRange, "");
-  if (!within(s.reflectionWeight, kUnitRange)) return outside("reflectionWeight", kUnitRange, "");
-  if (!within(s.intensity, kIntensityRange)) return outside("intensity", kIntensityRange, "");
+  if (!within(s.tau, kTauRange)) return outside("tau", s.tau, kTauRange, "");
+  if (!within(s.reflectionWeight, kUnitRange))
+    return outside("reflectionWeight", s.reflectionWeight, kUnitRange, "");
+  if (!within(s.intensity, kIntensityRange))
+    return outside("intensity", s.intensity, kIntensityRange, "");
   if (!within(s.surfaceFadeDepth, kFadeDepthRange))
-    return outside("surfaceFadeDepth", kFadeDepthRange, " m");
+    return outside("surfaceFadeDepth", s.surfaceFadeDepth, kFadeDepthRange, " m");
   if (!within(s.triplanarSharpness, kTriplanarSharpnessRange))
-    return outside("triplanarSharpness", kTriplanarSharpnessRange, "");
-  if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", kLodBiasRange, "");
+    return outside("triplanarSharpness", s.triplanarSharpness, kTriplanarSharpnessRange, "");
+  if (!within(s.lodBias, kLodBiasRange)) return outside("lodBias", s.lodBias, kLodBiasRange, "");
   if (!within(s.minCascadeContrast, kUnitRange))
-    return outside("minCascadeContrast", kUnitRange, "");
+    return outside("minCascadeContrast", s.minCascadeContrast, kUnitRange, "");
   if (s.model != CausticsModel::RayDeviation && s.model != CausticsModel::WavefrontAreaRatio &&
       s.model != CausticsModel::TileIrradiance)
-    return fail("caustics.model is not a CausticsModel");
+    return fail(notAnEnum("caustics.model", static_cast<long long>(s.model), "CausticsModel",
+                          "RayDeviation, WavefrontAreaRatio or TileIrradiance"));
   const bool powerOfTwo = s.tileResolution > 0 && (s.tileResolution & (s.tileResolution - 1)) == 0;
   if (!kTileResolutionRange.contains(s.tileResolution) || !powerOfTwo)
     return fail("caustics.tileResolution must be a power of two in " +
                 rangeText(kTileResolutionRange) + ", got " + std::to_string(s.tileResolution));
   if (!within(s.tileMinModulation, kTileMinModulationRange))
-    return outside("tileMinModulation", kTileMinModulationRange, "");
+    return outside("tileMinModulation", s.tileMinModulation, kTileMinModulationRange, "");
   if (s.tileLookupResolution != CausticsLookupResolution::Full &&
       s.tileLookupResolution != CausticsLookupResolution::Half)
-    return fail("caustics.tileLookupResolution is not a CausticsLookupResolution");
+    return fail(notAnEnum("caustics.tileLookupResolution",
+                          static_cast<long long>(s.tileLookupResolution),
+                          "CausticsLookupResolution", "Full = 1 or Half = 2"));
   if (s.tilePointsPerTexel != 1 && s.tilePointsPerTexel != 2)
     return fail("caustics.tilePointsPerTexel must be 1 or 2, got " +
                 std::to_string(s.tilePointsPerTexel));
@@ -49,14 +54,15 @@ Result validateCausticsSettings(const CreateDesc& create, const CausticsSettings
   if (!kGridResolutionRange.contains(s.gridResolution))
     return fail("caustics.gridResolution must be in " + rangeText(kGridResolutionRange) + ", got " +
                 std::to_string(s.gridResolution));
-  if (!within(s.windowSize, kWindowSizeRange)) return outside("windowSize", kWindowSizeRange, " m");
+  if (!within(s.windowSize, kWindowSizeRange))
+    return outside("windowSize", s.windowSize, kWindowSizeRange, " m");
   if (!kDepthLayersRange.contains(s.depthLayers))
     return fail("caustics.depthLayers must be in " + rangeText(kDepthLayersRange) + ", got " +
                 std::to_string(s.depthLayers));
   if (!within(s.maxReceiverDepth, kMaxReceiverDepthRange))
-    return outside("maxReceiverDepth", kMaxReceiverDepthRange, " m");
+    return outside("maxReceiverDepth", s.maxReceiverDepth, kMaxReceiverDepthRange, " m");
   if (!within(s.maxIrradiance, kMaxIrradianceRange))
-    return outside("maxIrradiance", kMaxIrradianceRange, "");
+    return outside("maxIrradiance", s.maxIrradiance, kMaxIrradianceRange, "");
   return Result::Ok;
 }
 

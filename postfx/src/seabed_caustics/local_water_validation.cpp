@@ -40,12 +40,14 @@ Result validateLocalWaterValues(const CreateDesc& create, const WaterSurface& wa
                   " m");
     if (!within(r.size.x, kLocalWaterSizeRange) || !within(r.size.y, kLocalWaterSizeRange))
       return fail(regionField(i, "size") + " must be in " + rangeText(kLocalWaterSizeRange) +
-                  " m on each side");
+                  " m on each side, got (" + valueText(r.size.x) + ", " + valueText(r.size.y) +
+                  ")");
     if (!within(r.rotation, kLocalWaterRotationRange))
-      return fail(regionField(i, "rotation") + " must be in " +
-                  rangeText(kLocalWaterRotationRange) + " radians");
+      return fail(regionField(i, "rotation") +
+                  mustBeIn(r.rotation, kLocalWaterRotationRange, " radians"));
     if (r.mode != LocalWaterMode::Add && r.mode != LocalWaterMode::Replace)
-      return fail(regionField(i, "mode") + " is not a LocalWaterMode");
+      return fail(notAnEnum(regionField(i, "mode"), static_cast<long long>(r.mode),
+                            "LocalWaterMode", "Add or Replace"));
     const double halfShorter = 0.5 * std::min(r.size.x, r.size.y);
     if (!(r.edgeBlend >= 0.0f) || !(double(r.edgeBlend) <= halfShorter))
       return fail(regionField(i, "edgeBlend") + " must be in [0, " + number(halfShorter) +
@@ -57,8 +59,7 @@ Result validateLocalWaterValues(const CreateDesc& create, const WaterSurface& wa
       return fail(regionField(i, "depthLayers") + " must be in " +
                   rangeText(kLocalWaterLayerRange) + ", got " + std::to_string(r.depthLayers));
     if (!within(r.maxDepth, kLocalWaterDepthRange))
-      return fail(regionField(i, "maxDepth") + " must be in " + rangeText(kLocalWaterDepthRange) +
-                  " m");
+      return fail(regionField(i, "maxDepth") + mustBeIn(r.maxDepth, kLocalWaterDepthRange, " m"));
   }
   return Result::Ok;
 }
