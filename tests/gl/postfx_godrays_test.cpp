@@ -154,6 +154,49 @@ TEST_F(PostfxGodRaysTest, SkippedWithNothingToLight) {
   glDeleteTextures(1, &water);
 }
 
+// frame_desc.h's contract at every resolution: no light on anything above the water seen from
+// above it. A ball straddles the level, so texels of its wall just under the waterline sit beside
+// pixels just above it at the same distance: the reduced march's upsample once carried a
+// half-float step of shaft light onto the wall 9 mm above the water at Quarter resolution.
+TEST_F(PostfxGodRaysTest, NothingAboveTheWaterIsLitFromAboveAtAnyResolution) {
+  const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
+  auto fx = postfxtest::makeContext(Feature::GodRays);
+  postfxtest::SceneSpec spec = smallSpec();
+  spec.width = 160;
+  spec.height = 90;
+  spec.camera = {0.0, 0.4, 0.0};
+  spec.lookDirection = {0.0, -0.3, -1.0};
+  spec.sphereCenter = {0.3, -0.4, -5.0};  // world y = 0: the level cuts it in half
+  spec.sphereRadius = 1.5;
+  postfxtest::Scene scene(spec);
+  postfx::FrameDesc frame = postfxtest::makeFrame(scene, water, 3);
+  for (const postfx::GodRayResolution resolution :
+       {postfx::GodRayResolution::Full, postfx::GodRayResolution::Half,
+        postfx::GodRayResolution::Quarter}) {
+    SCOPED_TRACE(static_cast<int>(resolution));
+    frame.godRays.resolution = resolution;
+    const std::vector<glm::vec4> image = render(*fx, scene, frame);
+    int above = 0, lit = 0, litBelow = 0;
+    for (int y = 0; y < spec.height; ++y)
+      for (int x = 0; x < spec.width; ++x) {
+        const postfxtest::PixelTruth& t = scene.truth(x, y);
+        const glm::vec4& p = image[static_cast<size_t>(y) * spec.width + x];
+        const bool light = p.r + p.g + p.b > 0.0f;
+        const double worldY = spec.camera.y + t.position.y;
+        if (t.hit != postfxtest::Hit::Sky && worldY > frame.water.level + 1e-4) {
+          ++above;
+          lit += light ? 1 : 0;
+        } else if (light) {
+          ++litBelow;
+        }
+      }
+    EXPECT_GT(above, 100) << "the scene shows the ball above the water";
+    EXPECT_GT(litBelow, 100) << "and shafts below it";
+    EXPECT_EQ(lit, 0) << "pixels above the water with god-ray light";
+  }
+  glDeleteTextures(1, &water);
+}
+
 // A shadow map in the forward [0,1] convention whose left half (light-space x < 0) holds an
 // occluder at depth 0 and whose right half is empty (depth 1); `full` occludes everything.
 GLuint makeShadowMap(bool left, bool right) {

@@ -4,6 +4,7 @@
 // weight times the similarity of their distances (stored in alpha by the march), so shafts do
 // not bleed across silhouettes; when no neighbour matches, the closest in distance is taken.
 #include "postfx/god_rays/godrays_common.glsl"
+#include "postfx/god_rays/postfx_godrays.h"
 
 // Each texel: (packHalf2x16(r, g), packHalf2x16(b, distance)), godrays.frag's reduced march.
 layout(binding = POSTFX_UNIT_GODRAYS_REDUCED) uniform usampler2D reducedGodRays;
@@ -14,8 +15,13 @@ const float kDepthTolerance = 0.05;
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float z0;
-  pixelViewRay(pixel, z0);
+  vec3 d = mat3(u.viewToWorld) * pixelViewRay(pixel, z0);
   if (!(z0 > 0.0)) discard;  // NaN depth texel
+  // A pixel whose own view ray has no underwater part gets no light, whatever its reduced
+  // neighbours hold: a wall 9 mm above the water, seen from above it, once took a shaft's
+  // half-float step from the texel below the waterline at the same distance.
+  vec2 range = godRayUnderwaterRange(u.depthAndWater.z, d.y, min(z0, g.fade.z));
+  if (!(range.y > range.x)) discard;
   // Reduced texel i sits on full pixel k*i; pixel k*i + j lies j/k of the way to texel i + 1.
   int k = int(g.reduction.x);
   ivec2 local = pixel - ivec2(u.viewOrigin.xy);  // in the view
