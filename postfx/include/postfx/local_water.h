@@ -4,8 +4,9 @@
 // each a world-placed rectangle with a height/slope texture of its own (a ripple simulation, a
 // wake). Its surface is refracted as a grid onto the receivers below it (the wavefront area ratio,
 // folds summed) once per frame for every view; under the region that light replaces the periodic
-// field's, blended into it over `edgeBlend`; outside it nothing changes. The seabed caustics (any
-// CausticsModel) and the god rays read it. Walls and overhangs inside a region get the light that
+// field's, blended into it over `edgeBlend`; outside it the seabed caustics do not change (bit
+// for bit). The seabed caustics (any CausticsModel) and the god rays read it; a god-ray view ray
+// that passes under a region takes its light, so shafts change outside the rectangle too. Walls and overhangs inside a region get the light that
 // entered the water where the refracted sun through them meets the level (as webgl-water lights
 // its pool's walls). docs/integration.md, "Local water".
 #include <cstdint>

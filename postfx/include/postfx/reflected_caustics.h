@@ -72,6 +72,10 @@ struct ReflectedCausticsSettings {
   // from it), snapped to whole texels in world space. With ViewDepth, a grid four times as wide
   // and as coarse around it lights the far and high receivers. Beyond the outermost grid, across
   // its outer eighth, the pattern fades to the flat mean (the mirror light stays).
+  // Reach at the default 24 m, ahead of the camera along the view: HeightLayers to about 18 m
+  // (the window, 6 m ahead +- 12 m; a wall 20 m away gets only the flat mean), ViewDepth to
+  // about 54 m (its outer grid, 96 m wide); to the sides half the width, behind the camera
+  // 6 m (HeightLayers) or 42 m. Widen the window for far receivers: its cells grow with it.
   float windowSize = 24.0f;
   // Water grid cells per side of the window (and of the outer grid), kReflectedGridRange. A
   // mirror deviates light by twice the slope (refraction by a quarter of it), so reflected lines

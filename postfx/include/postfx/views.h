@@ -36,7 +36,8 @@ struct View;  // opaque: what one view keeps between frames
 inline constexpr int kMaxViews = 16;  // views one dispatch() may carry
 
 // A rectangle of the view's target, in pixels from its lower-left corner (GL's window
-// convention). width = height = 0 (default): the whole target. Otherwise both > 0 and the
+// convention). All four 0 (the default): the whole target ({5, 0, 0, 0} is refused: a size of
+// 0 x 0 means the whole target only at the origin). Otherwise both sizes > 0 and the
 // rectangle inside the target; the view's G-buffer is read at the same pixels (one G-buffer the
 // size of the target, shared by split-screen views, or one per view) and nothing outside the
 // rectangle is written. Views that share a target must not overlap.
