@@ -40,7 +40,7 @@ size="--preset pool --width 640 --height 360 --no-god-rays"
   --base "$work/pool_base.exr" --flat "$work/pool_flat.exr" --out docs/pool_side_by_side.png
 
 echo "make_images: docs/harbour.png (the harbour, reflected caustics above the water)"
-"$sample" render --preset harbour --out docs/harbour.png > /dev/null
+"$sample" render --preset harbour --width 640 --height 360 --out docs/harbour.png > /dev/null
 
 echo "make_images: docs/loop.gif (40 frames)"
 "$sample" render --width 320 --height 180 --frames 40 --fps 20 --out docs/loop.gif | tail -n 1

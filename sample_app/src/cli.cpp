@@ -95,7 +95,8 @@ entered, along the refracted sun; with --triplanar-walls steep surfaces blend in
 projections instead (ray-deviation only).
 
 --model FILE[@x,y,z][:fit=M|none]: a glTF (.glb/.gltf) added as glass or metal casters. By
-default its bounding box is scaled to 1.5 m and set on the sand in a row before the camera;
+default its bounding box is scaled to 1.5 m and set in a row across the preset camera's view,
+on the sand (or, where the view passes above it, under the water on the view's centre line);
 @x,y,z puts the box's centre at x, z with its bottom y metres above the sand; :fit=M scales its
 largest side to M metres (0.01..100), :fit=none keeps the file's size. Glass is a material
 with KHR_materials_transmission and metallic < 0.5 (transmission x (1 - metallic) weighs its
@@ -110,9 +111,11 @@ are the options').
 
 Each file is held to a work budget, checked from its own counts before anything is expanded:
 4194304 triangles after instancing, 16384 instances (one per primitive per node copy), 65536
-nodes and 1 GiB once expanded (buffers, meshes, instances). A file over it is refused naming
-each limit with its count; --model-limits triangles=N,instances=N,nodes=N,bytes=N (any of
-them, N up to 2^40, k/M/G suffixes) raises them.)";
+nodes, 1 GiB once expanded (buffers, meshes, instances), 4194304 values in its JSON and
+33554432 texture pixels decoded (each image once, size from its header). A file over it is
+refused naming each limit with its count; --model-limits
+triangles=N,instances=N,nodes=N,bytes=N,json-values=N,pixels=N (any of them, N up to 2^40,
+k/M/G suffixes) raises them.)";
 
 // Flags that say opposite things: given both, the one applied last would win unseen.
 constexpr std::pair<std::string_view, std::string_view> kContradictingFlags[] = {

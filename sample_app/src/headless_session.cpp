@@ -12,7 +12,8 @@ bool openHeadlessSession(const Options& options, bool debug, bool benchmarkFloor
                          HeadlessSession& session, std::string& error) {
   if (!resolveView(options, session.preset, error)) return false;
   ocean_scene::Model& scene = session.scene;
-  if (!buildScene(options.models, scene, error, options.modelLimits, session.preset.scene))
+  if (!buildScene(options.models, scene, error, options.modelLimits, session.preset.scene,
+                  session.preset.camera))
     return false;
   session.context = glcontext::HeadlessContext::create(debug, error);
   if (!session.context) return false;

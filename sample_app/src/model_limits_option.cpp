@@ -28,7 +28,8 @@ bool parseCount(std::string_view text, std::uint64_t& value) {
 
 bool parseModelLimits(std::string_view text, ocean_scene::GltfLimits& limits, std::string& error) {
   const std::string usage =
-      " (KEY=N[,KEY=N]...: triangles, instances, nodes or bytes, N in "
+      " (KEY=N[,KEY=N]...: triangles, instances, nodes, bytes, json-values or pixels, "
+      "N in "
       "[1, 2^40], a k/M/G suffix allowed)";
   if (text.empty()) {
     error = "--model-limits is empty" + usage;
@@ -41,11 +42,13 @@ bool parseModelLimits(std::string_view text, ocean_scene::GltfLimits& limits, st
     const std::string_view item = text.substr(start, end - start);
     const std::size_t equals = item.find('=');
     const std::string_view key = item.substr(0, equals);
-    std::uint64_t* field = key == "triangles"   ? &limits.triangles
-                           : key == "instances" ? &limits.instances
-                           : key == "nodes"     ? &limits.nodes
-                           : key == "bytes"     ? &limits.bytes
-                                                : nullptr;
+    std::uint64_t* field = key == "triangles"     ? &limits.triangles
+                           : key == "instances"   ? &limits.instances
+                           : key == "nodes"       ? &limits.nodes
+                           : key == "bytes"       ? &limits.bytes
+                           : key == "json-values" ? &limits.jsonValues
+                           : key == "pixels"      ? &limits.pixels
+                                                  : nullptr;
     if (field == nullptr || equals == std::string_view::npos) {
       error = "--model-limits: '" + std::string(item) + "' is not KEY=N" + usage;
       return false;

@@ -104,7 +104,8 @@ std::string causticsModelList() {
 
 const std::array kValueOptions{
     ValueOption{"--preset", "NAME",
-                "shallow, seabed, sunward, above, waterline, torch, pool or wake (default shallow)",
+                "shallow, seabed, sunward, above, waterline, torch, pool, wake or harbour "
+                "(default shallow)",
                 false,
                 [](std::string_view text, Options& o, std::string&) {
                   o.preset = text;  // checked against the presets when the scene is built
@@ -116,6 +117,7 @@ const std::array kValueOptions{
                 }},
     ValueOption{"--height", "H", "image height in pixels (default 720)", false,
                 [](std::string_view text, Options& o, std::string& error) {
+                  o.heightGiven = true;
                   return intIn(text, 1, kMaxImageSide, o.height, "--height", error);
                 }},
     ValueOption{"--time", "T", "animation time in seconds (default 0)", false,
@@ -147,8 +149,9 @@ const std::array kValueOptions{
                 }},
     ValueOption{"--model-limits", "KEY=N[,KEY=N]...",
                 "the work budget of each glTF: triangles (after instancing, default 4194304), "
-                "instances (16384), nodes (65536), bytes (once expanded, default 1G); N in "
-                "[1, 2^40], a k/M/G suffix allowed",
+                "instances (16384), nodes (65536), bytes (once expanded, default 1G), "
+                "json-values (values in the JSON, 4194304), pixels (texture pixels decoded, "
+                "33554432); N in [1, 2^40], a k/M/G suffix allowed",
                 false,
                 [](std::string_view text, Options& o, std::string& error) {
                   return parseModelLimits(text, o.modelLimits, error);
@@ -497,7 +500,9 @@ const std::array kFlagOptions{
     FlagOption{"--stereo", "render: a side-by-side stereo pair (eyes 6.4 cm apart), one dispatch",
                [](Options& o) { o.stereo = true; }},
     FlagOption{"--cube-map",
-               "render: a cube-map probe (six faces of --width/4, one dispatch) as a 4x3 cross",
+               "render: a cube-map probe (six faces of --width/4, one dispatch) as a 4x3 cross; "
+               "--width must be a multiple of 4 and --height is not taken (the cross is "
+               "3/4 as tall as wide)",
                [](Options& o) { o.cubeMap = true; }},
     FlagOption{"--no-overlay", "view: no overlay (timings in the title bar, as before it)",
                [](Options& o) { o.overlay = false; }},

@@ -20,6 +20,7 @@ struct Options {
   Command command = Command::Help;
   std::string preset = "shallow";  // the hero view (camera.cpp); README leads with it
   int width = 1280, height = 720;
+  bool heightGiven = false;  // --height was on the command line (--cube-map refuses it)
   double timeSeconds = 0.0;
   // Extra glTF files placed in the scene: each --model (FILE[@x,y,z][:fit=M|none]), then each
   // --model-file (a path taken literally, placed in the row at the default size).

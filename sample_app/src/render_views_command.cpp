@@ -50,7 +50,21 @@ int runRenderViews(const Options& commandOptions) {
   // Each view's size: a column of the image, or a cube face of a quarter of its width.
   Options options = commandOptions;
   if (cube) {
-    options.width = options.height = std::max(1, commandOptions.width / 4);
+    // The cross is 4 faces wide and 3 tall: its size follows from --width alone.
+    if (commandOptions.heightGiven)
+      return commandFailed("render --cube-map takes no --height (got " +
+                           std::to_string(commandOptions.height) +
+                           "): the cross is 4 faces of --width/4 wide and 3 tall, so --width " +
+                           std::to_string(commandOptions.width) + " makes it " +
+                           std::to_string(commandOptions.width) + "x" +
+                           std::to_string(commandOptions.width / 4 * 3) + "; give --width only");
+    if (commandOptions.width < 4 || commandOptions.width % 4 != 0)
+      return commandFailed(
+          "render --cube-map needs a --width that 4 divides (each of the "
+          "cross's 4 columns is a cube face), got " +
+          std::to_string(commandOptions.width) + ": try --width " +
+          std::to_string(std::max(4, commandOptions.width / 4 * 4)));
+    options.width = options.height = commandOptions.width / 4;
   } else {
     if (commandOptions.width % count != 0)
       return commandFailed(std::string("render ") +

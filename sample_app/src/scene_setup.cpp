@@ -1,10 +1,13 @@
 #include "scene_setup.h"
 
 #include "caster_admission.h"
+#include "model_row.h"
 #include "model_spec.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -47,7 +50,8 @@ void modelBounds(const ocean_scene::Model& model, glm::dvec3& lo, glm::dvec3& hi
 }  // namespace
 
 bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
-                std::string& error, const ocean_scene::GltfLimits& limits, SceneKind kind) {
+                std::string& error, const ocean_scene::GltfLimits& limits, SceneKind kind,
+                const Camera& camera) {
   if (kind == SceneKind::Pool) {
     if (!userModels.empty()) {
       error =
@@ -70,12 +74,21 @@ bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& sc
     held.raiseOption = "--model-limits";
     if (!ocean_scene::loadGlb(spec.path, model, error, &notes, held)) return false;
     if (!notes.empty()) warnings.push_back(spec.path + ": " + notes);
-    // Without a position, user models stand in a row in front of the seabed preset's camera.
-    const glm::dvec2 rowXZ(3.0 * double(i) - 1.5 * double(userModels.size() - 1), 5.0);
     glm::dvec3 lo, hi;
     modelBounds(model, lo, hi);
+    // Without a position, user models stand in a row across the preset camera's view.
+    ModelSpec placed = spec;
+    if (!placed.position) {
+      const double largest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+      const double height =
+          spec.fitMetres && largest > 0.0 ? (hi.y - lo.y) * *spec.fitMetres / largest : hi.y - lo.y;
+      placed.position =
+          rowPosition(camera, i, userModels.size(), std::isfinite(height) ? height : 0.0,
+                      &ocean_scene::seabedHeight);
+    }
     glm::dmat4 place;
-    if (!placementTransform(spec, lo, hi, rowXZ, &ocean_scene::seabedHeight, place, error)) {
+    const glm::dvec2 unused(0.0);
+    if (!placementTransform(placed, lo, hi, unused, &ocean_scene::seabedHeight, place, error)) {
       error = spec.path + ": " + error;
       return false;
     }

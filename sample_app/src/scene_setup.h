@@ -7,6 +7,7 @@
 #include <scene/gltf_limits.h>
 #include <scene/model.h>
 
+#include "camera.h"
 #include "model_spec.h"
 #include "scene_kind.h"
 
@@ -18,8 +19,10 @@ namespace ocean {
 // returns false with a one-line message. SceneKind::Pool builds the pool (scene/pool_scene.h)
 // with its default dimensions, and takes no user models (their placement rests them on the
 // sand); SceneKind::Harbour adds the harbour (scene/harbour_scene.h) to the sea's scene.
+// Models without a position stand in a row across `camera`'s view (model_row.h): the preset's
+// camera, so that every preset shows them.
 bool buildScene(const std::vector<ModelSpec>& userModels, ocean_scene::Model& scene,
                 std::string& error, const ocean_scene::GltfLimits& limits = {},
-                SceneKind kind = SceneKind::Sea);
+                SceneKind kind = SceneKind::Sea, const Camera& camera = Camera{});
 
 }  // namespace ocean

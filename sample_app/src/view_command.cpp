@@ -216,7 +216,8 @@ int runView(const Options& options) {
   if (!options.screenshot.empty() && !checkOutputPath(options.screenshot, error))
     return commandFailed(error);
   ocean_scene::Model scene;
-  if (!buildScene(options.models, scene, error, options.modelLimits, state.preset.scene))
+  if (!buildScene(options.models, scene, error, options.modelLimits, state.preset.scene,
+                  state.preset.camera))
     return commandFailed(error);
   if (glfwInit() != GLFW_TRUE) return commandFailed("cannot initialise GLFW (no display?)");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);

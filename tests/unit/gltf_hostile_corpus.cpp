@@ -227,9 +227,10 @@ void addNameCases(std::vector<Case>& cases) {
       loads("long_mesh_name_note", "t.gltf",
             bytesOf(replaced(bounds.text(), "\"name\": \"tri\"", "\"name\": \"" + name + "\"")),
             "(1048576 bytes)': POSITION accessor 0 has no min/max"));
-  // tinygltf's own error quotes the image's name whole.
+  // tinygltf's own error quotes the image's name whole (an image with neither a uri nor a
+  // bufferView: a bufferView "zero" is refused before tinygltf, as an index that is no integer).
   TriangleJson image;
-  image.top = "\"images\": [{\"name\": \"" + name + "\", \"bufferView\": \"zero\"}], ";
+  image.top = "\"images\": [{\"name\": \"" + name + "\"}], ";
   cases.push_back(refused("long_tinygltf_line", "t.gltf", bytesOf(image.text()), "tinygltf: "));
 }
 
@@ -319,6 +320,100 @@ void addTextureCases(std::vector<Case>& cases, const fs::path& scratch) {
   cases.push_back(outside);
 }
 
+// Files that broke a rule of the spec and were accepted, or were refused with a message
+// that named the wrong problem (issue 56, items 12 and 16).
+void addSpecRuleCases(std::vector<Case>& cases) {
+  const auto text = [](const TriangleJson& json) { return bytesOf(json.text()); };
+  TriangleJson mesh;
+  mesh.nodes = "{\"mesh\": -5}";  // was "the scene has no node with a mesh"
+  cases.push_back(refused("index_mesh_negative", "t.gltf", text(mesh),
+                          "nodes[0].mesh is -5; an index must be an integer >= 0 (the position "
+                          "of an entry of \"meshes\")"));
+  mesh.nodes = "{\"mesh\": -0}";  // was drawn as mesh 0, uncounted by the budget
+  cases.push_back(refused("index_mesh_minus_zero", "t.gltf", text(mesh), "nodes[0].mesh is -0;"));
+  cases.push_back(refused("index_scene_minus_zero", "t.gltf",
+                          bytesOf(replaced(TriangleJson{}.text(), "\"scene\": 0", "\"scene\": -0")),
+                          "scene is -0; an index must be an integer >= 0"));
+  cases.push_back(
+      refused("index_attribute_float", "t.gltf",
+              bytesOf(replaced(TriangleJson{}.text(), "{\"POSITION\": 0}", "{\"POSITION\": 0.0}")),
+              "meshes[0].primitives[0].attributes.POSITION is 0.0; an index must be"));
+  // Every node another's child and no scene: was "the scene has no node with a mesh".
+  TriangleJson cycle;
+  cycle.nodes = "{\"children\": [1]}, {\"mesh\": 0, \"children\": [0]}";
+  cases.push_back(
+      refused("node_cycle_no_scene", "t.gltf",
+              bytesOf(replaced(cycle.text(), ", \"scenes\": [{\"nodes\": [0]}], \"scene\": 0", "")),
+              "each of its 2 node(s) is another node's child, so no node is a root"));
+  // 70 "nodes" keys: was counted as 70 x 1000 nodes and refused as over the nodes limit.
+  TriangleJson duplicate;
+  for (int i = 0; i < 69; ++i) duplicate.top += "\"nodes\": [" + repeated("{}", 1000) + "], ";
+  cases.push_back(refused("duplicate_nodes_key", "t.gltf", text(duplicate),
+                          "duplicate key \"nodes\" in the root object"));
+  TriangleJson offset;
+  offset.accessor = "\"byteOffset\": -0";  // was "is 0; it must be a non-negative integer"
+  cases.push_back(refused("offset_minus_zero", "t.gltf", text(offset),
+                          "accessors[0].byteOffset is -0; it must be a non-negative integer, "
+                          "written without a sign"));
+  // Was tinygltf's "'count' property is not a positive integer", naming no accessor.
+  cases.push_back(
+      refused("count_exponent", "t.gltf",
+              bytesOf(replaced(TriangleJson{}.text(), "\"count\": 3", "\"count\": 2.4e1")),
+              "accessors[0].count is 24.0; it must be a non-negative integer written as one (24"));
+  // UTF-16 (with and without a byte-order mark): was "unexpected end of input".
+  const auto utf16 = [](const std::string& json, bool bom) {
+    Bytes out = bom ? Bytes{0xFF, 0xFE} : Bytes{};
+    for (char c : json) out.insert(out.end(), {static_cast<unsigned char>(c), 0});
+    return out;
+  };
+  cases.push_back(refused("utf16_bom", "t.gltf", utf16(TriangleJson{}.text(), true),
+                          "the JSON is UTF-16 or UTF-32"));
+  cases.push_back(
+      refused("utf16", "t.gltf", utf16(TriangleJson{}.text(), false), "glTF's JSON must be UTF-8"));
+  // Was tinygltf's "accessor[1] invalid bufferView".
+  TriangleJson indices;
+  indices.accessor =
+      "\"min\": [0, 0, -1], \"max\": [1, 0, 0]}, {\"componentType\": 5125, \"count\": 3, "
+      "\"type\": \"SCALAR\"";
+  indices.primitive = "\"indices\": 1";
+  cases.push_back(refused("indices_without_view", "t.gltf", text(indices),
+                          "meshes[0].primitives[0].indices is accessors[1], which has no "
+                          "bufferView"));
+  // Accepted though invalid.
+  cases.push_back(refused(
+      "asset_version_1", "t.gltf",
+      bytesOf(replaced(TriangleJson{}.text(), "\"version\": \"2.0\"", "\"version\": \"1.0\"")),
+      "asset.version is \"1.0\"; this loader reads glTF 2.0"));
+  cases.push_back(refused(
+      "byte_stride_zero", "t.gltf",
+      bytesOf(replaced(TriangleJson{}.text(), "\"byteLength\": 36}], \"accessors\"",
+                       "\"byteLength\": 36, \"byteStride\": 0}], \"accessors\"")),
+      "bufferViews[0].byteStride is 0; when present it must be a multiple of 4 from 4 to 252"));
+  TriangleJson factor;
+  factor.top = "\"materials\": [{\"pbrMetallicRoughness\": {\"baseColorFactor\": [1]}}], ";
+  factor.primitive = "\"material\": 0";
+  cases.push_back(refused("base_colour_factor_short", "t.gltf", text(factor),
+                          "materials[0].pbrMetallicRoughness.baseColorFactor is 1 value(s); it "
+                          "must be 4 numbers"));
+  // A second BIN chunk, and an unknown chunk running past the GLB's end.
+  const auto withChunk = [](std::uint32_t type, std::uint32_t length, std::uint32_t data) {
+    Bytes glb = gltf_test_files::triangleGlb();
+    const std::size_t at = glb.size();
+    glb.resize(at + 8 + data, 0);
+    patch32(glb, at, length);
+    patch32(glb, at + 4, type);
+    patch32(glb, 8, std::uint32_t(glb.size()));
+    return glb;
+  };
+  const std::size_t end = gltf_test_files::triangleGlb().size();
+  cases.push_back(refused("glb_second_bin", "t.glb", withChunk(0x004E4942u, 4, 4),
+                          "GLB has a second BIN chunk at byte " + std::to_string(end)));
+  cases.push_back(
+      refused("glb_chunk_past_end", "t.glb", withChunk(0x41414141u, 100, 4),
+              "GLB chunk 0x41414141 ('AAAA') at byte " + std::to_string(end) + " has length 100"));
+  cases.push_back(loads("glb_unknown_chunk", "t.glb", withChunk(0x41414141u, 4, 4)));
+}
+
 }  // namespace
 
 Bytes manyPrimitives(int primitives) {
@@ -356,6 +451,7 @@ std::vector<Case> corpus(const fs::path& scratch) {
   addPathCases(cases);
   addIntegerCases(cases);
   addTextureCases(cases, scratch);
+  addSpecRuleCases(cases);
   return cases;
 }
 

@@ -19,13 +19,13 @@ namespace gltf_texture_files {
 namespace fs = std::filesystem;
 using Bytes = std::vector<unsigned char>;
 
-// A 2x2 PNG of one sRGB colour, through OpenImageIO.
-inline Bytes png(const fs::path& path, const unsigned char rgb[3]) {
+// A size x size PNG (2x2 by default) of one sRGB colour, through OpenImageIO.
+inline Bytes png(const fs::path& path, const unsigned char rgb[3], int size = 2) {
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) return {};
-  const OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+  const OIIO::ImageSpec spec(size, size, 3, OIIO::TypeDesc::UINT8);
   std::vector<unsigned char> texels;
-  for (int i = 0; i < 4; ++i) texels.insert(texels.end(), rgb, rgb + 3);
+  for (int i = 0; i < size * size; ++i) texels.insert(texels.end(), rgb, rgb + 3);
   if (!(out->open(path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texels.data()) &&
         out->close()))
     return {};
@@ -78,6 +78,38 @@ inline std::string texturedGltf(const std::string& imageUri, const std::string& 
          factor + R"(, "baseColorTexture": {"index": 0}}}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
       "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+}
+
+// A GLB: the triangle, `images` in its BIN chunk (one bufferView each) and `materials`
+// materials, material m using image m % images.size() as its base colour (2,000 materials
+// sharing one image: each was decoded once per material).
+inline Bytes sharedTexturesGlb(const std::vector<Bytes>& images, int materials) {
+  Bytes bin = gltf_test_files::trianglePositions();  // 36 bytes
+  std::string views = R"({"buffer": 0, "byteLength": 36})", imageList, textureList, materialList;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    views += R"(, {"buffer": 0, "byteOffset": )" + std::to_string(bin.size()) +
+             R"(, "byteLength": )" + std::to_string(images[i].size()) + "}";
+    bin.insert(bin.end(), images[i].begin(), images[i].end());
+    while (bin.size() % 4 != 0) bin.push_back(0);
+    const std::string sep = i == 0 ? "" : ", ";
+    imageList +=
+        sep + R"({"bufferView": )" + std::to_string(i + 1) + R"(, "mimeType": "image/png"})";
+    textureList += sep + R"({"source": )" + std::to_string(i) + "}";
+  }
+  for (int m = 0; m < materials; ++m) {
+    materialList += std::string(m == 0 ? "" : ", ") +
+                    R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": )" +
+                    std::to_string(std::size_t(m) % images.size()) + "}}}";
+  }
+  const std::string json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": )" +
+                           std::to_string(bin.size()) + R"(}], "bufferViews": [)" + views +
+                           R"(], "accessors": [{"bufferView": 0, "componentType": 5126,
+      "count": 3, "type": "VEC3", "min": [0, 0, -1], "max": [1, 0, 0]}], "images": [)" +
+                           imageList + R"(], "textures": [)" + textureList +
+                           R"(], "materials": [)" + materialList + R"(],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+      "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+  return gltf_test_files::glb(json, bin);
 }
 
 // A GLB: the triangle and `image` in its BIN chunk, a material with baseColorFactor `factor`

@@ -243,6 +243,11 @@ TEST_F(SampleCli, ModelOverTheWorkBudget) {
   expectRejected("--model-limits triangles=0", "--model-limits triangles must be");
   expectRejected("--model-limits colours=3", "'colours=3' is not KEY=N");
   expectRejected("--model-limits bytes=2T", "--model-limits bytes must be");
+  // The JSON's values and the texture pixels decoded are keys like the others.
+  expectRejected("--model " + sphere + " --model-limits json-values=50",
+                 "more than 50 JSON values (limit 50); refused before it is expanded (raise "
+                 "with --model-limits json-values=N)");
+  expectRejected("--model-limits pixels=0", "--model-limits pixels must be");
 }
 
 TEST_F(SampleCli, UnwritableOutputDirectory) {
@@ -862,8 +867,8 @@ TEST_F(SampleCli, SplitScreenViewsRenderSideBySide) {
 // render --cube-map: six faces of --width / 4 as a 4 x 3 cross, the empty cells 0.
 TEST_F(SampleCli, CubeMapProbeIsACrossOfSixFaces) {
   const fs::path out = dir_ / "probe.exr";
-  const RunResult result = runSample(
-      "render --width 64 --height 36 --water-resolution 16 --cube-map --out " + out.string(), dir_);
+  const RunResult result =
+      runSample("render --width 64 --water-resolution 16 --cube-map --out " + out.string(), dir_);
   ASSERT_EQ(result.exitCode, 0) << result.stderrText;
   auto in = OIIO::ImageInput::open(out.string());
   ASSERT_TRUE(in);
@@ -884,6 +889,39 @@ TEST_F(SampleCli, CubeMapProbeIsACrossOfSixFaces) {
     EXPECT_GT(cellSum(cx, cy), 0.0) << "face at cell " << cx << ", " << cy << " is black";
   for (auto [cx, cy] : {std::pair{0, 0}, {2, 0}, {3, 0}, {0, 2}, {2, 2}, {3, 2}})
     EXPECT_EQ(cellSum(cx, cy), 0.0) << "empty cell " << cx << ", " << cy << " has light";
+}
+
+// The cross's size follows from --width alone: an explicit --height was ignored, and a width 4
+// does not divide made a cross of another width (--width 3: a 4x3 image, exit 0).
+TEST_F(SampleCli, CubeMapRefusesAHeightAndAWidthFourDoesNotDivide) {
+  expectRejected("--cube-map", "render --cube-map takes no --height (got 36)");
+  const fs::path out = dir_ / "cube3.png";
+  const RunResult result =
+      runSample("render --width 3 --water-resolution 16 --cube-map --out " + out.string(), dir_);
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_NE(result.stderrText.find("render --cube-map needs a --width that 4 divides"),
+            std::string::npos)
+      << result.stderrText;
+  EXPECT_FALSE(fs::exists(out));
+  const RunResult help = runSample("render --help", dir_);
+  EXPECT_NE(help.stdoutText.find("--height is not taken"), std::string::npos) << help.stdoutText;
+}
+
+// render --model without a position puts the model where the default preset looks: the image
+// changes (the row stood at z = 5, outside the shallow preset's view, and changed nothing).
+TEST_F(SampleCli, AModelChangesTheDefaultPresetsImage) {
+  const std::string base = "render --width 64 --height 36 --water-resolution 16 --out ";
+  const fs::path plain = dir_ / "plain.exr", with = dir_ / "with_model.exr";
+  ASSERT_EQ(runSample(base + plain.string(), dir_).exitCode, 0);
+  const RunResult result = runSample(
+      base + with.string() + " --model " + std::string(OCEAN_ASSETS) + "/glass_sphere.glb", dir_);
+  ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+  const std::vector<float> a = exrChannel(plain, "R"), b = exrChannel(with, "R");
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differing += std::abs(a[i] - b[i]) > 1e-3f ? 1 : 0;
+  EXPECT_GT(differing, a.size() / 100) << "the model is out of the default preset's view";
 }
 
 TEST_F(SampleCli, ViewsOutOfRangeOrNotDividingTheWidth) {

@@ -7,8 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <scene/seabed.h>
+
+#include "camera.h"
 #include "caster_admission.h"
 #include "model_limits_option.h"
+#include "model_row.h"
 #include "model_spec.h"
 
 namespace ocean {
@@ -87,6 +91,32 @@ TEST(SampleModelSpec, DefaultFitsAndRestsOnTheSand) {
   EXPECT_NEAR(bottom.z, 5.0, 1e-9);
   EXPECT_NEAR(bottom.y, slopedSand(2.0, 5.0), 1e-9);
   EXPECT_NEAR(glm::length(top - bottom), kDefaultFitMetres, 1e-9);
+}
+
+// The row of models without a position stands in every sea preset's view: each 1.5 m box's
+// centre projects inside the camera's frustum (16:9), in front of it, under the water.
+TEST(SampleModelRow, EachPresetsCameraSeesTheRow) {
+  for (const char* name :
+       {"shallow", "seabed", "sunward", "above", "waterline", "torch", "wake", "harbour"}) {
+    Preset preset;
+    std::string known;
+    ASSERT_TRUE(findPreset(name, preset, known)) << name;
+    const Camera& camera = preset.camera;
+    for (std::size_t count : {std::size_t(1), std::size_t(3)}) {
+      for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 at = rowPosition(camera, i, count, 1.5, &ocean_scene::seabedHeight);
+        const double bottom = ocean_scene::seabedHeight(at.x, at.z) + at.y;
+        EXPECT_GE(at.y, 0.0) << name;
+        EXPECT_LE(bottom + 1.5, 0.0) << name << ": above the water";
+        const glm::dvec3 centre(at.x, bottom + 0.75, at.z);
+        const glm::dvec3 local = glm::transpose(camera.rotation()) * (centre - camera.position);
+        const glm::dvec4 clip = camera.projection(16.0 / 9.0) * glm::dvec4(local, 1.0);
+        ASSERT_GT(clip.w, 0.0) << name << ": behind the camera";
+        EXPECT_LT(std::abs(clip.x / clip.w), 0.95) << name << " model " << i << " of " << count;
+        EXPECT_LT(std::abs(clip.y / clip.w), 0.95) << name << " model " << i << " of " << count;
+      }
+    }
+  }
 }
 
 TEST(SampleModelSpec, ExplicitPositionAndNoFit) {

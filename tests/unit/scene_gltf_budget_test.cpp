@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "gltf_bounded_load.h"
 #include "gltf_hostile_corpus.h"
 #include "gltf_test_files.h"
+#include "gltf_texture_files.h"
 #include "scene/gltf_loader.h"
 
 namespace ocean_scene {
@@ -51,6 +53,102 @@ TEST(SceneGltfBudget, TenToTheTenInstancedTriangles) {
 
 TEST(SceneGltfBudget, AMillionSphereInstances) {
   expectRefusedQuickly("instances", corpus::manyNodes(1000000), "1000000 nodes (limit 65536)");
+}
+
+// The amplifiers the budget missed (issue 56, items 12-14), each loaded in a child process:
+// refused (or, for a shared texture, loaded) within 5 s and 500 MB of resident memory. The
+// child is killed at 20 s, so a file that still hangs the loader fails here instead.
+constexpr double kSeconds = 5.0, kPeakMb = 500.0, kKillAfter = 20.0;
+
+// `bytes` is freed before the child starts: the child's resident memory would count it.
+gltf_bounded_load::Outcome boundedLoad(const std::string& name, corpus::Bytes bytes,
+                                       const std::string& extension) {
+  const fs::path d = gltf_test_files::freshDir(fs::path(testing::TempDir()), "ocean_bounded");
+  const fs::path path = d / (name + extension);
+  gltf_test_files::writeFile(path, bytes);
+  const double fileMb = double(bytes.size()) / 1e6;
+  corpus::Bytes().swap(bytes);
+  const gltf_bounded_load::Outcome o = gltf_bounded_load::load(path.string(), kKillAfter);
+  EXPECT_TRUE(o.finished) << name << ": killed after " << o.seconds << " s";
+  EXPECT_LT(o.seconds, kSeconds) << name;
+  EXPECT_LT(o.peakMb, kPeakMb) << name;
+  std::printf("%s (%.1f MB): %s in %.2f s, peak %.0f MB: %s\n", name.c_str(), fileMb,
+              o.loaded ? "loaded" : "refused", o.seconds, o.peakMb, o.error.c_str());
+  return o;
+}
+
+void expectBoundedRefusal(const std::string& name, corpus::Bytes bytes, const std::string& mentions,
+                          const std::string& extension = ".gltf") {
+  const gltf_bounded_load::Outcome o = boundedLoad(name, std::move(bytes), extension);
+  EXPECT_FALSE(o.loaded) << name;
+  EXPECT_NE(o.error.find(mentions), std::string::npos) << name << ": " << o.error;
+}
+
+// Every occurrence of `from` in the file's text replaced by `to`.
+corpus::Bytes replacedAll(const corpus::Bytes& bytes, const std::string& from,
+                          const std::string& to) {
+  std::string text(bytes.begin(), bytes.end());
+  for (std::size_t at = text.find(from); at != std::string::npos;
+       at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return corpus::Bytes(text.begin(), text.end());
+}
+
+// "scene": -0 made the budget walk no scene while tinygltf drew scene 0; "mesh": -0 made it
+// count no mesh while tinygltf drew mesh 0: 10^10 triangles past 120 s, or 14 GiB in 69 s.
+TEST(SceneGltfBudget, NegativeAndMinusZeroIndicesCannotHideWork) {
+  const corpus::Bytes triangles = corpus::instancedTriangles(250, 4000);
+  expectBoundedRefusal("scene_minus_zero",
+                       replacedAll(triangles, "\"scene\": 0}", "\"scene\": -0}"),
+                       "scene is -0; an index must be an integer >= 0");
+  expectBoundedRefusal("scene_minus_one", replacedAll(triangles, "\"scene\": 0}", "\"scene\": -1}"),
+                       "scene is -1; an index must be an integer >= 0");
+  expectBoundedRefusal("mesh_minus_zero", replacedAll(triangles, "\"mesh\": 0", "\"mesh\": -0"),
+                       "nodes[0].mesh is -0; an index must be an integer >= 0 (the position of "
+                       "an entry of \"meshes\")");
+}
+
+// One 1024^2 PNG shared by 2,000 materials: decoded once, not 2,000 times (a 4096^2 one took
+// 6.3 s a material).
+TEST(SceneGltfBudget, ATextureSharedByManyMaterialsIsDecodedOnce) {
+  const unsigned char grey[3] = {128, 128, 128};
+  const fs::path scratch = gltf_test_files::freshDir(fs::path(testing::TempDir()), "ocean_png");
+  const corpus::Bytes image = gltf_texture_files::png(scratch / "grey.png", grey, 1024);
+  ASSERT_FALSE(image.empty());
+  const gltf_bounded_load::Outcome o =
+      boundedLoad("shared_texture", gltf_texture_files::sharedTexturesGlb({image}, 2000), ".glb");
+  EXPECT_TRUE(o.loaded) << o.error;
+}
+
+// Images whose headers claim more pixels than the budget are refused from the headers, before
+// any is decoded, naming the count, the limit and the option.
+TEST(SceneGltfBudget, TexturePixelsOverTheBudgetRefusedFromTheHeaders) {
+  const unsigned char grey[3] = {128, 128, 128};
+  const fs::path scratch = gltf_test_files::freshDir(fs::path(testing::TempDir()), "ocean_png");
+  const corpus::Bytes claimed = gltf_texture_files::claimSize(
+      gltf_texture_files::png(scratch / "grey.png", grey), 4096, 4096);
+  expectBoundedRefusal("claimed_pixels",
+                       gltf_texture_files::sharedTexturesGlb({claimed, claimed, claimed}, 3),
+                       "50331648 texture pixels to decode, 3 image(s) (limit 33554432)", ".glb");
+}
+
+// 50 M zeros in the root's "extras" (a 100 MB file) took 9.66 GB: the values are counted
+// before any document is built, and the count stops at the limit.
+TEST(SceneGltfBudget, JsonValuesCountedBeforeAnyDocumentIsBuilt) {
+  corpus::Bytes bytes;
+  {
+    gltf_test_files::TriangleJson json;
+    std::string zeros = "\"extras\": [0";
+    zeros.reserve(100u << 20);
+    for (int i = 1; i < 50000000; ++i) zeros += ",0";
+    json.top = zeros + "], ";
+    const std::string text = json.text();
+    bytes.assign(text.begin(), text.end());
+  }
+  expectBoundedRefusal("json_values", std::move(bytes),
+                       "more than 4194304 JSON values (limit 4194304); refused before it is "
+                       "expanded");
 }
 
 // Below the budget the same files load: it is their size, not their shape, that is refused.

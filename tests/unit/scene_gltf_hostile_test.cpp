@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "gltf_test_files.h"
+#include "gltf_texture_files.h"
 #include "scene/gltf_loader.h"
 
 namespace ocean_scene {
@@ -203,6 +204,81 @@ TEST(SceneGltfHostile, NegativeOffsetsAndSizesRefused) {
   fraction.accessor = "\"byteOffset\": 0.5";
   writeFile(d / "fraction.gltf", fraction.text());
   EXPECT_MENTIONS(refused(d / "fraction.gltf"), "must be a non-negative integer");
+}
+
+// One rule for every index: an integer >= 0 written as one. tinygltf read a negative index as
+// "none" and -0 as 0, and the work budget counted neither, so "mesh": -0 drew mesh 0 uncounted.
+// Each refusal names the field by its JSON path, the value as written and what it indexes.
+TEST(SceneGltfHostile, EveryIndexIsAnIntegerAtLeastZero) {
+  const fs::path d = dir("indices");
+  const std::string rich = [] {
+    const auto b = gltf_test_files::featureRichModel(false);
+    return std::string(b.begin(), b.end());
+  }();
+  const std::string textured = gltf_texture_files::texturedGltf("t.png", "[1, 1, 1, 1]");
+  TriangleJson extra;
+  extra.nodes = "{\"mesh\": 0, \"children\": [1], \"camera\": 0}, {\"skin\": 0}";
+  extra.top =
+      "\"skins\": [{\"joints\": [1], \"inverseBindMatrices\": 0}], \"animations\": "
+      "[{\"channels\": [{\"sampler\": 0, \"target\": {\"node\": 1, \"path\": "
+      "\"scale\"}}], \"samplers\": [{\"input\": 0, \"output\": 0}]}], ";
+  const std::string triangle = extra.text();
+  struct Field {
+    const std::string* text;
+    std::string from, to, path, indexes;
+  };
+  const Field fields[] = {
+      {&rich, "\"scene\": 0", "\"scene\": -0", "scene", "scenes"},
+      {&rich, "\"nodes\": [0]}]", "\"nodes\": [-0]}]", "scenes[0].nodes[0]", "nodes"},
+      {&rich, "{\"mesh\": 0", "{\"mesh\": -1", "nodes[0].mesh", "meshes"},
+      {&rich, "\"TRANSLATION\": 2", "\"TRANSLATION\": -0",
+       "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION", "accessors"},
+      {&rich, "\"NORMAL\": 1", "\"NORMAL\": -1", "meshes[0].primitives[0].attributes.NORMAL",
+       "accessors"},
+      {&rich, "\"indices\": {\"bufferView\": 2", "\"indices\": {\"bufferView\": -0",
+       "accessors[0].sparse.indices.bufferView", "bufferViews"},
+      {&rich, "\"values\": {\"bufferView\": 3", "\"values\": {\"bufferView\": 3.0",
+       "accessors[0].sparse.values.bufferView", "bufferViews"},
+      {&rich, "{\"bufferView\": 1,", "{\"bufferView\": -0,", "accessors[1].bufferView",
+       "bufferViews"},
+      {&rich, "{\"buffer\": 0, \"byteLength\": 48}", "{\"buffer\": -0, \"byteLength\": 48}",
+       "bufferViews[0].buffer", "buffers"},
+      {&textured, "{\"source\": 0}", "{\"source\": -0, \"sampler\": 0}", "textures[0].source",
+       "images"},
+      {&textured, "{\"source\": 0}", "{\"source\": 0, \"sampler\": -2}", "textures[0].sampler",
+       "samplers"},
+      {&textured, "{\"index\": 0}", "{\"index\": -0}",
+       "materials[0].pbrMetallicRoughness.baseColorTexture.index", "textures"},
+      {&textured, "\"material\": 0}", "\"material\": -0}", "meshes[0].primitives[0].material",
+       "materials"},
+      {&triangle, "\"children\": [1]", "\"children\": [-0]", "nodes[0].children[0]", "nodes"},
+      {&triangle, "\"camera\": 0", "\"camera\": -1", "nodes[0].camera", "cameras"},
+      {&triangle, "{\"skin\": 0}", "{\"skin\": \"0\"}", "nodes[1].skin", "skins"},
+      {&triangle, "\"joints\": [1]", "\"joints\": [-0]", "skins[0].joints[0]", "nodes"},
+      {&triangle, "\"inverseBindMatrices\": 0", "\"inverseBindMatrices\": -0",
+       "skins[0].inverseBindMatrices", "accessors"},
+      {&triangle, "\"node\": 1", "\"node\": -0", "animations[0].channels[0].target.node", "nodes"},
+      {&triangle, "\"output\": 0", "\"output\": -3", "animations[0].samplers[0].output",
+       "accessors"},
+  };
+  int n = 0;
+  for (const Field& f : fields) {
+    std::string text = *f.text;
+    const std::size_t at = text.find(f.from);
+    ASSERT_NE(at, std::string::npos) << f.from;
+    text.replace(at, f.from.size(), f.to);
+    const fs::path path = d / ("index" + std::to_string(n++) + ".gltf");
+    writeFile(path, text);
+    const std::string error = refused(path);
+    EXPECT_MENTIONS(error, f.path + " is ");
+    EXPECT_MENTIONS(error, "; an index must be an integer >= 0 (the position of an entry of \"" +
+                               f.indexes + "\")");
+  }
+  // The original files load: the rule refuses only what breaks it.
+  TriangleJson plain;
+  plain.nodes = "{\"mesh\": 0, \"children\": [1]}, {\"mesh\": 0}";
+  writeFile(d / "plain.gltf", plain.text());
+  EXPECT_EQ(loaded(d / "plain.gltf").instances.size(), 2u);
 }
 
 TEST(SceneGltfHostile, PositionsOutsideMinMaxRefused) {

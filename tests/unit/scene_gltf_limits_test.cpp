@@ -8,6 +8,7 @@
 
 #include "gltf_hostile_corpus.h"
 #include "gltf_test_files.h"
+#include "gltf_texture_files.h"
 #include "scene/gltf_loader.h"
 
 namespace ocean_scene {
@@ -60,6 +61,37 @@ TEST(SceneGltfLimits, EachLimitIsNamedWithItsCount) {
   EXPECT_NE(refusal(path, both).find("(raise with --model-limits instances=N,triangles=N)"),
             std::string::npos)
       << refusal(path, both);
+}
+
+// The JSON's values and the texture pixels decoded are limits like the others: named with the
+// count, the limit and the option's key.
+TEST(SceneGltfLimits, JsonValuesAndTexturePixelsAreNamed) {
+  const fs::path path = richModel();
+  GltfLimits values;
+  values.raiseOption = "--model-limits";
+  values.jsonValues = 100;
+  EXPECT_NE(refusal(path, values)
+                .find("more than 100 JSON values (limit 100); refused before it is expanded "
+                      "(raise with --model-limits json-values=N)"),
+            std::string::npos)
+      << refusal(path, values);
+  const unsigned char grey[3] = {128, 128, 128};
+  const fs::path d = path.parent_path();
+  gltf_test_files::writeFile(d / "textured.glb",
+                             gltf_texture_files::texturedGlb(
+                                 gltf_texture_files::png(d / "grey.png", grey), "[1, 1, 1, 1]"));
+  GltfLimits pixels;
+  pixels.raiseOption = "--model-limits";
+  pixels.pixels = 3;  // the image is 2 x 2
+  EXPECT_NE(refusal(d / "textured.glb", pixels)
+                .find("4 texture pixels to decode, 1 image(s) (limit 3); refused before it is "
+                      "expanded (raise with --model-limits pixels=N)"),
+            std::string::npos)
+      << refusal(d / "textured.glb", pixels);
+  pixels.pixels = 4;
+  Model model;
+  std::string error;
+  EXPECT_TRUE(loadGlb((d / "textured.glb").string(), model, error, nullptr, pixels)) << error;
 }
 
 TEST(SceneGltfLimits, RaisingTheLimitsLetsTheFileThrough) {

@@ -74,7 +74,9 @@ TEST_F(SceneGltfCorpus, EachCaseSaysWhatWasWrongAndWhere) {
     // tinygltf's vague or wrong sentences never come through.
     for (const char* vague :
          {"Invalid glTF binary", "Invalid type for chunk1", "empty BIN chunk", "symbolic link",
-          "needs non-negative integer", "-2147483648", "its factors are"}) {
+          "needs non-negative integer", "-2147483648", "its factors are", "invalid bufferView",
+          "not a positive integer", "unexpected end of input", "is 0; it must be",
+          "has no node with a mesh"}) {
       const std::string said = o.error + o.warnings;
       EXPECT_EQ(said.find(vague), std::string::npos) << c.name << ": " << said;
     }

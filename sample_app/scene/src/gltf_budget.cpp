@@ -2,10 +2,12 @@
 
 #include <cstdint>
 #include <limits>
+#include <unordered_set>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "gltf_text.h"
 #include "scene/model.h"
 
 namespace ocean_scene::gltf {
@@ -179,16 +181,64 @@ Totals count(const Json& root) {
   return t;
 }
 
-// Counts the entries of the root's "nodes" array. Depths: the root object's members are at 1,
-// the nodes array's entries at 2.
-struct NodeCounter : nlohmann::json_sax<Json> {
-  int depth = 0;
-  bool nextIsNodes = false, inNodes = false;
-  u64 nodes = 0;
+// One pass over the JSON text that builds nothing: counts its values (stopping at the limit,
+// so a file of 50 M zeros costs the scan of 4 M), the entries of the root's "nodes" array,
+// and refuses the first duplicate key of an object (nlohmann keeps the last, tinygltf reads
+// some keys from the first: 70 "nodes" arrays were counted as 70 x 1000 nodes). Depths: the
+// root object's members are at 1, the nodes array's entries at 2.
+struct JsonCounter : nlohmann::json_sax<Json> {
+  struct Open {
+    bool array = false;
+    u64 entries = 0;  // an array's entries so far
+    std::string key;  // an object's latest key
+    // An object's keys so far: searched in turn while few (most glTF objects have a handful),
+    // hashed once there are many (an "extras" map of a million keys).
+    std::vector<std::string> few;
+    std::unordered_set<std::string> many;
 
+    // False when the object already has `name`.
+    bool add(const std::string& name) {
+      if (many.empty() && few.size() < 16) {
+        for (const std::string& k : few) {
+          if (k == name) return false;
+        }
+        few.push_back(name);
+        return true;
+      }
+      if (many.empty()) many.insert(few.begin(), few.end());
+      return many.insert(name).second;
+    }
+  };
+  explicit JsonCounter(u64 valueLimit) : limit(valueLimit) {}
+
+  u64 limit, values = 0, nodes = 0;
+  bool nextIsNodes = false, inNodes = false, overLimit = false;
+  std::vector<Open> open;
+  std::string duplicate;  // the message for the first duplicate key
+
+  // The JSON path of the innermost `frames` open values' entry ("meshes[0].primitives[1]";
+  // "" = the root).
+  std::string path(std::size_t frames) const {
+    std::string text;
+    for (std::size_t f = 0; f < frames; ++f) {
+      const Open& o = open[f];
+      // Appended piece by piece: GCC 12 warns, wrongly, of an overlapping copy otherwise.
+      if (o.array) {
+        text.append("[").append(std::to_string(o.entries == 0 ? 0 : o.entries - 1)).append("]");
+      } else {
+        text.append(text.empty() ? "" : ".").append(excerpt(o.key));
+      }
+    }
+    return text;
+  }
   bool element() {
-    if (inNodes && depth == 2) ++nodes;
+    if (inNodes && open.size() == 2) ++nodes;
     nextIsNodes = false;
+    if (!open.empty() && open.back().array) ++open.back().entries;
+    if (++values > limit) {
+      overLimit = true;
+      return false;
+    }
     return true;
   }
   bool null() override { return element(); }
@@ -199,34 +249,51 @@ struct NodeCounter : nlohmann::json_sax<Json> {
   bool string(string_t&) override { return element(); }
   bool binary(binary_t&) override { return element(); }
   bool start_object(std::size_t) override {
-    element();
-    ++depth;
+    if (!element()) return false;
+    open.emplace_back();
     return true;
   }
   bool key(string_t& key) override {
-    nextIsNodes = depth == 1 && key == "nodes";
+    Open& object = open.back();
+    if (!object.add(key)) {
+      const std::string where = path(open.size() - 1);
+      duplicate = "duplicate key \"" + excerpt(key) + "\" in " +
+                  (where.empty() ? "the root object" : where) +
+                  "; JSON objects in glTF must have unique keys (which one counts differs from "
+                  "reader to reader): keep one";
+      return false;
+    }
+    object.key = key;
+    nextIsNodes = open.size() == 1 && key == "nodes";
+    if (++values > limit) {
+      overLimit = true;
+      return false;
+    }
     return true;
   }
   bool end_object() override {
-    --depth;
+    open.pop_back();
     return true;
   }
   bool start_array(std::size_t) override {
     const bool nodesArray = nextIsNodes;
-    element();
-    ++depth;
-    if (depth == 2 && nodesArray) inNodes = true;
+    if (!element()) return false;
+    open.emplace_back();
+    open.back().array = true;
+    if (open.size() == 2 && nodesArray) inNodes = true;
     return true;
   }
   bool end_array() override {
-    if (depth == 2) inNodes = false;
-    --depth;
+    if (open.size() == 2) inNodes = false;
+    open.pop_back();
     return true;
   }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
     return false;
   }
 };
+
+}  // namespace
 
 std::string refusal(const std::string& over, const std::string& keys, const GltfLimits& limits) {
   std::string text =
@@ -235,11 +302,19 @@ std::string refusal(const std::string& over, const std::string& keys, const Gltf
   return text;
 }
 
-}  // namespace
-
-bool nodesWithinBudget(std::string_view text, const GltfLimits& limits, std::string& error) {
-  NodeCounter counter;
+bool jsonWithinBudget(std::string_view text, const GltfLimits& limits, std::string& error) {
+  JsonCounter counter(limits.jsonValues);
   const bool parsed = Json::sax_parse(text.begin(), text.end(), &counter);
+  if (!counter.duplicate.empty()) {
+    error = counter.duplicate;
+    return false;
+  }
+  if (counter.overLimit) {
+    error = refusal("more than " + std::to_string(limits.jsonValues) + " JSON values (limit " +
+                        std::to_string(limits.jsonValues) + ")",
+                    "json-values=N", limits);
+    return false;
+  }
   if (!parsed || counter.nodes <= limits.nodes) return true;
   error =
       refusal(std::to_string(counter.nodes) + " nodes (limit " + std::to_string(limits.nodes) + ")",

@@ -20,9 +20,15 @@ namespace ocean_scene::gltf {
 // non-negative checks to have passed.
 bool withinBudget(const nlohmann::json& root, const GltfLimits& limits, std::string& error);
 
-// The "nodes" limit alone, from the JSON text through a SAX pass that builds nothing: a file of
-// a million nodes costs 0.3 s to parse into a document and 0.1 s more to free, this a fraction.
+// The JSON's own limits, from its text through a SAX pass that builds nothing (a file of a
+// million nodes costs 0.3 s to parse into a document and 0.1 s more to free, this a fraction;
+// 50 M zeros took 9.7 GB as documents): its values (limits.jsonValues, the count stopping
+// there) and the "nodes" limit. A duplicate object key is refused here too, by its JSON path.
 // True (nothing said) when the text is not valid JSON: the document's parse reports that.
-bool nodesWithinBudget(std::string_view text, const GltfLimits& limits, std::string& error);
+bool jsonWithinBudget(std::string_view text, const GltfLimits& limits, std::string& error);
+
+// "the model exceeds the work budget: <over>; refused before it is expanded (raise with
+// <limits.raiseOption> <keys>)": every budget refusal's sentence.
+std::string refusal(const std::string& over, const std::string& keys, const GltfLimits& limits);
 
 }  // namespace ocean_scene::gltf

@@ -30,6 +30,39 @@ std::string typeText(std::uint32_t type) {
   return std::string(hex) + " ('" + letters + "')";
 }
 
+// The chunks after the BIN chunk, from `at` to the GLB's `length`: the spec lets a reader skip
+// chunks of other types, but each must lie inside the GLB, and there is at most one BIN chunk
+// (tinygltf read the first and said nothing of a second, or of a chunk running past the end).
+bool laterChunksValid(const std::vector<unsigned char>& bytes, std::uint64_t at,
+                      std::uint64_t length, std::string& error) {
+  while (at < length) {
+    const std::string where = std::to_string(at);
+    if (length - at < 8) {
+      error = "GLB chunk header at byte " + where +
+              " cut short: the GLB's length (byte 8) ends it " + std::to_string(length - at) +
+              " bytes later, a chunk header needs 8";
+      return false;
+    }
+    const std::uint32_t type = u32(bytes, at + 4);
+    if (type == kBin) {
+      error = "GLB has a second BIN chunk at byte " + where +
+              "; a GLB holds at most one (the one after the JSON chunk): merge their data into "
+              "one buffer";
+      return false;
+    }
+    const std::uint64_t chunkLength = u32(bytes, at);
+    if (at + 8 + chunkLength > length) {
+      error = "GLB chunk " + typeText(type) + " at byte " + where + " has length " +
+              std::to_string(chunkLength) + ": it would end at byte " +
+              std::to_string(at + 8 + chunkLength) + ", past the GLB's length " +
+              std::to_string(length) + " (byte 8)";
+      return false;
+    }
+    at += 8 + chunkLength;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool isGlb(const std::vector<unsigned char>& bytes) {
@@ -106,7 +139,7 @@ bool readGlbLayout(const std::vector<unsigned char>& bytes, GlbLayout& out, std:
   }
   out.binHeader = static_cast<std::size_t>(jsonEnd);
   out.binLength = static_cast<std::size_t>(binLength);
-  return true;
+  return laterChunksValid(bytes, jsonEnd + 8 + binLength, length, error);
 }
 
 }  // namespace ocean_scene::gltf

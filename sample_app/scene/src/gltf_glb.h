@@ -24,7 +24,8 @@ bool isGlb(const std::vector<unsigned char>& bytes);
 // The chunks of a GLB. False with one line naming the field, its byte offset and the value
 // found: a header cut short, a version other than 2, a length beyond the file, a first chunk
 // that is not JSON or is empty, a chunk that runs past the GLB's length, a second chunk that is
-// not BIN or whose length is not a positive multiple of 4.
+// not BIN or whose length is not a positive multiple of 4, a second BIN chunk, or a later chunk
+// that runs past the GLB's length.
 bool readGlbLayout(const std::vector<unsigned char>& bytes, GlbLayout& out, std::string& error);
 
 }  // namespace ocean_scene::gltf

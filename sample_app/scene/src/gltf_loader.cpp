@@ -1,5 +1,6 @@
 #include "scene/gltf_loader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -99,6 +100,8 @@ bool parse(const std::string& path, const std::vector<unsigned char>& bytes,
            const GltfLimits& limits, tinygltf::Model& model, gltf::Preflight& preflight,
            std::string& error, std::string& warnings) {
   const bool binary = gltf::isGlb(bytes);
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (!binary && !gltf::jsonIsUtf8(text, error)) return false;
   if (!binary && !(bytes[0] == '{' || bytes[0] == ' ' || bytes[0] == '\n' || bytes[0] == '\t' ||
                    bytes[0] == '\r' || bytes[0] == 0xEF /* UTF-8 BOM */)) {
     error = "not a glTF file (no 'glTF' magic and no JSON object)";
@@ -243,6 +246,12 @@ bool flattenNodes(const tinygltf::Model& model,
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
       if (!isChild[i]) roots.push_back(static_cast<int>(i));
     }
+    if (roots.empty() && !model.nodes.empty()) {
+      error = "the file has no scene, and each of its " + std::to_string(model.nodes.size()) +
+              " node(s) is another node's child, so no node is a root: the children form a "
+              "cycle (nodes make trees): break the cycle, or add a scene naming the root nodes";
+      return false;
+    }
   }
   struct Bounds {
     glm::vec3 lo{0.0f}, hi{0.0f};
@@ -323,8 +332,15 @@ bool flattenNodes(const tinygltf::Model& model,
     notes += std::to_string(hiddenCount - 4) + " more hidden node(s) left out; ";
   }
   if (out.instances.empty()) {
+    const std::string scene =
+        model.scenes.empty()
+            ? std::string("the file (no scene: its root nodes)")
+            : "scenes[" + std::to_string(model.defaultScene >= 0 ? model.defaultScene : 0) + "]";
     error = hiddenCount > 0 ? "every node with a mesh is hidden (transform not invertible)"
-                            : "the scene has no node with a mesh";
+                            : scene + " has no node with a mesh (it reaches " +
+                                  std::to_string(std::count(visited.begin(), visited.end(), true)) +
+                                  " of the file's " + std::to_string(model.nodes.size()) +
+                                  " node(s)): there is nothing to draw";
     return false;
   }
   return true;
@@ -346,13 +362,15 @@ std::string textureNote(const tinygltf::Material& source, bool averaged, const s
   return "shaded from its factors, without " + unused;
 }
 
-bool convert(const tinygltf::Model& model, const gltf::Preflight& preflight, Model& out,
-             std::string& error, std::string& notes) {
+bool convert(const tinygltf::Model& model, const gltf::Preflight& preflight,
+             const GltfLimits& limits, Model& out, std::string& error, std::string& notes) {
   // Textures: the base colour's is averaged into the colour, from wherever the image is; the
   // rest are named in a note (the first few materials by name, then a count), since the
   // sample shades from factors only.
   constexpr int kNamed = 4;
   int textured = 0;
+  gltf::ImageMeans means;
+  if (!gltf::baseColourImageMeans(model, preflight, limits, means, error)) return false;
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& source = model.materials[i];
     Material material;
@@ -360,7 +378,7 @@ bool convert(const tinygltf::Model& model, const gltf::Preflight& preflight, Mod
     material.name = gltf::excerpt(material.name);  // printed in the sample's warnings
     glm::vec3 mean(1.0f);
     std::string why;
-    const bool averaged = gltf::baseColourTextureMean(model, preflight, source, mean, why);
+    const bool averaged = gltf::baseColourTextureMean(model, means, source, mean, why);
     if (averaged) material.baseColor *= mean;
     const bool hasTextures = source.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
                              !gltf::ignoredTextures(source, true).empty();
@@ -426,7 +444,7 @@ bool loadGlb(const std::string& path, Model& out, std::string& error, std::strin
     gltf::Preflight preflight;
     ok = gltf::readRegularFile(path, kMaxFileBytes, bytes, problem) &&
          parse(path, bytes, limits, model, preflight, problem, notes) &&
-         convert(model, preflight, out, problem, notes);
+         convert(model, preflight, limits, out, problem, notes);
   } catch (const std::exception& e) {
     problem = std::string("unexpected failure: ") + e.what();
     ok = false;

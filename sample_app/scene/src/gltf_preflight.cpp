@@ -13,7 +13,9 @@
 #include "gltf_data_uri.h"
 #include "gltf_file.h"
 #include "gltf_glb.h"
+#include "gltf_indices.h"
 #include "gltf_integers.h"
+#include "gltf_spec_rules.h"
 #include "gltf_text.h"
 
 namespace ocean_scene::gltf {
@@ -33,6 +35,34 @@ bool jsonText(const std::vector<unsigned char>& bytes, std::string_view& text, G
   text = glb.json;
   return true;
 }
+
+}  // namespace
+
+bool jsonIsUtf8(std::string_view text, std::string& error) {
+  const auto byte = [&](std::size_t i) -> unsigned char {
+    return i < text.size() ? static_cast<unsigned char>(text[i]) : 0x20;
+  };
+  const bool bom = (byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF);
+  // "{" or a space with NULs around it among the first 4 bytes: JSON in 2 or 4 bytes a letter.
+  bool nul = false, opens = false;
+  for (std::size_t i = 0; i < 4 && i < text.size(); ++i) {
+    const unsigned char c = byte(i);
+    if (c == 0) {
+      nul = true;
+    } else {
+      opens = c == '{' || c == ' ' || c == '\n' || c == '\r' || c == '\t';
+      break;
+    }
+  }
+  for (std::size_t i = 1; !nul && opens && i < 4 && i < text.size(); ++i) nul = byte(i) == 0;
+  if (!bom && !(nul && opens)) return true;
+  error = "the JSON is UTF-16 or UTF-32 (it starts with bytes " + std::to_string(byte(0)) + " " +
+          std::to_string(byte(1)) +
+          "); glTF's JSON must be UTF-8: save it as UTF-8 (a UTF-8 byte-order mark is accepted)";
+  return false;
+}
+
+namespace {
 
 // Nesting depth without recursion; strings (with escapes) are skipped so brackets in names
 // do not count.
@@ -108,24 +138,15 @@ bool checkExtensions(const Json& root, Preflight& out, std::string& error) {
   return true;
 }
 
-// Sizes, offsets and indices that tinygltf would read as unsigned (so -4 becomes 0 or huge).
+// Sizes, offsets and indices that tinygltf would read as unsigned (so -4 becomes 0 or huge),
+// or would refuse with a message naming no accessor when written 24.0 or 2.4e1.
 bool nonNegativeInteger(const Json& object, const char* key, const std::string& where,
                         std::string& error) {
   const auto it = object.find(key);
   if (it == object.end()) return true;
-  if (it->is_number_unsigned()) return true;
-  if (it->is_number_integer()) {
-    error = where + "." + key + " is " + std::to_string(it->get<std::int64_t>()) +
-            "; it must be a non-negative integer";
-    return false;
-  }
-  if (it->is_number_float()) {
-    const double v = it->get<double>();
-    if (v >= 0.0 && v == std::floor(v) && v < 9007199254740992.0) return true;
-    error = where + "." + key + " is " + std::to_string(v) + "; it must be a non-negative integer";
-    return false;
-  }
-  error = where + "." + key + " is not a number";
+  const std::string written = notANaturalNumber(*it);
+  if (written.empty()) return true;
+  error = where + "." + key + " is " + written + "; " + naturalNumberRule(*it);
   return false;
 }
 
@@ -391,8 +412,8 @@ bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseD
                const GltfLimits& limits, Preflight& out, std::string& error) {
   std::string_view text;
   GlbLayout glb;
-  if (!jsonText(bytes, text, glb, error) || !depthWithin(text, kMaxJsonDepth, error) ||
-      !nodesWithinBudget(text, limits, error)) {
+  if (!jsonText(bytes, text, glb, error) || !jsonIsUtf8(text, error) ||
+      !depthWithin(text, kMaxJsonDepth, error) || !jsonWithinBudget(text, limits, error)) {
     return false;
   }
   // Depth is bounded now, so even a recursive parser is safe.
@@ -407,12 +428,12 @@ bool preflight(const std::vector<unsigned char>& bytes, const std::string& baseD
     error = "the JSON is not an object";
     return false;
   }
-  if (!checkExtensions(root, out, error)) return false;
+  if (!checkExtensions(root, out, error) || !indicesValid(root, error)) return false;
   if (!checkArrayFields(root, "accessors", {"bufferView", "byteOffset", "count"}, error) ||
       !checkArrayFields(root, "bufferViews", {"buffer", "byteOffset", "byteLength", "byteStride"},
                         error) ||
       !checkArrayFields(root, "buffers", {"byteLength"}, error) || !integersFit(root, error) ||
-      !withinBudget(root, limits, error) ||
+      !followsSpecRules(root, error) || !withinBudget(root, limits, error) ||
       !checkBuffers(root, baseDir, isGlb(bytes) ? &glb : nullptr, out, error) ||
       !collectImages(root, baseDir, out, error)) {
     return false;

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/gltf_limits.h"
@@ -43,6 +44,11 @@ struct Preflight {
   // which tinygltf refuses; the loader reads the triangles from the Draco data).
   std::string rewrittenJson;
 };
+
+// False, saying so, when the JSON text is UTF-16 or UTF-32 (a byte-order mark, or a NUL among
+// its first bytes, where UTF-8 JSON has none): nlohmann reads it as "unexpected end of input"
+// at the first NUL, and a byte-order mark as no JSON at all.
+bool jsonIsUtf8(std::string_view text, std::string& error);
 
 // `baseDir` is the directory tinygltf is given. Returns false with a one-line reason: a GLB
 // container field (by byte offset), JSON nested too deep or malformed, an unsupported required

@@ -10,6 +10,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include "gltf_budget.h"
 #include "gltf_data_uri.h"
 #include "gltf_file.h"
 #include "gltf_stderr.h"
@@ -123,9 +124,10 @@ const char* readerName(const unsigned char* bytes, std::size_t size) {
   return nullptr;
 }
 
-// The decoded texels of the image as floats; false with the reason.
-bool decode(const unsigned char* bytes, std::size_t size, const char* name, OIIO::ImageSpec& spec,
-            std::vector<float>& texels, std::string& reason) {
+// The image's header, through the reader OpenImageIO picks for `name`: its size, before any
+// pixel is decoded. False with the reason (undecodable, empty, over kMaxTexturePixels).
+bool readHeader(const unsigned char* bytes, std::size_t size, const char* name,
+                OIIO::ImageSpec& spec, std::string& reason) {
   OIIO::Filesystem::IOMemReader memory(bytes, size);
   auto input = OIIO::ImageInput::open(name, nullptr, &memory);
   if (!input) {
@@ -141,6 +143,21 @@ bool decode(const unsigned char* bytes, std::size_t size, const char* name, OIIO
         "its image is empty or larger than " + std::to_string(kMaxTexturePixels >> 20) + " Mpixels";
     return false;
   }
+  return true;
+}
+
+// The decoded texels of the image as floats; false with the reason.
+bool decode(const unsigned char* bytes, std::size_t size, const char* name, OIIO::ImageSpec& spec,
+            std::vector<float>& texels, std::string& reason) {
+  if (!readHeader(bytes, size, name, spec, reason)) return false;
+  OIIO::Filesystem::IOMemReader memory(bytes, size);
+  auto input = OIIO::ImageInput::open(name, nullptr, &memory);
+  if (!input) {
+    (void)OIIO::geterror();
+    reason = "its image could not be decoded";
+    return false;
+  }
+  const long long pixels = static_cast<long long>(spec.width) * spec.height;
   texels.resize(static_cast<std::size_t>(pixels) * std::size_t(spec.nchannels));
   if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, texels.data())) {
     (void)input->geterror();
@@ -150,27 +167,25 @@ bool decode(const unsigned char* bytes, std::size_t size, const char* name, OIIO
   return true;
 }
 
-}  // namespace
+// Whatever a decoder printed on stderr meanwhile (libpng reports through its default handlers)
+// is appended to `reason`.
+template <class Step>
+bool capturing(std::string& reason, Step step) {
+  StderrCapture capture;
+  const bool ok = step();
+  if (const std::string printed = capture.take(); !printed.empty()) {
+    reason += (reason.empty() ? "" : ": ") + printed;
+  }
+  return ok;
+}
 
-bool baseColourTextureMean(const tinygltf::Model& model, const Preflight& preflight,
-                           const tinygltf::Material& material, glm::vec3& mean,
-                           std::string& reason) {
-  reason.clear();
-  const int textureIndex = material.pbrMetallicRoughness.baseColorTexture.index;
-  if (textureIndex < 0 || static_cast<std::size_t>(textureIndex) >= model.textures.size()) {
-    reason = "no base-colour texture";
-    return false;
-  }
-  const int source = model.textures[std::size_t(textureIndex)].source;
-  if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) {
-    reason = "its texture has no image";
-    return false;
-  }
-  std::vector<unsigned char> owned;
-  const unsigned char* bytes = nullptr;
-  std::size_t size = 0;
+// The image's bytes and reader, checked as far as can be without decoding: false with the
+// reason (not PNG or JPEG, a damaged PNG, a file not read).
+bool encoded(const tinygltf::Model& model, const Preflight& preflight, int source,
+             std::vector<unsigned char>& owned, const unsigned char*& bytes, std::size_t& size,
+             const char*& name, std::string& reason) {
   if (!imageBytes(model, preflight, source, owned, bytes, size, reason)) return false;
-  const char* name = readerName(bytes, size);
+  name = readerName(bytes, size);
   if (name == nullptr) {
     reason = "its image is not PNG or JPEG";
     return false;
@@ -179,15 +194,17 @@ bool baseColourTextureMean(const tinygltf::Model& model, const Preflight& prefli
     reason = "its PNG is damaged or cut short";
     return false;
   }
+  return true;
+}
+
+// The linear-RGB mean of the decoded image.
+bool meanOf(const unsigned char* bytes, std::size_t size, const char* name, glm::vec3& mean,
+            std::string& reason) {
   OIIO::ImageSpec spec;
   std::vector<float> texels;
-  // libpng reports through its default handlers, on stderr: caught and named here.
-  StderrCapture capture;
-  const bool decoded = decode(bytes, size, name, spec, texels, reason);
-  if (const std::string printed = capture.take(); !printed.empty()) {
-    reason += (reason.empty() ? "" : ": ") + printed;
+  if (!capturing(reason, [&] { return decode(bytes, size, name, spec, texels, reason); })) {
+    return false;
   }
-  if (!decoded) return false;
   const int channels = spec.nchannels;
   const long long pixels = static_cast<long long>(spec.width) * spec.height;
   glm::dvec3 sum(0.0);
@@ -199,6 +216,81 @@ bool baseColourTextureMean(const tinygltf::Model& model, const Preflight& prefli
     }
   }
   mean = glm::vec3(sum / double(pixels));
+  return true;
+}
+
+// The image a material's base colour uses, or -1 with the reason.
+int baseColourImage(const tinygltf::Model& model, const tinygltf::Material& material,
+                    std::string& reason) {
+  const int textureIndex = material.pbrMetallicRoughness.baseColorTexture.index;
+  if (textureIndex < 0 || static_cast<std::size_t>(textureIndex) >= model.textures.size()) {
+    reason = "no base-colour texture";
+    return -1;
+  }
+  const int source = model.textures[std::size_t(textureIndex)].source;
+  if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) {
+    reason = "its texture has no image";
+    return -1;
+  }
+  return source;
+}
+
+}  // namespace
+
+bool baseColourImageMeans(const tinygltf::Model& model, const Preflight& preflight,
+                          const GltfLimits& limits, ImageMeans& means, std::string& error) {
+  means.clear();
+  std::string unused;
+  for (const tinygltf::Material& material : model.materials) {
+    const int source = baseColourImage(model, material, unused);
+    if (source >= 0) means[source] = ImageMean{};
+  }
+  // The pixels every image will decode to, from the headers: refused before any is decoded.
+  std::uint64_t pixels = 0;
+  for (auto& [source, image] : means) {
+    std::vector<unsigned char> owned;
+    const unsigned char* bytes = nullptr;
+    std::size_t size = 0;
+    const char* name = nullptr;
+    OIIO::ImageSpec spec;
+    image.decodable =
+        encoded(model, preflight, source, owned, bytes, size, name, image.reason) &&
+        capturing(image.reason, [&] { return readHeader(bytes, size, name, spec, image.reason); });
+    if (image.decodable) pixels += std::uint64_t(spec.width) * std::uint64_t(spec.height);
+  }
+  if (pixels > limits.pixels) {
+    error = refusal(std::to_string(pixels) + " texture pixels to decode, " +
+                        std::to_string(means.size()) + " image(s) (limit " +
+                        std::to_string(limits.pixels) + ")",
+                    "pixels=N", limits);
+    return false;
+  }
+  for (auto& [source, image] : means) {
+    if (!image.decodable) continue;
+    std::vector<unsigned char> owned;
+    const unsigned char* bytes = nullptr;
+    std::size_t size = 0;
+    const char* name = nullptr;
+    image.averaged = encoded(model, preflight, source, owned, bytes, size, name, image.reason) &&
+                     meanOf(bytes, size, name, image.mean, image.reason);
+  }
+  return true;
+}
+
+bool baseColourTextureMean(const tinygltf::Model& model, const ImageMeans& means,
+                           const tinygltf::Material& material, glm::vec3& mean,
+                           std::string& reason) {
+  reason.clear();
+  const int source = baseColourImage(model, material, reason);
+  if (source < 0) return false;
+  const auto found = means.find(source);
+  if (found == means.end()) {
+    reason = "its image was not read";
+    return false;
+  }
+  reason = found->second.reason;
+  if (!found->second.averaged) return false;
+  mean = found->second.mean;
   return true;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The work a glTF file may ask of the loader and of the sample that draws it. A small valid
 // file can multiply its work without bound (one sphere reused by 100,000 primitives, a million
-// instances of it, 10^10 instanced triangles), so the loader adds up what the file's own counts
+// instances of it, 10^10 instanced triangles, a texture shared by 2,000 materials, 50 M numbers
+// in "extras"), so the loader adds up what the file's own counts
 // will expand to and refuses it, naming each limit it exceeds, before expanding anything.
 
 #include <cstdint>
@@ -22,6 +23,15 @@ struct GltfLimits {
   // every primitive's vertices (24 bytes: position, normal) and triangles (12 bytes), and
   // the instances. Primitives are counted whether or not a node draws them: all are read.
   std::uint64_t bytes = std::uint64_t(1) << 30;
+  // Values in the JSON (every number, string, true/false/null, array and object, and every
+  // object key), counted before any document is built: a parsed value costs the loader's
+  // parse and tinygltf's about 200 bytes, so 50 M zeros in "extras" (a 100 MB file) took
+  // 9.7 GB. 4M: a glTF's JSON is rarely a tenth of it (its bulk is in its buffers).
+  std::uint64_t jsonValues = std::uint64_t(1) << 22;
+  // Pixels of the images decoded (width x height from each image's header, before decoding;
+  // each image once, however many materials share it): the base colours' textures.
+  // 32M: two 4096 x 4096 textures, about 10 s on one core.
+  std::uint64_t pixels = std::uint64_t(1) << 25;
 
   // The option that raises these, named in the refusal ("--model-limits"); "" names none.
   std::string raiseOption;
