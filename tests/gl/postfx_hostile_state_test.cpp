@@ -10,11 +10,13 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "gl_fixture.h"
 #include "postfx_gl_snapshot.h"
+#include "postfx_host_state.h"
 #include "postfx_object_caustics_util.h"
 
 namespace {
@@ -216,6 +218,12 @@ std::vector<Hostile> hostileStates() {
                     [i] { glViewportIndexedf(i, 2.0f, 3.0f, 1.0f, 1.0f); },
                     [i] { glViewportIndexedf(i, 0.0f, 0.0f, 1.0f, 1.0f); }});
   }
+  // A host's texture of every target (1D to cube-map array, multisample, rectangle, buffer) on
+  // every unit the plugin uses and beyond, a sampler on each, image units bound, and the rest
+  // of postfx_host_state.h's state: glBindTextureUnit(unit, 0) clears all of a unit's targets.
+  auto host = std::make_shared<HostState>();
+  list.push_back({"every texture target on every unit (postfx_host_state.h)",
+                  [host] { host->set(); }, [host] { host->reset(); }});
   // And all of them at once.
   std::vector<Hostile> each = list;
   list.push_back({"every state above at once",
@@ -300,7 +308,13 @@ TEST_F(PostfxHostileStateTest, AnyHostStateGivesTheSameImageAndIsRestored) {
   postfx::FrameDesc linesFrame = beamsFrame;
   linesFrame.objectCaustics.settings.volume.method = postfx::VolumeCausticsMethod::Lines;
 
+  // Local water with no region: its lookup unit is unbound (the unit a host's cube map was lost
+  // from).
+  auto local = makeContext(postfx::Feature::Caustics | postfx::Feature::LocalWater);
+  const postfx::FrameDesc localFrame = makeFrame(seabed, water, 3);
+
   const Case cases[] = {{"seabed + god rays (half)", full.get(), &seabed, seabedFrame},
+                        {"local water, no region", local.get(), &seabed, localFrame},
                         {"physical + god rays (full)", physical.get(), &seabed, physicalFrame},
                         {"object caustics", objects.get(), &host.scene, objectFrame},
                         {"volume caustics (beams)", volume.get(), &host.scene, beamsFrame},
