@@ -223,7 +223,14 @@ std::vector<Hostile> hostileStates() {
   // of postfx_host_state.h's state: glBindTextureUnit(unit, 0) clears all of a unit's targets.
   auto host = std::make_shared<HostState>();
   list.push_back({"every texture target on every unit (postfx_host_state.h)",
-                  [host] { host->set(); }, [host] { host->reset(); }});
+                  [host] {
+                    host->set();
+                    // Its pack state is left at the defaults: this test reads the output back
+                    // inside the hostile state, and the plugin reads nothing back.
+                    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+                    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+                  },
+                  [host] { host->reset(); }});
   // And all of them at once.
   std::vector<Hostile> each = list;
   list.push_back({"every state above at once",
