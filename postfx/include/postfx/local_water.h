@@ -6,9 +6,10 @@
 // folds summed) once per frame for every view; under the region that light replaces the periodic
 // field's, blended into it over `edgeBlend`; outside it the seabed caustics do not change (bit
 // for bit). The seabed caustics (any CausticsModel) and the god rays read it; a god-ray view ray
-// that passes under a region takes its light, so shafts change outside the rectangle too. Walls and overhangs inside a region get the light that
-// entered the water where the refracted sun through them meets the level (as webgl-water lights
-// its pool's walls). docs/integration.md, "Local water".
+// that passes under a region takes its light, so shafts change outside the rectangle too. Walls and
+// overhangs inside a region get the light that entered the water where the refracted sun through
+// them meets the level (as webgl-water lights its pool's walls). docs/integration.md, "Local
+// water".
 #include <cstdint>
 
 #include <glm/glm.hpp>
