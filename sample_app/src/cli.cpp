@@ -111,7 +111,7 @@ are the options').
 
 Each file is held to a work budget, checked from its own counts before anything is expanded:
 4194304 triangles after instancing, 16384 instances (one per primitive per node copy), 65536
-nodes, 1 GiB once expanded (buffers, meshes, instances), 4194304 values in its JSON and
+nodes, 1 GiB once expanded (buffers, meshes, instances), 1048576 values in its JSON and
 33554432 texture pixels decoded (each image once, size from its header). A file over it is
 refused naming each limit with its count; --model-limits
 triangles=N,instances=N,nodes=N,bytes=N,json-values=N,pixels=N (any of them, N up to 2^40,

@@ -150,7 +150,7 @@ const std::array kValueOptions{
     ValueOption{"--model-limits", "KEY=N[,KEY=N]...",
                 "the work budget of each glTF: triangles (after instancing, default 4194304), "
                 "instances (16384), nodes (65536), bytes (once expanded, default 1G), "
-                "json-values (values in the JSON, 4194304), pixels (texture pixels decoded, "
+                "json-values (values in the JSON, 1048576), pixels (texture pixels decoded, "
                 "33554432); N in [1, 2^40], a k/M/G suffix allowed",
                 false,
                 [](std::string_view text, Options& o, std::string& error) {

@@ -444,7 +444,9 @@ std::vector<Case> corpus(const fs::path& scratch) {
   cases.push_back(refused("amplify_triangles", "sphere.gltf", instancedTriangles(250, 4000),
                           "10000000000 triangles after instancing (limit 4194304)"));
   cases.push_back(refused("amplify_instances", "sphere.gltf", manyNodes(1000000),
-                          "1000000 nodes (limit 65536)"));
+                          "JSON values (limit 1048576)"));
+  cases.push_back(
+      refused("amplify_nodes", "sphere.gltf", manyNodes(100000), "100000 nodes (limit 65536)"));
   addGlbCases(cases);
   addDataUriCases(cases);
   addNameCases(cases);
