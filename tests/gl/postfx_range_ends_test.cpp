@@ -100,17 +100,8 @@ TEST_F(PostfxRangeEndsTest, EveryRangeEndIsDrawnAndEveryValuePastItRefused) {
   spec.height = 48;
   Scene seabed(spec);
   const GLuint water = makeWaterTexture(32, 3, 0.02);
-  GLuint flat = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &flat);
-  glTextureStorage2D(flat, 1, GL_RGBA32F, 8, 8);
-  const std::vector<float> zeros(8 * 8 * 4, 0.0f);
-  glTextureSubImage2D(flat, 0, 0, 0, 8, 8, GL_RGBA, GL_FLOAT, zeros.data());
-  postfx::LocalWater region;
-  region.centre = {0.0, -4.0};
-  region.size = {4.0, 4.0};
-  region.texture = {flat, GL_RGBA32F};
-  region.gridResolution = 32;
-  region.depthLayers = 2;
+  const FlatRegion flat = makeFlatRegion(8);
+  const postfx::LocalWater& region = flat.region;
 
   auto water_ = makeContext(Feature::Caustics | Feature::GodRays | Feature::WavefrontAreaRatio |
                             Feature::LocalWater | Feature::ReflectedCaustics | Feature::Dispersion);
@@ -363,7 +354,7 @@ TEST_F(PostfxRangeEndsTest, EveryRangeEndIsDrawnAndEveryValuePastItRefused) {
   }
   std::printf("%d range ends drawn (or refused by a budget), %d values past them refused\n", drawn,
               refused);
-  glDeleteTextures(1, &flat);
+  glDeleteTextures(1, &flat.texture);
   glDeleteTextures(1, &water);
 }
 

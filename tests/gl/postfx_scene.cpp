@@ -215,4 +215,18 @@ GLuint makeCrossingWaves(int size, double tile, double amplitude) {
   return makeWaterTextureFromTexels(size, texels);
 }
 
+FlatRegion makeFlatRegion(int size) {
+  FlatRegion flat;
+  glCreateTextures(GL_TEXTURE_2D, 1, &flat.texture);
+  glTextureStorage2D(flat.texture, 1, GL_RGBA32F, size, size);
+  const std::vector<float> zeros(static_cast<size_t>(size) * size * 4, 0.0f);
+  glTextureSubImage2D(flat.texture, 0, 0, 0, size, size, GL_RGBA, GL_FLOAT, zeros.data());
+  flat.region.centre = {0.0, -4.0};
+  flat.region.size = {4.0, 4.0};
+  flat.region.texture = {flat.texture, GL_RGBA32F};
+  flat.region.gridResolution = 32;
+  flat.region.depthLayers = 2;
+  return flat;
+}
+
 }  // namespace postfxtest

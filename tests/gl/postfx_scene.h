@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include <postfx/local_water.h>
 #include <postfx/postfx.h>
 #include <synthetic_gbuffer.h>
 
@@ -79,6 +80,15 @@ GLuint makeWaterTextureFromTexels(int size, const std::vector<glm::vec4>& texels
 // (seamless) and amplitudes amplitude x (1, 0.6, 0.35): one cascade of size^2 texels (slopes,
 // height, 1), as makeWaterTextureFromTexels.
 GLuint makeCrossingWaves(int size, double tile, double amplitude);
+
+// A local water region of zero height and slope (a GL_TEXTURE_2D RGBA32F of `size` texels a
+// side, which the caller deletes), 4 m square 4 m ahead of the origin, grid 32, 2 layers: the
+// smallest region that runs the local water pass.
+struct FlatRegion {
+  GLuint texture = 0;
+  postfx::LocalWater region;
+};
+FlatRegion makeFlatRegion(int size);
 
 // A reverse-Z perspective (near -> 1, far -> 0, right-handed), as most of the tests' hosts use.
 glm::dmat4 reverseZPerspective(double fovYDegrees, double aspect, double nearPlane,

@@ -76,17 +76,8 @@ TEST_F(PostfxStateTest, EveryHostStateSurvivesDispatch) {
 TEST_F(PostfxStateTest, EveryTargetOnEveryUnitSurvivesEachPass) {
   postfxtest::Scene scene(postfxtest::SceneSpec{});
   const GLuint water = postfxtest::makeWaterTexture(32, 3, 0.01);
-  GLuint flat = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &flat);
-  glTextureStorage2D(flat, 1, GL_RGBA32F, 16, 16);
-  const std::vector<float> zeros(16 * 16 * 4, 0.0f);
-  glTextureSubImage2D(flat, 0, 0, 0, 16, 16, GL_RGBA, GL_FLOAT, zeros.data());
-  postfx::LocalWater region;
-  region.centre = {0.0, -4.0};
-  region.size = {4.0, 4.0};
-  region.texture = {flat, GL_RGBA32F};
-  region.gridResolution = 32;
-  region.depthLayers = 2;
+  const postfxtest::FlatRegion flat = postfxtest::makeFlatRegion(16);
+  const postfx::LocalWater& region = flat.region;
 
   struct Case {
     const char* name;
@@ -124,7 +115,7 @@ TEST_F(PostfxStateTest, EveryTargetOnEveryUnitSurvivesEachPass) {
     host_.reset();
     postfx::destroy(fx);
   }
-  glDeleteTextures(1, &flat);
+  glDeleteTextures(1, &flat.texture);
   glDeleteTextures(1, &water);
 }
 
