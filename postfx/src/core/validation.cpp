@@ -52,20 +52,14 @@ std::string number(double value) {
   return s.str();
 }
 
-std::string valueText(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-std::string valueText(const glm::vec3& value) {
+std::string number(const glm::vec3& value) {
   // Appended, not "(" + string: GCC 12 warns falsely (-Wrestrict) on that operator+.
   std::string text = "(";
-  text += valueText(double(value.x));
+  text += number(double(value.x));
   text += ", ";
-  text += valueText(double(value.y));
+  text += number(double(value.y));
   text += ", ";
-  text += valueText(double(value.z));
+  text += number(double(value.z));
   text += ")";
   return text;
 }

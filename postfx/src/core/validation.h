@@ -20,8 +20,10 @@ inline constexpr double kMaxWorldCoordinate = 1e9;
 inline std::string worldExtentText() {
   return "1e9";
 }
-// A range bound as a message prints it: shortest round-trip form ("100", "0.5", "1e+06").
+// A number as a message prints it (a range's bound, a value refused): %g's six significant
+// digits ("100", "0.5", "1e+06", "-1e+30", "nan"); a vector as "(x, y, z)".
 std::string number(double value);
+std::string number(const glm::vec3& value);
 
 // The range as a message prints it, "[0, 1e6]".
 template <typename T>
@@ -34,9 +36,6 @@ std::string rangeText(Range<T> r) {
   text += "]";
   return text;
 }
-// The value as a refusal prints it: %g-like, six significant digits ("-1e+30", "nan", "0.5").
-std::string valueText(double value);
-std::string valueText(const glm::vec3& value);
 // " must be in [min, max]<unit>, got <value>": the tail of every out-of-range refusal, so that
 // each names the accepted range and what it was handed. `unit` starts with its space (" m").
 template <typename T, typename V>
@@ -45,7 +44,7 @@ std::string mustBeIn(const V& value, Range<T> r, const char* unit = "") {
   text += rangeText(r);
   text += unit;
   text += ", got ";
-  text += valueText(value);
+  text += number(value);
   return text;
 }
 // "<field> <value> is not a <type> (<accepted>)": the refusal of an enum out of its values.

@@ -123,21 +123,21 @@ Result checkCaster(int index, const CasterMesh& m, std::string& error) {
     return fail(notAnEnum(".material.type", static_cast<long long>(mat.type), "CasterMaterialType",
                           "Refractive or Reflective"));
   if (!inRange(mat.ior, 1.0, 3.0))
-    return fail(".material.ior must be in [1, 3], got " + valueText(mat.ior));
+    return fail(".material.ior must be in [1, 3], got " + number(mat.ior));
   if (!inRange(mat.absorption, 0.0, 1e4))
     return fail(".material.absorption must be in [0, 1e4] per metre, got " +
-                valueText(mat.absorption));
+                number(mat.absorption));
   if (!inRange(mat.reflectance, 0.0, 1.0))
-    return fail(".material.reflectance must be in [0, 1], got " + valueText(mat.reflectance));
+    return fail(".material.reflectance must be in [0, 1], got " + number(mat.reflectance));
   if (!inRange(mat.transmission, 0.0, 1.0))
-    return fail(".material.transmission must be in [0, 1], got " + valueText(mat.transmission));
+    return fail(".material.transmission must be in [0, 1], got " + number(mat.transmission));
   if (!inRange(mat.tint, 0.0, 1.0))
-    return fail(".material.tint must be in [0, 1], got " + valueText(mat.tint));
+    return fail(".material.tint must be in [0, 1], got " + number(mat.tint));
   if (!inRange(mat.roughness, 0.0, 1.0))
-    return fail(".material.roughness must be in [0, 1], got " + valueText(mat.roughness));
+    return fail(".material.roughness must be in [0, 1], got " + number(mat.roughness));
   if (!inRange(mat.dispersion, 0.0, kMaxCasterDispersion))
-    return fail(".material.dispersion must be in [0, " + valueText(kMaxCasterDispersion) +
-                "], got " + valueText(mat.dispersion));
+    return fail(".material.dispersion must be in [0, " + number(kMaxCasterDispersion) + "], got " +
+                number(mat.dispersion));
   return Result::Ok;
 }
 
@@ -167,16 +167,16 @@ Result validateObjectCaustics(const CreateDesc& create, const FrameDesc& frame,
                 std::to_string(s.exitIterations));
   if (!inRange(s.splatRadius, 0.5, 8.0))
     return fail("objectCaustics.settings.splatRadius must be in [0.5, 8] texels, got " +
-                valueText(s.splatRadius));
+                number(s.splatRadius));
   if (!inRange(s.footprintScale, 1.0, 8.0))
     return fail("objectCaustics.settings.footprintScale must be in [1, 8], got " +
-                valueText(s.footprintScale));
+                number(s.footprintScale));
   if (!inRange(s.intensity, 0.0, 1e4))
     return fail("objectCaustics.settings.intensity must be in [0, 1e4], got " +
-                valueText(s.intensity));
+                number(s.intensity));
   if (!inRange(s.temporalWeight, 0.0, 0.95))
     return fail("objectCaustics.settings.temporalWeight must be in [0, 0.95], got " +
-                valueText(s.temporalWeight));
+                number(s.temporalWeight));
   if (s.volume.method != VolumeCausticsMethod::Beams &&
       s.volume.method != VolumeCausticsMethod::Lines)
     return fail(notAnEnum("objectCaustics.settings.volume.method",

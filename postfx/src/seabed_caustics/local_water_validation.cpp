@@ -40,8 +40,7 @@ Result validateLocalWaterValues(const CreateDesc& create, const WaterSurface& wa
                   " m");
     if (!within(r.size.x, kLocalWaterSizeRange) || !within(r.size.y, kLocalWaterSizeRange))
       return fail(regionField(i, "size") + " must be in " + rangeText(kLocalWaterSizeRange) +
-                  " m on each side, got (" + valueText(r.size.x) + ", " + valueText(r.size.y) +
-                  ")");
+                  " m on each side, got (" + number(r.size.x) + ", " + number(r.size.y) + ")");
     if (!within(r.rotation, kLocalWaterRotationRange))
       return fail(regionField(i, "rotation") +
                   mustBeIn(r.rotation, kLocalWaterRotationRange, " radians"));
