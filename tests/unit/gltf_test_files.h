@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace gltf_test_files {
 
 // Three float positions (0,0,0) (1,0,0) (0,0,-1): 36 bytes.
@@ -148,9 +150,11 @@ inline void writeFile(const std::filesystem::path& path, const std::vector<unsig
   file.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
-// A fresh empty directory under the test temp dir.
+// A fresh empty directory under the test temp dir, of this process alone: ctest runs each test
+// in a process of its own, in parallel, and a suite's set-up that emptied a shared directory
+// deleted another process's files while it read them (SceneGltfCorpus, "cannot open file").
 inline std::filesystem::path freshDir(const std::filesystem::path& root, const std::string& name) {
-  const auto dir = root / name;
+  const auto dir = root / (name + "." + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
